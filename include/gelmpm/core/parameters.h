@@ -1,0 +1,112 @@
+#ifndef gelmpm_core_parameters_h
+#define gelmpm_core_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+#include <vector>
+
+namespace GelMPM
+{
+  /**
+   * @brief One `--set "Section/Subsection/Entry=value"` given on the command line.
+   *
+   * Applied after the scene file is read, so that it wins over the file.
+   */
+  struct ParameterOverride
+  {
+    /** The subsections leading to the entry, outermost first. */
+    std::vector<std::string> sections;
+    /** The entry's name. */
+    std::string entry;
+    /** The new value, as text (checked against the entry's pattern when applied). */
+    std::string value;
+    /** The argument as the user typed it, for messages. */
+    std::string text;
+
+    /** The entry's full path "Section/Subsection/Entry". */
+    std::string
+    path() const;
+
+    /**
+     * Parse "Section/Subsection/Entry=value". Throws InputError on text without '=' or without
+     * an entry name.
+     */
+    static ParameterOverride
+    parse(const std::string &text);
+  };
+
+  /**
+   * @brief What the gelmpm command line asks for.
+   */
+  struct CommandLine
+  {
+    /** The scene file (empty with --help or --print-parameters without a scene). */
+    std::string scene_file;
+    /** The --set overrides, in the order given. */
+    std::vector<ParameterOverride> overrides;
+    /** --help: print usage and exit. */
+    bool help = false;
+    /** --print-parameters: print every entry with documentation, pattern and default. */
+    bool print_parameters = false;
+    /** --check: read and validate the scene, then exit without writing anything. */
+    bool check_only = false;
+
+    /** Parse argv. Throws InputError on unknown options or a missing scene file argument. */
+    static CommandLine
+    parse(const int argc, const char *const *argv);
+
+    /** Usage text for --help. */
+    static std::string
+    usage();
+  };
+
+  /**
+   * @brief Read a scene file into @p prm, then apply @p overrides.
+   *
+   * Every failure (missing file, unknown subsection or entry, a value that does not match its
+   * pattern, unbalanced subsection/end, an override naming no entry) is turned into one
+   * InputError that names the line or entry and says how to fix it.
+   *
+   * @param skip_undefined Ignore entries and overrides that @p prm does not declare. Used for a
+   *   first pass that reads only what decides the structure of the rest (the dimension, the names
+   *   of boundary pieces).
+   */
+  void
+  read_scene_file(dealii::ParameterHandler &             prm,
+                  const std::string &                    file_name,
+                  const std::vector<ParameterOverride> &overrides,
+                  const bool                             skip_undefined = false);
+
+  /**
+   * Apply @p overrides to @p prm (see read_scene_file()). With @p skip_undefined, overrides of
+   * entries that @p prm does not declare are ignored.
+   */
+  void
+  apply_overrides(dealii::ParameterHandler &             prm,
+                  const std::vector<ParameterOverride> &overrides,
+                  const bool                             skip_undefined = false);
+
+  /**
+   * Enter the subsections of the slash-separated @p path ("A/B") in @p prm; leave_sections()
+   * leaves as many. Keeps code that reads nested sections short.
+   */
+  unsigned int
+  enter_sections(dealii::ParameterHandler &prm, const std::string &path);
+
+  /** Leave @p n subsections of @p prm. */
+  void
+  leave_sections(dealii::ParameterHandler &prm, const unsigned int n);
+
+  /**
+   * Parse a list of @p n comma-separated doubles from entry @p entry of @p prm (the current
+   * subsection); @p entry_path is used in the error message. Throws InputError on a wrong count.
+   */
+  std::vector<double>
+  get_double_list(const dealii::ParameterHandler &prm,
+                  const std::string &             entry,
+                  const std::string &             entry_path,
+                  const unsigned int              n);
+} // namespace GelMPM
+
+#endif

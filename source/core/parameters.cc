@@ -1,0 +1,237 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <gelmpm/core/input_error.h>
+#include <gelmpm/core/parameters.h>
+
+#include <cctype>
+#include <fstream>
+#include <sstream>
+
+namespace GelMPM
+{
+  namespace
+  {
+    /** deal.II's own description of an exception, without its file/line boilerplate. */
+    std::string
+    describe(const dealii::ExceptionBase &exception)
+    {
+      std::ostringstream out;
+      exception.print_info(out);
+      // One line: deal.II spreads some of its messages over several indented lines.
+      std::string text;
+      for (const char c : out.str())
+        if (!std::isspace(static_cast<unsigned char>(c)))
+          text += c;
+        else if (!text.empty() && text.back() != ' ')
+          text += ' ';
+      while (!text.empty() && text.back() == ' ')
+        text.pop_back();
+      return text;
+    }
+
+    const std::string list_hint =
+      "'gelmpm --print-parameters' lists every section and entry with its pattern and documentation";
+  } // namespace
+
+
+  std::string
+  ParameterOverride::path() const
+  {
+    std::string p;
+    for (const auto &s : sections)
+      p += s + "/";
+    return p + entry;
+  }
+
+
+  ParameterOverride
+  ParameterOverride::parse(const std::string &text)
+  {
+    const auto equal = text.find('=');
+    require(equal != std::string::npos,
+            "--set " + text,
+            "has no '='",
+            "write --set \"Section/Entry=value\"");
+    ParameterOverride result;
+    result.text  = text;
+    result.value = dealii::Utilities::trim(text.substr(equal + 1));
+    auto parts   = dealii::Utilities::split_string_list(text.substr(0, equal), '/');
+    require(!parts.empty() && !parts.back().empty(),
+            "--set " + text,
+            "names no entry",
+            "write --set \"Section/Entry=value\"");
+    result.entry = parts.back();
+    parts.pop_back();
+    result.sections = parts;
+    return result;
+  }
+
+
+  CommandLine
+  CommandLine::parse(const int argc, const char *const *argv)
+  {
+    CommandLine cl;
+    for (int i = 1; i < argc; ++i)
+      {
+        const std::string arg = argv[i];
+        if (arg == "--help" || arg == "-h")
+          cl.help = true;
+        else if (arg == "--print-parameters")
+          cl.print_parameters = true;
+        else if (arg == "--check")
+          cl.check_only = true;
+        else if (arg == "--set")
+          {
+            require(i + 1 < argc,
+                    "--set",
+                    "is missing its argument",
+                    "write --set \"Section/Entry=value\"");
+            cl.overrides.push_back(ParameterOverride::parse(argv[++i]));
+          }
+        else if (arg.rfind("--set=", 0) == 0)
+          cl.overrides.push_back(ParameterOverride::parse(arg.substr(6)));
+        else if (!arg.empty() && arg[0] == '-')
+          throw InputError("", "unknown option '" + arg + "'", "see 'gelmpm --help'");
+        else
+          {
+            require(cl.scene_file.empty(),
+                    "",
+                    "more than one scene file given ('" + cl.scene_file + "' and '" + arg + "')",
+                    "give exactly one scene file");
+            cl.scene_file = arg;
+          }
+      }
+    if (!cl.help && !cl.print_parameters)
+      require(!cl.scene_file.empty(), "", "no scene file given", "run 'gelmpm scene.prm'");
+    return cl;
+  }
+
+
+  std::string
+  CommandLine::usage()
+  {
+    return "Usage: gelmpm [options] scene.prm\n"
+           "\n"
+           "Runs the hydrogel scene described by the parameter file scene.prm.\n"
+           "\n"
+           "Options:\n"
+           "  --set \"Section/Entry=value\"  override one entry of the scene file (repeatable;\n"
+           "                               nested sections are separated by '/')\n"
+           "  --check                      read and validate the scene, write nothing, exit\n"
+           "  --print-parameters           print every entry with its documentation, pattern and\n"
+           "                               default (with a scene file: with that scene's values)\n"
+           "  --help                       this text\n"
+           "\n"
+           "Exit status: 0 success, 1 the run failed (e.g. no convergence), 2 bad input.\n";
+  }
+
+
+  void
+  apply_overrides(dealii::ParameterHandler &             prm,
+                  const std::vector<ParameterOverride> &overrides,
+                  const bool                             skip_undefined)
+  {
+    for (const auto &o : overrides)
+      {
+        if (!prm.subsection_path_exists(o.sections))
+          {
+            if (skip_undefined)
+              continue;
+            throw InputError("--set " + o.text, "names a section that does not exist", list_hint);
+          }
+        for (const auto &s : o.sections)
+          prm.enter_subsection(s);
+        try
+          {
+            prm.set(o.entry, o.value);
+          }
+        catch (const dealii::ParameterHandler::ExcEntryUndeclared &)
+          {
+            leave_sections(prm, o.sections.size());
+            if (skip_undefined)
+              continue;
+            throw InputError("--set " + o.text, "names an entry that does not exist", list_hint);
+          }
+        catch (const dealii::ExceptionBase &e)
+          {
+            leave_sections(prm, o.sections.size());
+            if (skip_undefined)
+              continue;
+            throw InputError(o.path(), "(from --set): " + describe(e), list_hint);
+          }
+        leave_sections(prm, o.sections.size());
+      }
+  }
+
+
+  void
+  read_scene_file(dealii::ParameterHandler &             prm,
+                  const std::string &                    file_name,
+                  const std::vector<ParameterOverride> &overrides,
+                  const bool                             skip_undefined)
+  {
+    {
+      std::ifstream probe(file_name);
+      require(static_cast<bool>(probe),
+              "",
+              "the scene file '" + file_name + "' cannot be opened",
+              "check the path (relative paths are taken from the current directory)");
+    }
+    try
+      {
+        std::ifstream in(file_name);
+        prm.parse_input(in, file_name, "", skip_undefined);
+      }
+    catch (const dealii::ExceptionBase &e)
+      {
+        throw InputError("", "in scene file: " + describe(e), list_hint);
+      }
+    apply_overrides(prm, overrides, skip_undefined);
+  }
+
+
+  unsigned int
+  enter_sections(dealii::ParameterHandler &prm, const std::string &path)
+  {
+    const auto parts = dealii::Utilities::split_string_list(path, '/');
+    for (const auto &p : parts)
+      prm.enter_subsection(p);
+    return parts.size();
+  }
+
+
+  void
+  leave_sections(dealii::ParameterHandler &prm, const unsigned int n)
+  {
+    for (unsigned int i = 0; i < n; ++i)
+      prm.leave_subsection();
+  }
+
+
+  std::vector<double>
+  get_double_list(const dealii::ParameterHandler &prm,
+                  const std::string &             entry,
+                  const std::string &             entry_path,
+                  const unsigned int              n)
+  {
+    const auto parts = dealii::Utilities::split_string_list(prm.get(entry), ',');
+    require(parts.size() == n,
+            entry_path,
+            "has " + std::to_string(parts.size()) + " components but needs " + std::to_string(n),
+            "give " + std::to_string(n) + " comma-separated numbers");
+    std::vector<double> values;
+    for (const auto &p : parts)
+      {
+        try
+          {
+            values.push_back(dealii::Utilities::string_to_double(p));
+          }
+        catch (...)
+          {
+            throw InputError(entry_path, "has the non-number '" + p + "'", "give numbers only");
+          }
+      }
+    return values;
+  }
+} // namespace GelMPM

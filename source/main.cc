@@ -1,0 +1,78 @@
+/**
+ * gelmpm: runs a hydrogel scene described by a parameter file.
+ *
+ *   gelmpm [--set "Section/Entry=value"]... [--check] scene.prm
+ *   gelmpm --print-parameters [scene.prm]
+ *   gelmpm --help
+ *
+ * Exit status: 0 success, 1 the run failed, 2 bad input (nothing is written then).
+ */
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
+
+#include <gelmpm/core/input_error.h>
+#include <gelmpm/core/parameters.h>
+#include <gelmpm/simulator/scene_structure.h>
+#include <gelmpm/simulator/simulator.h>
+
+#include <iostream>
+
+namespace
+{
+  template <int dim>
+  int
+  run_scene(const GelMPM::CommandLine &cl, const GelMPM::SceneStructure &structure)
+  {
+    dealii::ParameterHandler prm;
+    GelMPM::Simulator<dim>::declare_parameters(prm, structure);
+    if (!cl.scene_file.empty())
+      GelMPM::read_scene_file(prm, cl.scene_file, cl.overrides);
+
+    if (cl.print_parameters)
+      {
+        prm.print_parameters(std::cout, dealii::ParameterHandler::PRM);
+        return 0;
+      }
+
+    GelMPM::Simulator<dim> simulator(prm, structure, cl.scene_file);
+    if (cl.check_only)
+      {
+        std::cout << "gelmpm: scene '" << cl.scene_file << "' is valid\n";
+        return 0;
+      }
+    simulator.run();
+    return 0;
+  }
+} // namespace
+
+
+int
+main(int argc, char **argv)
+{
+  // Quiet deal.II's own abort-on-exception printing: every error below is reported once.
+  dealii::deal_II_exceptions::disable_abort_on_exception();
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, dealii::numbers::invalid_unsigned_int);
+  try
+    {
+      const auto cl = GelMPM::CommandLine::parse(argc, argv);
+      if (cl.help)
+        {
+          std::cout << GelMPM::CommandLine::usage();
+          return 0;
+        }
+      const auto structure = cl.scene_file.empty() ?
+                               GelMPM::SceneStructure() :
+                               GelMPM::SceneStructure::read(cl.scene_file, cl.overrides);
+      return structure.dimension == 2 ? run_scene<2>(cl, structure) : run_scene<3>(cl, structure);
+    }
+  catch (const GelMPM::InputError &e)
+    {
+      std::cerr << "gelmpm: error: " << e.what() << std::endl;
+      return 2;
+    }
+  catch (const std::exception &e)
+    {
+      std::cerr << "gelmpm: the run failed: " << e.what() << std::endl;
+      return 1;
+    }
+}

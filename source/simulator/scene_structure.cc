@@ -1,0 +1,69 @@
+#include <deal.II/base/utilities.h>
+
+#include <gelmpm/core/input_error.h>
+#include <gelmpm/simulator/scene_structure.h>
+
+#include <set>
+
+namespace GelMPM
+{
+  void
+  SceneStructure::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.declare_entry("Dimension",
+                      "2",
+                      dealii::Patterns::Integer(2, 3),
+                      "Space dimension of the scene. In 2D the gel is in plane strain: the "
+                      "out-of-plane stretch stays at the initial stretch lambda_0.");
+    prm.enter_subsection("Boundary conditions");
+    prm.declare_entry("Pieces",
+                      "",
+                      dealii::Patterns::List(dealii::Patterns::Anything()),
+                      "Comma-separated names of the pieces the body's boundary is split into. "
+                      "Each name gets a subsection 'Boundary conditions/<name>' that selects the "
+                      "piece and sets its displacement and chemical-potential conditions. A "
+                      "boundary point belongs to the first piece whose selector it satisfies; "
+                      "points of no piece are traction-free and impermeable.");
+    prm.leave_subsection();
+  }
+
+
+  SceneStructure
+  SceneStructure::parse_parameters(const dealii::ParameterHandler &prm)
+  {
+    SceneStructure s;
+    s.dimension = prm.get_integer("Dimension");
+    auto &p     = const_cast<dealii::ParameterHandler &>(prm);
+    p.enter_subsection("Boundary conditions");
+    s.boundary_pieces = dealii::Utilities::split_string_list(p.get("Pieces"), ',');
+    p.leave_subsection();
+
+    std::set<std::string> seen;
+    for (const auto &name : s.boundary_pieces)
+      {
+        require(!name.empty(),
+                "Boundary conditions/Pieces",
+                "contains an empty name",
+                "remove the doubled or trailing comma");
+        require(name.find('/') == std::string::npos,
+                "Boundary conditions/Pieces",
+                "contains the name '" + name + "' with a '/'",
+                "use names without '/'");
+        require(seen.insert(name).second,
+                "Boundary conditions/Pieces",
+                "names the piece '" + name + "' twice",
+                "give every piece a distinct name");
+      }
+    return s;
+  }
+
+
+  SceneStructure
+  SceneStructure::read(const std::string &file_name, const std::vector<ParameterOverride> &overrides)
+  {
+    dealii::ParameterHandler prm;
+    declare_parameters(prm);
+    read_scene_file(prm, file_name, overrides, /*skip_undefined=*/true);
+    return parse_parameters(prm);
+  }
+} // namespace GelMPM
