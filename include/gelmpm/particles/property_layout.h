@@ -1,0 +1,68 @@
+#ifndef gelmpm_particles_property_layout_h
+#define gelmpm_particles_property_layout_h
+
+namespace GelMPM
+{
+  /**
+   * @brief The five kinds of material points (paper §3.2). A surface point's kind says which of
+   * its two fields carries an essential (Dirichlet) condition: the first letter is the
+   * displacement, the second the chemical potential.
+   */
+  enum class PointKind : unsigned int
+  {
+    volume              = 0, ///< bulk point, carries a volume V
+    dirichlet_dirichlet = 1, ///< prescribed displacement (some component) and chemical potential
+    dirichlet_neumann   = 2, ///< prescribed displacement (some component), solvent flux
+    neumann_dirichlet   = 3, ///< traction, prescribed chemical potential
+    neumann_neumann     = 4  ///< traction and solvent flux
+  };
+
+  /** Kind of a surface point from whether u and mu are prescribed on its piece. */
+  inline PointKind
+  surface_point_kind(const bool displacement_prescribed, const bool chemical_potential_prescribed)
+  {
+    if (displacement_prescribed)
+      return chemical_potential_prescribed ? PointKind::dirichlet_dirichlet :
+                                             PointKind::dirichlet_neumann;
+    return chemical_potential_prescribed ? PointKind::neumann_dirichlet :
+                                           PointKind::neumann_neumann;
+  }
+
+  /**
+   * @brief Where each quantity sits in a material point's property array
+   * (dealii::Particles::Particle::get_properties()).
+   *
+   * Every point, volume or surface, carries the same layout so that one ParticleHandler holds
+   * them all; entries that a kind does not use are zero. Tensors are stored row-major
+   * (F[i][j] at F + i*dim + j). Positions are the particle's own location (x_n).
+   *
+   * - kind: PointKind as a double.
+   * - piece: index of the boundary piece (into "Boundary conditions/Pieces") of a surface point;
+   *   -1 for volume points and for surface points that belong to no piece.
+   * - mu: chemical potential mu/(k_B T) at the point, last converged step.
+   * - measure_0: V_0 (volume points) or A_0 (surface points) in the initial configuration
+   *   Omega_0 (per unit thickness in 2D).
+   * - measure_n: V_n or A_n in the last converged configuration Omega_n, eq. (34).
+   * - position_0: X_0, the point's position in the initial configuration.
+   * - F: F_n F_0, the in-plane deformation gradient from the dry state to Omega_n (in 2D the
+   *   out-of-plane stretch is lambda_0 and is not stored).
+   * - normal_area_0: N_0 A_0 (surface points; zero for volume points).
+   * - normal_area_n: N_n A_n = J_n F_n^{-T} N_0 A_0, eq. (34).
+   */
+  template <int dim>
+  struct PropertyLayout
+  {
+    static constexpr unsigned int kind          = 0;
+    static constexpr unsigned int piece         = 1;
+    static constexpr unsigned int mu            = 2;
+    static constexpr unsigned int measure_0     = 3;
+    static constexpr unsigned int measure_n     = 4;
+    static constexpr unsigned int position_0    = 5;
+    static constexpr unsigned int F             = position_0 + dim;
+    static constexpr unsigned int normal_area_0 = F + dim * dim;
+    static constexpr unsigned int normal_area_n = normal_area_0 + dim;
+    static constexpr unsigned int n_properties  = normal_area_n + dim;
+  };
+} // namespace GelMPM
+
+#endif
