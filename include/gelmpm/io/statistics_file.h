@@ -1,0 +1,50 @@
+#ifndef gelmpm_io_statistics_file_h
+#define gelmpm_io_statistics_file_h
+
+#include <fstream>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace GelMPM
+{
+  /**
+   * @brief statistics.csv: one row per converged step, one column per quantity.
+   *
+   * The columns are fixed when the file is opened (a header row names them); each row is
+   * flushed as soon as it is complete, so that a run that stops early keeps every row it had.
+   * Numbers are written with 10 significant digits.
+   */
+  class StatisticsFile
+  {
+  public:
+    /** Create (truncate) @p file_name and write the header row. */
+    void
+    open(const std::string &file_name, const std::vector<std::string> &columns);
+
+    /** Set the value of @p column for the current row. */
+    void
+    set(const std::string &column, const double value);
+
+    /** Write the current row (columns not set are written as empty fields) and start a new one. */
+    void
+    write_row();
+
+    /** The column names. */
+    const std::vector<std::string> &
+    columns() const;
+
+    /** The rows written so far (for the test-mode echo of the log). */
+    const std::vector<std::vector<std::string>> &
+    rows() const;
+
+  private:
+    std::ofstream                         file;
+    std::vector<std::string>              columns_;
+    std::map<std::string, unsigned int>   index;
+    std::vector<std::string>              current;
+    std::vector<std::vector<std::string>> rows_;
+  };
+} // namespace GelMPM
+
+#endif

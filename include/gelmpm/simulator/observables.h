@@ -1,0 +1,50 @@
+#ifndef gelmpm_simulator_observables_h
+#define gelmpm_simulator_observables_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/particles/particle_handler.h>
+
+#include <gelmpm/io/statistics_file.h>
+
+#include <string>
+#include <vector>
+
+namespace GelMPM
+{
+  /**
+   * @brief The "Observables" section: scene-specific quantities added as columns of
+   * statistics.csv. Each is off unless the scene names it, and costs nothing then.
+   *
+   * - Thickness (column delta_h_over_h0): with "Thickness pieces = top, bottom" and direction d,
+   *   h(t) is the mean coordinate x_d of the surface points of the first piece minus that of the
+   *   second, h_0 the same in the initial configuration, and the column is h/h_0 - 1 (paper §4.1:
+   *   Delta h / h_0).
+   */
+  template <int dim>
+  class Observables
+  {
+  public:
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    /** Read the section; @p pieces are the scene's boundary piece names (for validation). */
+    void
+    parse_parameters(dealii::ParameterHandler &prm, const std::vector<std::string> &pieces);
+
+    /** The statistics columns these observables fill. */
+    std::vector<std::string>
+    columns() const;
+
+    /** Evaluate every observable on the current material points into @p statistics. */
+    void
+    evaluate(const dealii::Particles::ParticleHandler<dim> &particles,
+             StatisticsFile &                               statistics) const;
+
+  private:
+    int          thickness_first  = -1;
+    int          thickness_second = -1;
+    unsigned int thickness_direction = 1;
+  };
+} // namespace GelMPM
+
+#endif

@@ -1,0 +1,107 @@
+#include <deal.II/base/utilities.h>
+
+#include <gelmpm/core/input_error.h>
+#include <gelmpm/particles/property_layout.h>
+#include <gelmpm/simulator/observables.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace GelMPM
+{
+  template <int dim>
+  void
+  Observables<dim>::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Observables");
+    prm.declare_entry("Thickness pieces",
+                      "",
+                      dealii::Patterns::Anything(),
+                      "Two boundary piece names 'first, second': adds the column "
+                      "delta_h_over_h0 = h/h_0 - 1, with h the distance between the mean "
+                      "positions of the two pieces' surface points along 'Thickness direction' "
+                      "(h_0 in the initial configuration). Empty: off.");
+    prm.declare_entry("Thickness direction",
+                      "1",
+                      dealii::Patterns::Integer(0, 2),
+                      "Coordinate direction of the thickness (0: x, 1: y, 2: z).");
+    prm.leave_subsection();
+  }
+
+
+  template <int dim>
+  void
+  Observables<dim>::parse_parameters(dealii::ParameterHandler &      prm,
+                                     const std::vector<std::string> &pieces)
+  {
+    prm.enter_subsection("Observables");
+    const auto names    = dealii::Utilities::split_string_list(prm.get("Thickness pieces"), ',');
+    thickness_direction = prm.get_integer("Thickness direction");
+    prm.leave_subsection();
+
+    require(thickness_direction < dim,
+            "Observables/Thickness direction",
+            "exceeds the dimension",
+            "give a direction below " + std::to_string(dim));
+    thickness_first = thickness_second = -1;
+    if (names.empty())
+      return;
+    require(names.size() == 2,
+            "Observables/Thickness pieces",
+            "must name exactly two pieces",
+            "write 'top, bottom'");
+    for (unsigned int k = 0; k < 2; ++k)
+      {
+        const auto it = std::find(pieces.begin(), pieces.end(), names[k]);
+        require(it != pieces.end(),
+                "Observables/Thickness pieces",
+                "names the piece '" + names[k] + "' that is not in 'Boundary conditions/Pieces'",
+                "use one of the declared pieces");
+        (k == 0 ? thickness_first : thickness_second) = it - pieces.begin();
+      }
+  }
+
+
+  template <int dim>
+  std::vector<std::string>
+  Observables<dim>::columns() const
+  {
+    std::vector<std::string> c;
+    if (thickness_first >= 0)
+      c.push_back("delta_h_over_h0");
+    return c;
+  }
+
+
+  template <int dim>
+  void
+  Observables<dim>::evaluate(const dealii::Particles::ParticleHandler<dim> &particles,
+                             StatisticsFile &                               statistics) const
+  {
+    if (thickness_first < 0)
+      return;
+    using Layout = PropertyLayout<dim>;
+    const unsigned int d = thickness_direction;
+    double             sum[2] = {0., 0.}, sum_0[2] = {0., 0.};
+    unsigned int       count[2] = {0, 0};
+    for (const auto &particle : particles)
+      {
+        const auto props = particle.get_properties();
+        const int  piece = static_cast<int>(std::lround(props[Layout::piece]));
+        for (unsigned int k = 0; k < 2; ++k)
+          if (piece == (k == 0 ? thickness_first : thickness_second))
+            {
+              sum[k] += particle.get_location()[d];
+              sum_0[k] += props[Layout::position_0 + d];
+              ++count[k];
+            }
+      }
+    const double h   = sum[0] / count[0] - sum[1] / count[1];
+    const double h_0 = sum_0[0] / count[0] - sum_0[1] / count[1];
+    statistics.set("delta_h_over_h0", h / h_0 - 1.);
+  }
+
+
+  template class Observables<2>;
+  template class Observables<3>;
+} // namespace GelMPM
