@@ -1,0 +1,73 @@
+#ifndef gelmpm_stability_symmetric_factorization_h
+#define gelmpm_stability_symmetric_factorization_h
+
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <memory>
+
+namespace GelMPM
+{
+  /**
+   * @brief The inertia (signature) of a symmetric matrix: the numbers of positive, negative and
+   * zero eigenvalues (paper §3.6). A stable state of the u–mu problem has (n_u, n_mu, 0).
+   */
+  struct Inertia
+  {
+    unsigned int n_positive = 0;
+    unsigned int n_negative = 0;
+    unsigned int n_zero     = 0;
+
+    bool
+    operator==(const Inertia &other) const
+    {
+      return n_positive == other.n_positive && n_negative == other.n_negative &&
+             n_zero == other.n_zero;
+    }
+  };
+
+
+  /**
+   * @brief Symmetric indefinite LDL^T factorisation K = L D L^T by MUMPS (SYM = 2), through its
+   * C interface, giving the inertia of K and solves with K.
+   *
+   * By Sylvester's law of inertia, K and D have the same signature; MUMPS counts the negative
+   * pivots of D (INFOG(12)) and, with null-pivot detection (ICNTL(24) = 1), the null pivots
+   * (INFOG(28)). The root node is factorised sequentially (ICNTL(13) = 1) so that the
+   * negative-pivot count includes it. Trilinos' Amesos_Mumps cannot be used for this: it factorises
+   * as unsymmetric.
+   *
+   * Only the lower triangle of K is passed; K must be symmetric.
+   */
+  class SymmetricFactorization
+  {
+  public:
+    SymmetricFactorization();
+    ~SymmetricFactorization();
+    SymmetricFactorization(const SymmetricFactorization &) = delete;
+    SymmetricFactorization &
+    operator=(const SymmetricFactorization &) = delete;
+
+    /** Analyse and factorise @p K. Throws std::runtime_error when MUMPS reports an error. */
+    void
+    factorize(const dealii::TrilinosWrappers::SparseMatrix &K);
+
+    /** The inertia of the matrix factorised last. */
+    Inertia
+    inertia() const;
+
+    /** Solve K x = b with the factorisation: @p x holds b on entry and x on exit. */
+    void
+    solve(dealii::Vector<double> &x) const;
+
+    /** Size of the factorised matrix. */
+    unsigned int
+    size() const;
+
+  private:
+    struct Data;
+    std::unique_ptr<Data> data;
+  };
+} // namespace GelMPM
+
+#endif

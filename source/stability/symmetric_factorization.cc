@@ -1,0 +1,131 @@
+#include <gelmpm/stability/symmetric_factorization.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <dmumps_c.h>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace GelMPM
+{
+  namespace
+  {
+    // MUMPS documents its controls with Fortran (1-based) indices.
+    constexpr int
+    icntl(const int i)
+    {
+      return i - 1;
+    }
+  } // namespace
+
+
+  struct SymmetricFactorization::Data
+  {
+    DMUMPS_STRUC_C         mumps;
+    std::vector<MUMPS_INT> rows, columns;
+    std::vector<double>    values;
+    bool                   initialized = false;
+    bool                   factorized  = false;
+
+    void
+    call(const int job)
+    {
+      mumps.job = job;
+      dmumps_c(&mumps);
+      if (mumps.infog[0] < 0)
+        throw std::runtime_error("MUMPS (job " + std::to_string(job) +
+                                 ") failed with INFOG(1) = " + std::to_string(mumps.infog[0]) +
+                                 ", INFOG(2) = " + std::to_string(mumps.infog[1]));
+    }
+  };
+
+
+  SymmetricFactorization::SymmetricFactorization()
+    : data(std::make_unique<Data>())
+  {
+    auto &m        = data->mumps;
+    m.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(MPI_COMM_SELF));
+    m.par          = 1; // the host takes part in the factorisation
+    m.sym          = 2; // general symmetric (indefinite): LDL^T
+    data->call(-1);
+    data->initialized = true;
+    // Silence MUMPS; errors are reported through INFOG.
+    m.icntl[icntl(1)]  = -1;
+    m.icntl[icntl(2)]  = -1;
+    m.icntl[icntl(3)]  = -1;
+    m.icntl[icntl(4)]  = 0;
+    m.icntl[icntl(13)] = 1; // sequential root: the negative-pivot count covers it
+    m.icntl[icntl(24)] = 1; // detect null pivots (INFOG(28))
+  }
+
+
+  SymmetricFactorization::~SymmetricFactorization()
+  {
+    if (data && data->initialized)
+      {
+        data->mumps.job = -2;
+        dmumps_c(&data->mumps);
+      }
+  }
+
+
+  void
+  SymmetricFactorization::factorize(const dealii::TrilinosWrappers::SparseMatrix &K)
+  {
+    auto &d = *data;
+    d.rows.clear();
+    d.columns.clear();
+    d.values.clear();
+    for (unsigned int row = 0; row < K.m(); ++row)
+      for (auto entry = K.begin(row); entry != K.end(row); ++entry)
+        if (entry->column() <= row && entry->value() != 0.)
+          {
+            d.rows.push_back(row + 1);
+            d.columns.push_back(entry->column() + 1);
+            d.values.push_back(entry->value());
+          }
+    auto &m = d.mumps;
+    m.n     = K.m();
+    m.nnz   = d.values.size();
+    m.irn   = d.rows.data();
+    m.jcn   = d.columns.data();
+    m.a     = d.values.data();
+    d.call(4); // analysis + factorisation
+    d.factorized = true;
+  }
+
+
+  Inertia
+  SymmetricFactorization::inertia() const
+  {
+    if (!data->factorized)
+      throw std::logic_error("SymmetricFactorization::inertia() before factorize()");
+    const auto &m = data->mumps;
+    Inertia     result;
+    result.n_negative = m.infog[11]; // INFOG(12)
+    result.n_zero     = m.infog[27]; // INFOG(28)
+    result.n_positive = m.n - result.n_negative - result.n_zero;
+    return result;
+  }
+
+
+  void
+  SymmetricFactorization::solve(dealii::Vector<double> &x) const
+  {
+    if (!data->factorized)
+      throw std::logic_error("SymmetricFactorization::solve() before factorize()");
+    auto &m = data->mumps;
+    m.nrhs  = 1;
+    m.lrhs  = m.n;
+    m.rhs   = x.begin();
+    data->call(3);
+  }
+
+
+  unsigned int
+  SymmetricFactorization::size() const
+  {
+    return data->mumps.n;
+  }
+} // namespace GelMPM
