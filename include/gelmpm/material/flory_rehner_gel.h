@@ -1,0 +1,175 @@
+#ifndef gelmpm_material_flory_rehner_gel_h
+#define gelmpm_material_flory_rehner_gel_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/tensor.h>
+
+#include <stdexcept>
+#include <string>
+
+namespace GelMPM
+{
+  /**
+   * @brief Thrown when a state leaves the physical range of the gel (J <= 1: less solvent than
+   * none), where the mixing energy is undefined. The Newton solver catches it and cuts the step.
+   */
+  class NonPhysicalState : public std::runtime_error
+  {
+  public:
+    explicit NonPhysicalState(const std::string &message)
+      : std::runtime_error(message)
+    {}
+  };
+
+
+  /**
+   * @brief The Flory–Rehner hydrogel of the paper's §2.2 in the mixed (F, mu) form, eq. (19), and
+   * the rescaled quantities of the incremental (previously converged Lagrangian) formulation,
+   * eq. (25)–(30). Pure functions of their arguments: no grid, no particles.
+   *
+   * Units: stresses in the units of the shear modulus G = N k_BT; the chemical potential `mu` is
+   * mu/(k_BT); k_BT/nu = G/(N nu). Then
+   *   W(F, mu) = G/2 (F:F - 2 ln J - 3) - (G/N nu)[(J-1) ln(J/(J-1)) + chi/J] - (G/N nu) mu (J-1)
+   * per unit dry volume, and derivatives with respect to mu are with respect to mu/(k_BT).
+   *
+   * F is the deformation gradient from the dry state. In 2D the gel is in plane strain with a
+   * three-dimensional dry reference whose out-of-plane stretch stays at lambda_0: F is the in-plane
+   * 2x2 block, J = lambda_0 det F and F:F includes lambda_0^2; all tensors returned are in-plane.
+   *
+   * Every evaluation throws NonPhysicalState for J <= 1.
+   */
+  template <int dim>
+  class FloryRehnerGel
+  {
+  public:
+    /** Table 1: G = 1, chi = 0.1, N nu = 7.299e-3, D = 1, lambda_0 = 1.2801. */
+    FloryRehnerGel();
+
+    FloryRehnerGel(const double shear_modulus,
+                   const double chi,
+                   const double N_nu,
+                   const double diffusivity,
+                   const double lambda_0);
+
+    /** Declare the section "Material". */
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    /** Read the section "Material"; throws InputError on non-physical values. */
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    double
+    shear_modulus() const;
+    double
+    chi() const;
+    double
+    N_nu() const;
+    double
+    diffusivity() const;
+    /** Initial isotropic stretch of the pre-swollen, stress-free state. */
+    double
+    lambda_0() const;
+    /** mu_0 = mu_0(lambda_0), eq. (22). */
+    double
+    mu_0() const;
+    /** k_BT / nu = G / (N nu). */
+    double
+    kT_over_nu() const;
+
+    /** J = det F (3D) or lambda_0 det F (2D). */
+    double
+    J(const dealii::Tensor<2, dim> &F) const;
+
+    /** W(F, mu), eq. (19). */
+    double
+    free_energy(const dealii::Tensor<2, dim> &F, const double mu) const;
+
+    /** Nominal stress P = dW/dF. */
+    dealii::Tensor<2, dim>
+    stress(const dealii::Tensor<2, dim> &F, const double mu) const;
+
+    /** dP/dF, A_iJkL = dP_iJ / dF_kL. */
+    dealii::Tensor<4, dim>
+    stress_tangent(const dealii::Tensor<2, dim> &F, const double mu) const;
+
+    /** dP/dmu = -(G/N nu) J F^{-T}. */
+    dealii::Tensor<2, dim>
+    stress_mu_derivative(const dealii::Tensor<2, dim> &F) const;
+
+    /** k_BT C = -dW/dmu = (G/N nu)(J - 1). */
+    double
+    concentration(const dealii::Tensor<2, dim> &F) const;
+
+    /**
+     * The solvent-transport coefficient of the incremental weak form with the symmetric
+     * approximation M_n ~ m_n I of §2.4, m_n = C_n D/(k_BT), C_n = (J_p - 1)/(nu J_p), evaluated
+     * at F_p = F_n F_0 (frozen over a step). In these units the coefficient multiplying
+     * grad mu . grad q is (k_BT)^2 m_n = (G/N nu) D (J_p - 1)/J_p.
+     */
+    double
+    mobility(const dealii::Tensor<2, dim> &F_p) const;
+
+    /** Incremental quantities for F = dF F_p, eq. (25)–(30). */
+    struct Incremental
+    {
+      /** P_n = P(dF F_p) F_p^T / J_p. */
+      dealii::Tensor<2, dim> P_n;
+      /** A_n = dP_n/d(dF). */
+      dealii::Tensor<4, dim> A_n;
+      /** dP_n/dmu = -(G/N nu) dJ dF^{-T}. */
+      dealii::Tensor<2, dim> dP_n_dmu;
+      /** dJ = det dF (the out-of-plane stretch does not change in a step). */
+      double delta_J;
+      /** Total J = dJ J_p. */
+      double J;
+    };
+
+    /** P_n, A_n and dP_n/dmu at the increment @p delta_F from F_p = F_n F_0. */
+    Incremental
+    incremental(const dealii::Tensor<2, dim> &delta_F,
+                const double                  mu,
+                const dealii::Tensor<2, dim> &F_p) const;
+
+    /** Eq. (22): mu_0/(k_BT) of the stress-free isotropic swelling lambda_0. */
+    static double
+    mu_0_from_lambda_0(const double lambda_0, const double chi, const double N_nu);
+
+    /**
+     * Inverse of eq. (22) on its increasing branch (bracketing and bisection with Newton
+     * polishing). Throws InputError naming "Material/Initial chemical potential" when no
+     * stretch gives @p mu_0.
+     */
+    static double
+    lambda_0_from_mu_0(const double mu_0, const double chi, const double N_nu);
+
+    /**
+     * In-plane stretch lambda (total in-plane stretch lambda_0 lambda, F33 = lambda_0 in 2D) of
+     * the stress-free state at chemical potential @p mu in plane strain: P_11 = 0. In 3D, the free
+     * isotropic swelling stretch relative to lambda_0.
+     */
+    double
+    plane_strain_free_swelling_stretch(const double mu) const;
+
+    /** Stretch lambda of a layer constrained in-plane, F = diag(lambda_0, lambda_0 lambda
+     * [, lambda_0]), at which P_22 = 0 (paper §4.1). */
+    double
+    constrained_swelling_stretch(const double mu) const;
+
+  private:
+    /** d psi/dJ and d^2 psi/dJ^2 of the mixing and solvent part psi(J). */
+    void
+    volumetric_derivatives(const double J, const double mu, double &dpsi, double &d2psi) const;
+
+    void
+    check_physical(const double J) const;
+
+    double shear_modulus_ = 1.;
+    double chi_           = 0.1;
+    double N_nu_          = 7.299e-3;
+    double diffusivity_   = 1.;
+    double lambda_0_      = 1.2801;
+  };
+} // namespace GelMPM
+
+#endif
