@@ -1,0 +1,130 @@
+#ifndef gelmpm_bspline_extended_bspline_space_h
+#define gelmpm_bspline_extended_bspline_space_h
+
+#include <gelmpm/bspline/bspline_space.h>
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/lac/full_matrix.h>
+
+#include <utility>
+#include <vector>
+
+namespace GelMPM
+{
+  /** Classification of background cells (paper §3.5). */
+  enum class CellKind : unsigned char
+  {
+    interior = 0,
+    boundary = 1,
+    outer    = 2
+  };
+
+  /** Classification of control points (paper §3.5). */
+  enum class ControlPointKind : unsigned char
+  {
+    interior = 0,
+    boundary = 1,
+    outer    = 2
+  };
+
+
+  /**
+   * @brief Extended B-splines (paper §3.5, eq. (50)–(54)) of a BSplineSpace on the cells that
+   * hold material.
+   *
+   * Cells: *outer* without material; *boundary* with material and at least one outer cell among
+   * its 3^dim - 1 neighbours (faces, edges and corners; cells beyond the edge of the grid do not
+   * count, since the open knot vector already ends the basis there without a cut); *interior*
+   * otherwise. Control points: *interior* if the support of their function contains an interior
+   * cell, *boundary* if it contains a boundary cell but no interior one, *outer* otherwise.
+   *
+   * The unknowns (DoFs) are the interior control points, numbered in increasing control-point
+   * index. Each boundary control point k is extrapolated from a block I_k of (q+1)^dim interior
+   * control points by tensor-product Lagrange weights E_ik (eq. (54)). The block is the one
+   * *nearest* to k: smallest Euclidean index distance from k to the block (0 in a direction where
+   * k lies within the block's range); ties are broken by the distance from k to the block centre,
+   * then by the lexicographically smallest lower corner (x fastest), so the choice is
+   * deterministic — at a corner this prefers the block diagonally adjacent to k over a shifted one
+   * only when it is strictly closer. The extended functions are
+   * Ñ_i = N_i + sum_{k: i in I_k} E_ik N_k (eq. (53)).
+   *
+   * With the extension switched off, every non-outer control point is a DoF (the plain B-spline
+   * basis on the active cells), for comparison studies.
+   *
+   * Per active cell, the DoFs its extended functions touch and the matrix E_cell that maps the
+   * cell's (q+1)^dim B-spline values to them are computed once at construction; evaluation is a
+   * small dense product.
+   */
+  template <int dim>
+  class ExtendedBSplineSpace
+  {
+  public:
+    /**
+     * @param cell_has_material One flag per cell of @p space.
+     * Throws std::runtime_error when some boundary control point has no block of interior control
+     * points (the body is thinner than q+1 interior cells somewhere).
+     */
+    ExtendedBSplineSpace(const BSplineSpace<dim> &space,
+                         const std::vector<bool> &cell_has_material,
+                         const bool               use_extension = true);
+
+    const BSplineSpace<dim> &
+    space() const;
+    CellKind
+    cell_kind(const unsigned int cell) const;
+    ControlPointKind
+    control_point_kind(const unsigned int i) const;
+    unsigned int
+    n_dofs() const;
+    /** DoF of control point @p i, or numbers::invalid_unsigned_int if it is not a DoF. */
+    unsigned int
+    dof_of_control_point(const unsigned int i) const;
+
+    /** DoFs touched by the extended functions of a non-outer @p cell (sorted). */
+    const std::vector<unsigned int> &
+    cell_dofs(const unsigned int cell) const;
+    /** E_cell: extended values = E_cell * local B-spline values. */
+    const dealii::FullMatrix<double> &
+    cell_extension_matrix(const unsigned int cell) const;
+
+    /**
+     * Values and gradients at @p p of the extended functions of cell_dofs(@p cell). @p values and
+     * @p gradients must have cell_dofs(cell).size() entries, the scratch vectors
+     * functions_per_cell() entries. No allocation.
+     */
+    void
+    evaluate(const dealii::Point<dim>            &p,
+             const unsigned int                   cell,
+             std::vector<double>                 &values,
+             std::vector<dealii::Tensor<1, dim>> &gradients,
+             std::vector<double>                 &scratch_values,
+             std::vector<dealii::Tensor<1, dim>> &scratch_gradients) const;
+
+    /** The weights (interior control point i, E_ik) of boundary control point @p k. */
+    const std::vector<std::pair<unsigned int, double>> &
+    extrapolation_weights(const unsigned int k) const;
+
+  private:
+    void
+    classify_cells(const std::vector<bool> &cell_has_material);
+    void
+    classify_control_points();
+    void
+    compute_extrapolation_weights();
+    void
+    build_cell_matrices();
+
+    const BSplineSpace<dim>                                  &space_;
+    bool                                                      use_extension;
+    std::vector<CellKind>                                     cell_kinds;
+    std::vector<ControlPointKind>                             point_kinds;
+    std::vector<unsigned int>                                 dof_index;
+    unsigned int                                              n_dofs_ = 0;
+    std::vector<std::vector<std::pair<unsigned int, double>>> weights;
+    std::vector<std::vector<unsigned int>>                    dofs_of_cell;
+    std::vector<dealii::FullMatrix<double>>                   matrix_of_cell;
+  };
+} // namespace GelMPM
+
+#endif

@@ -1,0 +1,392 @@
+#include <gelmpm/bspline/extended_bspline_space.h>
+
+#include <deal.II/base/numbers.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <stdexcept>
+#include <string>
+
+namespace GelMPM
+{
+  namespace
+  {
+    /** Calls f(multi_index) for every multi-index in the box [lo, hi] (inclusive). */
+    template <int dim, typename F>
+    void
+    for_each_in_box(const std::array<int, dim> &lo, const std::array<int, dim> &hi, const F &f)
+    {
+      for (unsigned int d = 0; d < dim; ++d)
+        if (lo[d] > hi[d])
+          return;
+      std::array<int, dim> i = lo;
+      while (true)
+        {
+          f(i);
+          unsigned int d = 0;
+          for (; d < dim; ++d)
+            {
+              if (++i[d] <= hi[d])
+                break;
+              i[d] = lo[d];
+            }
+          if (d == dim)
+            return;
+        }
+    }
+
+    template <int dim>
+    std::array<unsigned int, dim>
+    to_unsigned(const std::array<int, dim> &i)
+    {
+      std::array<unsigned int, dim> u;
+      for (unsigned int d = 0; d < dim; ++d)
+        u[d] = i[d];
+      return u;
+    }
+  } // namespace
+
+
+  template <int dim>
+  ExtendedBSplineSpace<dim>::ExtendedBSplineSpace(const BSplineSpace<dim> &space,
+                                                  const std::vector<bool> &cell_has_material,
+                                                  const bool               use_extension)
+    : space_(space)
+    , use_extension(use_extension)
+  {
+    if (cell_has_material.size() != space.n_cells())
+      throw std::invalid_argument("ExtendedBSplineSpace: one material flag per cell expected");
+    classify_cells(cell_has_material);
+    classify_control_points();
+    if (use_extension)
+      compute_extrapolation_weights();
+    build_cell_matrices();
+  }
+
+
+  template <int dim>
+  void
+  ExtendedBSplineSpace<dim>::classify_cells(const std::vector<bool> &cell_has_material)
+  {
+    const auto &n = space_.n_cells_per_direction();
+    cell_kinds.assign(space_.n_cells(), CellKind::outer);
+    for (unsigned int cell = 0; cell < space_.n_cells(); ++cell)
+      {
+        if (!cell_has_material[cell])
+          continue;
+        const auto           c = space_.cell_multi_index(cell);
+        std::array<int, dim> lo, hi;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            lo[d] = std::max(0, static_cast<int>(c[d]) - 1);
+            hi[d] = std::min(static_cast<int>(n[d]) - 1, static_cast<int>(c[d]) + 1);
+          }
+        bool next_to_outer = false;
+        for_each_in_box<dim>(lo, hi, [&](const std::array<int, dim> &i) {
+          if (!cell_has_material[space_.cell_index(to_unsigned<dim>(i))])
+            next_to_outer = true;
+        });
+        cell_kinds[cell] = next_to_outer ? CellKind::boundary : CellKind::interior;
+      }
+  }
+
+
+  template <int dim>
+  void
+  ExtendedBSplineSpace<dim>::classify_control_points()
+  {
+    const auto &n = space_.n_cells_per_direction();
+    const int   q = space_.degree();
+    point_kinds.assign(space_.n_functions(), ControlPointKind::outer);
+    dof_index.assign(space_.n_functions(), dealii::numbers::invalid_unsigned_int);
+    n_dofs_ = 0;
+    for (unsigned int i = 0; i < space_.n_functions(); ++i)
+      {
+        // The support of function f covers cells f-q ... f in each direction.
+        const auto           f = space_.function_multi_index(i);
+        std::array<int, dim> lo, hi;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            lo[d] = std::max(0, static_cast<int>(f[d]) - q);
+            hi[d] = std::min(static_cast<int>(n[d]) - 1, static_cast<int>(f[d]));
+          }
+        bool interior = false, boundary = false;
+        for_each_in_box<dim>(lo, hi, [&](const std::array<int, dim> &c) {
+          const CellKind kind = cell_kinds[space_.cell_index(to_unsigned<dim>(c))];
+          interior |= (kind == CellKind::interior);
+          boundary |= (kind == CellKind::boundary);
+        });
+        point_kinds[i]    = interior   ? ControlPointKind::interior
+                            : boundary ? ControlPointKind::boundary
+                                       : ControlPointKind::outer;
+        const bool is_dof = interior || (boundary && !use_extension);
+        if (is_dof)
+          dof_index[i] = n_dofs_++;
+      }
+  }
+
+
+  template <int dim>
+  void
+  ExtendedBSplineSpace<dim>::compute_extrapolation_weights()
+  {
+    const int            q = space_.degree();
+    std::array<int, dim> n_functions;
+    for (unsigned int d = 0; d < dim; ++d)
+      n_functions[d] = space_.basis_1d(d).n_functions();
+
+    // block_ok[l]: the (q+1)^dim block with lower corner l holds interior points only.
+    std::vector<bool> block_ok(space_.n_functions(), false);
+    for (unsigned int l = 0; l < space_.n_functions(); ++l)
+      {
+        const auto           corner = space_.function_multi_index(l);
+        std::array<int, dim> lo, hi;
+        bool                 fits = true;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            lo[d] = corner[d];
+            hi[d] = corner[d] + q;
+            fits &= (hi[d] < n_functions[d]);
+          }
+        if (!fits)
+          continue;
+        bool all_interior = true;
+        for_each_in_box<dim>(lo, hi, [&](const std::array<int, dim> &i) {
+          all_interior &=
+            (point_kinds[space_.function_index(to_unsigned<dim>(i))] == ControlPointKind::interior);
+        });
+        block_ok[l] = all_interior;
+      }
+
+    weights.assign(space_.n_functions(), {});
+    const int max_radius = *std::max_element(n_functions.begin(), n_functions.end());
+    for (unsigned int k = 0; k < space_.n_functions(); ++k)
+      {
+        if (point_kinds[k] != ControlPointKind::boundary)
+          continue;
+        const auto kk = space_.function_multi_index(k);
+
+        // Scan windows of growing radius; once a block is found at Chebyshev radius r, a block at
+        // smaller Euclidean distance lies within radius r*sqrt(dim).
+        double               best_distance = std::numeric_limits<double>::max();
+        double               best_centre   = std::numeric_limits<double>::max();
+        std::array<int, dim> best;
+        bool                 found = false;
+        int                  limit = max_radius;
+        for (int r = 1; r <= limit; ++r)
+          {
+            std::array<int, dim> lo, hi;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                lo[d] = std::max(0, static_cast<int>(kk[d]) - q - r);
+                hi[d] = std::min(n_functions[d] - q - 1, static_cast<int>(kk[d]) + r);
+              }
+            for_each_in_box<dim>(lo, hi, [&](const std::array<int, dim> &l) {
+              if (!block_ok[space_.function_index(to_unsigned<dim>(l))])
+                return;
+              double distance = 0., centre = 0.;
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  const int gap = std::max(
+                    {0, l[d] - static_cast<int>(kk[d]), static_cast<int>(kk[d]) - (l[d] + q)});
+                  distance += gap * gap;
+                  const double offset = kk[d] - (l[d] + 0.5 * q);
+                  centre += offset * offset;
+                }
+              // Strictly better, or equal and lexicographically earlier (x fastest).
+              bool better = distance < best_distance - 1e-12 ||
+                            (distance < best_distance + 1e-12 && centre < best_centre - 1e-12);
+              if (!better && found && std::abs(distance - best_distance) < 1e-12 &&
+                  std::abs(centre - best_centre) < 1e-12)
+                for (int d = dim - 1; d >= 0; --d)
+                  if (l[d] != best[d])
+                    {
+                      better = l[d] < best[d];
+                      break;
+                    }
+              if (!found || better)
+                {
+                  found         = true;
+                  best          = l;
+                  best_distance = distance;
+                  best_centre   = centre;
+                }
+            });
+            if (found && limit == max_radius)
+              limit = std::min(max_radius, static_cast<int>(std::ceil(r * std::sqrt(dim))) + 1);
+          }
+        if (!found)
+          throw std::runtime_error(
+            "extended B-splines: no block of (q+1)^dim interior control points for a boundary "
+            "control point; the body is thinner than q+1 interior cells somewhere. Refine the "
+            "background grid or lower the degree.");
+
+        // Lagrange extrapolation in the index is exact for polynomials only where the B-spline
+        // (Marsden) coefficients are polynomials of the index: away from the repeated end knots,
+        // i.e. for indices q-1 ... n_cells in each direction that is extrapolated along.
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const int k_d = kk[d];
+            if (k_d >= best[d] && k_d <= best[d] + q)
+              continue;
+            if (std::min(k_d, best[d]) < q - 1 ||
+                std::max(k_d, best[d] + q) > static_cast<int>(space_.n_cells_per_direction()[d]))
+              throw std::runtime_error(
+                "extended B-splines: the body's boundary cuts cells within " + std::to_string(q) +
+                " cells of the edge of the background grid in direction " + std::to_string(d) +
+                ", where extrapolation is not exact; enlarge the background grid so that it "
+                "reaches at least q cells beyond the body, or let the body end on the grid edge");
+          }
+
+        // Tensor-product Lagrange extrapolation weights, eq. (54).
+        std::array<int, dim> hi;
+        for (unsigned int d = 0; d < dim; ++d)
+          hi[d] = best[d] + q;
+        for_each_in_box<dim>(best, hi, [&](const std::array<int, dim> &i) {
+          double E = 1.;
+          for (unsigned int d = 0; d < dim; ++d)
+            for (int s = best[d]; s <= best[d] + q; ++s)
+              if (s != i[d])
+                E *= static_cast<double>(static_cast<int>(kk[d]) - s) / (i[d] - s);
+          weights[k].emplace_back(space_.function_index(to_unsigned<dim>(i)), E);
+        });
+      }
+  }
+
+
+  template <int dim>
+  void
+  ExtendedBSplineSpace<dim>::build_cell_matrices()
+  {
+    dofs_of_cell.assign(space_.n_cells(), {});
+    matrix_of_cell.assign(space_.n_cells(), dealii::FullMatrix<double>());
+    std::vector<unsigned int> local;
+    for (unsigned int cell = 0; cell < space_.n_cells(); ++cell)
+      {
+        if (cell_kinds[cell] == CellKind::outer)
+          continue;
+        space_.cell_functions(cell, local);
+        std::map<unsigned int, std::vector<std::pair<unsigned int, double>>>
+          rows; // dof -> (local, weight)
+        for (unsigned int a = 0; a < local.size(); ++a)
+          {
+            const unsigned int i = local[a];
+            if (dof_index[i] != dealii::numbers::invalid_unsigned_int)
+              rows[dof_index[i]].emplace_back(a, 1.);
+            else if (point_kinds[i] == ControlPointKind::boundary)
+              for (const auto &[interior, E] : weights[i])
+                rows[dof_index[interior]].emplace_back(a, E);
+          }
+        auto &dofs   = dofs_of_cell[cell];
+        auto &matrix = matrix_of_cell[cell];
+        matrix.reinit(rows.size(), local.size());
+        unsigned int r = 0;
+        for (const auto &[dof, entries] : rows)
+          {
+            dofs.push_back(dof);
+            for (const auto &[a, E] : entries)
+              matrix(r, a) += E;
+            ++r;
+          }
+      }
+  }
+
+
+  template <int dim>
+  const BSplineSpace<dim> &
+  ExtendedBSplineSpace<dim>::space() const
+  {
+    return space_;
+  }
+
+
+  template <int dim>
+  CellKind
+  ExtendedBSplineSpace<dim>::cell_kind(const unsigned int cell) const
+  {
+    return cell_kinds[cell];
+  }
+
+
+  template <int dim>
+  ControlPointKind
+  ExtendedBSplineSpace<dim>::control_point_kind(const unsigned int i) const
+  {
+    return point_kinds[i];
+  }
+
+
+  template <int dim>
+  unsigned int
+  ExtendedBSplineSpace<dim>::n_dofs() const
+  {
+    return n_dofs_;
+  }
+
+
+  template <int dim>
+  unsigned int
+  ExtendedBSplineSpace<dim>::dof_of_control_point(const unsigned int i) const
+  {
+    return dof_index[i];
+  }
+
+
+  template <int dim>
+  const std::vector<unsigned int> &
+  ExtendedBSplineSpace<dim>::cell_dofs(const unsigned int cell) const
+  {
+    return dofs_of_cell[cell];
+  }
+
+
+  template <int dim>
+  const dealii::FullMatrix<double> &
+  ExtendedBSplineSpace<dim>::cell_extension_matrix(const unsigned int cell) const
+  {
+    return matrix_of_cell[cell];
+  }
+
+
+  template <int dim>
+  void
+  ExtendedBSplineSpace<dim>::evaluate(const dealii::Point<dim>            &p,
+                                      const unsigned int                   cell,
+                                      std::vector<double>                 &values,
+                                      std::vector<dealii::Tensor<1, dim>> &gradients,
+                                      std::vector<double>                 &scratch_values,
+                                      std::vector<dealii::Tensor<1, dim>> &scratch_gradients) const
+  {
+    space_.evaluate(p, cell, scratch_values, scratch_gradients);
+    const auto &E = matrix_of_cell[cell];
+    for (unsigned int r = 0; r < E.m(); ++r)
+      {
+        double                 v = 0.;
+        dealii::Tensor<1, dim> g;
+        for (unsigned int a = 0; a < E.n(); ++a)
+          if (E(r, a) != 0.)
+            {
+              v += E(r, a) * scratch_values[a];
+              g += E(r, a) * scratch_gradients[a];
+            }
+        values[r]    = v;
+        gradients[r] = g;
+      }
+  }
+
+
+  template <int dim>
+  const std::vector<std::pair<unsigned int, double>> &
+  ExtendedBSplineSpace<dim>::extrapolation_weights(const unsigned int k) const
+  {
+    static const std::vector<std::pair<unsigned int, double>> none;
+    return use_extension ? weights[k] : none;
+  }
+
+
+  template class ExtendedBSplineSpace<1>;
+  template class ExtendedBSplineSpace<2>;
+  template class ExtendedBSplineSpace<3>;
+} // namespace GelMPM
