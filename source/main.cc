@@ -7,13 +7,13 @@
  *
  * Exit status: 0 success, 1 the run failed, 2 bad input (nothing is written then).
  */
-#include <deal.II/base/exceptions.h>
-#include <deal.II/base/mpi.h>
-
 #include <gelmpm/core/input_error.h>
 #include <gelmpm/core/parameters.h>
 #include <gelmpm/simulator/scene_structure.h>
 #include <gelmpm/simulator/simulator.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 
 #include <iostream>
 
@@ -40,8 +40,7 @@ namespace
         std::cout << "gelmpm: scene '" << cl.scene_file << "' is valid\n";
         return 0;
       }
-    simulator.run();
-    return 0;
+    return simulator.run();
   }
 } // namespace
 
@@ -60,9 +59,9 @@ main(int argc, char **argv)
           std::cout << GelMPM::CommandLine::usage();
           return 0;
         }
-      const auto structure = cl.scene_file.empty() ?
-                               GelMPM::SceneStructure() :
-                               GelMPM::SceneStructure::read(cl.scene_file, cl.overrides);
+      const auto structure = cl.scene_file.empty()
+                               ? GelMPM::SceneStructure()
+                               : GelMPM::SceneStructure::read(cl.scene_file, cl.overrides);
       return structure.dimension == 2 ? run_scene<2>(cl, structure) : run_scene<3>(cl, structure);
     }
   catch (const GelMPM::InputError &e)

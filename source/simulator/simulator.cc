@@ -1,13 +1,16 @@
-#include <deal.II/base/mpi.h>
-#include <deal.II/base/multithread_info.h>
-#include <deal.II/base/revision.h>
-
 #include <gelmpm/core/input_error.h>
 #include <gelmpm/core/version.h>
 #include <gelmpm/simulator/simulator.h>
 
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/multithread_info.h>
+#include <deal.II/base/revision.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <sstream>
 
@@ -15,24 +18,49 @@ namespace GelMPM
 {
   template <int dim>
   void
-  Simulator<dim>::declare_parameters(dealii::ParameterHandler &prm,
-                                     const SceneStructure &    structure)
+  Simulator<dim>::declare_parameters(dealii::ParameterHandler &prm, const SceneStructure &structure)
   {
-    (void)structure;
     SceneStructure::declare_parameters(prm);
     OutputSettings::declare_parameters(prm);
+    FloryRehnerGel<dim>::declare_parameters(prm);
+    BackgroundGrid<dim>::declare_parameters(prm);
+    Geometry<dim>::declare_parameters(prm);
+    BoundaryConditions<dim>::declare_parameters(prm, structure.boundary_pieces);
+    MaterialPointGenerator<dim>::declare_parameters(prm);
+    DiscretisationSettings::declare_parameters(prm);
+    NitscheSettings::declare_parameters(prm);
+    LinearSolver::declare_parameters(prm);
+    NewtonSettings::declare_parameters(prm);
+    TimeStepping::declare_parameters(prm);
+    Observables<dim>::declare_parameters(prm);
   }
 
 
   template <int dim>
   Simulator<dim>::Simulator(dealii::ParameterHandler &prm,
-                            const SceneStructure &    structure,
-                            const std::string &       scene_file)
+                            const SceneStructure     &structure,
+                            const std::string        &scene_file)
     : structure(structure)
     , scene_file(scene_file)
     , pcout(std::cout, dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    , timer(MPI_COMM_WORLD, pcout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times)
   {
     output_settings.parse_parameters(prm);
+    material.parse_parameters(prm);
+    grid.parse_parameters(prm);
+    geometry.parse_parameters(prm);
+    boundary_conditions.parse_parameters(prm, structure.boundary_pieces);
+    generator.parse_parameters(prm);
+    discretisation.parse_parameters(prm);
+    nitsche.parse_parameters(prm);
+    linear_solver.parse_parameters(prm);
+    newton.parse_parameters(prm);
+    time_stepping.parse_parameters(prm);
+    observables.parse_parameters(prm, structure.boundary_pieces);
+    // Checks that need more than one section: build the spaces once (odd cell counts with
+    // subdivision are reported here, before anything is written).
+    DiscreteSpaces<dim> check(grid, discretisation);
+    (void)check;
 
     std::ostringstream used;
     prm.print_parameters(used, dealii::ParameterHandler::ShortPRM);
@@ -45,7 +73,9 @@ namespace GelMPM
   Simulator<dim>::print_header()
   {
     pcout << "GelMPM: hydrogel scene '" << std::filesystem::path(scene_file).filename().string()
-          << "', " << dim << "D" << (dim == 2 ? " (plane strain)" : "") << '\n';
+          << "', " << dim << "D" << (dim == 2 ? " (plane strain)" : "") << ", "
+          << discretisation.name() << (discretisation.extension ? ", extended B-splines" : "")
+          << '\n';
     if (!output_settings.test_mode)
       pcout << "  GelMPM " << GELMPM_VERSION << " (" << GELMPM_GIT_REVISION << "), deal.II "
             << DEAL_II_PACKAGE_VERSION << " (" << DEAL_II_GIT_SHORTREV << "), "
@@ -76,10 +106,262 @@ namespace GelMPM
 
   template <int dim>
   void
+  Simulator<dim>::create_material_points()
+  {
+    grid.create_triangulation(triangulation);
+    particles.initialize(triangulation, mapping, PropertyLayout<dim>::n_properties);
+    generator.generate(geometry,
+                       grid,
+                       triangulation,
+                       boundary_conditions,
+                       material.lambda_0(),
+                       material.mu_0(),
+                       particles);
+
+    unsigned int n_volume = 0, n_surface = 0;
+    double       volume = 0.;
+    for (const auto &p : particles)
+      if (std::lround(p.get_properties()[PropertyLayout<dim>::kind]) == 0)
+        {
+          ++n_volume;
+          volume += p.get_properties()[PropertyLayout<dim>::measure_0];
+        }
+      else
+        ++n_surface;
+    pcout << "  material points: " << n_volume << " volume, " << n_surface
+          << " surface; body volume " << volume << '\n';
+
+    tau_d    = std::pow(time_stepping.characteristic_length, 2) / material.diffusivity();
+    scale_u  = material.shear_modulus() * std::pow(volume, (dim - 1.) / dim);
+    scale_mu = material.kT_over_nu() * volume;
+  }
+
+
+  template <int dim>
+  void
+  Simulator<dim>::open_statistics()
+  {
+    std::vector<std::string> columns = {"step",
+                                        "time",
+                                        "t_over_tau_d",
+                                        "dt",
+                                        "newton_iterations",
+                                        "attempts",
+                                        "residual_u",
+                                        "residual_mu",
+                                        "n_dofs_u",
+                                        "n_dofs_mu",
+                                        "n_active_cells",
+                                        "n_particles"};
+    for (const auto &c : observables.columns())
+      columns.push_back(c);
+    statistics.open(output_settings.directory + "/statistics.csv", columns);
+  }
+
+
+  template <int dim>
+  void
+  Simulator<dim>::record_statistics(const NewtonReport &report, const unsigned int attempts)
+  {
+    statistics.set("step", step);
+    statistics.set("time", time * tau_d);
+    statistics.set("t_over_tau_d", time);
+    statistics.set("newton_iterations", report.iterations);
+    statistics.set("attempts", attempts);
+    statistics.set("residual_u", report.residual_u);
+    statistics.set("residual_mu", report.residual_mu);
+    statistics.set("n_particles", particles.n_global_particles());
+    if (system && step > 0)
+      {
+        statistics.set("n_dofs_u", spaces->n_u_dofs());
+        statistics.set("n_dofs_mu", spaces->n_mu_dofs());
+        statistics.set("n_active_cells", system->n_active_cells());
+      }
+    observables.evaluate(particles, statistics);
+    statistics.write_row();
+  }
+
+
+  template <int dim>
+  void
+  Simulator<dim>::write_output()
+  {
+    if (!output_settings.write_particles)
+      return;
+    dealii::TimerOutput::Scope scope(timer, "output");
+    particle_output->write(particles, time);
+  }
+
+
+  template <int dim>
+  void
+  Simulator<dim>::store_mu_coefficients(const dealii::Vector<double> &solution)
+  {
+    const auto        &mu  = spaces->mu();
+    const unsigned int n_u = spaces->n_u_dofs();
+    for (unsigned int i = 0; i < mu_coefficients.size(); ++i)
+      {
+        const unsigned int dof = mu.dof_of_control_point(i);
+        if (dof != dealii::numbers::invalid_unsigned_int)
+          mu_coefficients[i] = solution(n_u + dof);
+        else if (mu.control_point_kind(i) == ControlPointKind::boundary)
+          {
+            double value = 0.;
+            for (const auto &[interior, weight] : mu.extrapolation_weights(i))
+              value += weight * solution(n_u + mu.dof_of_control_point(interior));
+            mu_coefficients[i] = value;
+          }
+      }
+  }
+
+
+  template <int dim>
+  void
+  Simulator<dim>::initial_guess(dealii::Vector<double> &solution) const
+  {
+    solution.reinit(spaces->n_dofs());
+    const auto        &mu  = spaces->mu();
+    const unsigned int n_u = spaces->n_u_dofs();
+    for (unsigned int i = 0; i < mu_coefficients.size(); ++i)
+      {
+        const unsigned int dof = mu.dof_of_control_point(i);
+        if (dof != dealii::numbers::invalid_unsigned_int)
+          solution(n_u + dof) = mu_coefficients[i];
+      }
+  }
+
+
+  template <int dim>
+  bool
+  Simulator<dim>::advance(double &dt)
+  {
+    {
+      dealii::TimerOutput::Scope scope(timer, "setup");
+      system->setup(particles);
+    }
+    dealii::Vector<double> solution;
+    for (unsigned int attempt = 1;; ++attempt)
+      {
+        const double step_dt = time_stepping.next_step(time, dt);
+        system->set_boundary_values(time + step_dt);
+        initial_guess(solution);
+        const NewtonReport report = solve_newton(*system,
+                                                 solution,
+                                                 step_dt * tau_d,
+                                                 newton,
+                                                 linear_solver,
+                                                 scale_u,
+                                                 scale_mu,
+                                                 timer);
+        if (!report.converged)
+          {
+            pcout << "    step " << step + 1 << " at t = " << time << " with dt = " << step_dt
+                  << " failed (" << report.failure << ")";
+            dt = step_dt * time_stepping.cut_factor;
+            if (dt < time_stepping.minimum_step)
+              {
+                pcout << "; the step would fall below 'Time stepping/Minimum step' = "
+                      << time_stepping.minimum_step << std::endl;
+                return false;
+              }
+            pcout << "; retrying with dt = " << dt << std::endl;
+            continue;
+          }
+
+        {
+          dealii::TimerOutput::Scope scope(timer, "update");
+          const auto                 n_before = particles.n_global_particles();
+          system->update_particles(solution);
+          particles.sort_particles_into_subdomains_and_cells();
+          if (particles.n_global_particles() != n_before)
+            throw std::runtime_error(std::to_string(n_before - particles.n_global_particles()) +
+                                     " material point(s) left the background grid at t = " +
+                                     std::to_string(time + step_dt) +
+                                     " tau_d; enlarge the grid ('Background grid/Upper corner')");
+          store_mu_coefficients(solution);
+        }
+        const bool shortened = step_dt < std::min(dt, time_stepping.cap(time)) * (1. - 1e-12);
+        time += step_dt;
+        ++step;
+        statistics.set("dt", step_dt);
+        record_statistics(report, attempt);
+
+        pcout << "  step " << std::setw(5) << step << "  t/tau_d = " << std::setw(11)
+              << std::setprecision(5) << time << "  dt = " << std::setw(10) << step_dt
+              << "  Newton " << std::setw(2) << report.iterations << "  |R_u| "
+              << std::setprecision(2) << report.residual_u << "  |R_mu| " << report.residual_mu
+              << std::setprecision(6) << std::endl;
+
+        const bool at_stop = std::any_of(time_stepping.stop_times.begin(),
+                                         time_stepping.stop_times.end(),
+                                         [&](const double s) {
+                                           return std::abs(s - time) <= 1e-10 * s;
+                                         });
+        const bool interval_due =
+          (output_settings.interval_steps > 0 && step % output_settings.interval_steps == 0) ||
+          (output_settings.interval_time > 0. && time >= next_output_time * (1. - 1e-12));
+        if (output_settings.interval_time > 0.)
+          while (next_output_time <= time * (1. + 1e-12))
+            next_output_time += output_settings.interval_time;
+        if (at_stop || interval_due || time >= time_stepping.end_time * (1. - 1e-12))
+          write_output();
+
+        if (!shortened)
+          dt = step_dt;
+        if (report.iterations < time_stepping.growth_below)
+          dt *= time_stepping.growth_factor;
+        return true;
+      }
+  }
+
+
+  template <int dim>
+  int
   Simulator<dim>::run()
   {
     print_header();
     prepare_output_directory();
+    create_material_points();
+    spaces = std::make_unique<DiscreteSpaces<dim>>(grid, discretisation);
+    system = std::make_unique<MixedSystem<dim>>(material, boundary_conditions, nitsche, *spaces);
+    particle_output = std::make_unique<ParticleOutput<dim>>(output_settings.directory, material);
+    mu_coefficients.assign(spaces->mu_space().n_functions(), material.mu_0());
+    open_statistics();
+    next_output_time = output_settings.interval_time;
+
+    statistics.set("dt", 0.);
+    record_statistics(NewtonReport(), 0);
+    write_output();
+
+    double dt     = time_stepping.initial_step;
+    int    status = 0;
+    while (time < time_stepping.end_time * (1. - 1e-12))
+      {
+        if (step >= time_stepping.maximum_steps)
+          {
+            pcout << "gelmpm: stopped after 'Time stepping/Maximum steps' = "
+                  << time_stepping.maximum_steps << " steps at t/tau_d = " << time << std::endl;
+            status = 1;
+            break;
+          }
+        if (!advance(dt))
+          {
+            pcout << "gelmpm: the run cannot converge beyond t/tau_d = " << time
+                  << "; results up to there are in " << output_settings.directory << std::endl;
+            write_output();
+            status = 1;
+            break;
+          }
+      }
+    if (status == 0)
+      pcout << "gelmpm: reached t/tau_d = " << time << " in " << step << " steps" << std::endl;
+    if (!output_settings.test_mode)
+      {
+        pcout << "gelmpm: results are in " << output_settings.directory
+              << " (open particles.pvd in ParaView; statistics.csv per step)" << std::endl;
+        timer.print_summary();
+      }
+    return status;
   }
 
 

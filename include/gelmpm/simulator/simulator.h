@@ -1,13 +1,34 @@
 #ifndef gelmpm_simulator_simulator_h
 #define gelmpm_simulator_simulator_h
 
+#include <gelmpm/assembly/discretisation.h>
+#include <gelmpm/assembly/mixed_system.h>
+#include <gelmpm/assembly/nitsche_settings.h>
+#include <gelmpm/io/output_settings.h>
+#include <gelmpm/io/particle_output.h>
+#include <gelmpm/io/statistics_file.h>
+#include <gelmpm/material/flory_rehner_gel.h>
+#include <gelmpm/particles/material_point_generator.h>
+#include <gelmpm/scene/background_grid.h>
+#include <gelmpm/scene/boundary_conditions.h>
+#include <gelmpm/scene/geometry.h>
+#include <gelmpm/simulator/observables.h>
+#include <gelmpm/simulator/scene_structure.h>
+#include <gelmpm/solvers/linear_solver.h>
+#include <gelmpm/solvers/newton.h>
+#include <gelmpm/solvers/time_stepping.h>
+
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/vector.h>
+#include <deal.II/particles/particle_handler.h>
 
-#include <gelmpm/io/output_settings.h>
-#include <gelmpm/simulator/scene_structure.h>
-
+#include <memory>
 #include <string>
+#include <vector>
 
 namespace GelMPM
 {
@@ -16,7 +37,11 @@ namespace GelMPM
    *
    * Construction parses and validates every parameter and throws InputError on bad input, so
    * that nothing is written before the whole scene is known to be consistent. run() creates the
-   * output directory, writes the parameters as used, and then does what the scene asks for.
+   * output directory, writes the parameters as used, generates the material points and then
+   * advances the coupled problem in time: per step the grid is reset, the cells re-classified,
+   * the extended bases rebuilt, Newton solves for (du, mu), and the material points are updated
+   * (paper Fig. 2b). A step whose Newton iteration fails is retried from the last converged
+   * state with a smaller step.
    *
    * @tparam dim Space dimension (2: plane strain; 3).
    */
@@ -33,27 +58,71 @@ namespace GelMPM
      * Throws InputError on inconsistent input.
      */
     Simulator(dealii::ParameterHandler &prm,
-              const SceneStructure &    structure,
-              const std::string &       scene_file);
+              const SceneStructure     &structure,
+              const std::string        &scene_file);
 
-    /** Run the scene. */
-    void
+    /** Run the scene. Returns 0 on success, 1 if the run stopped early (no convergence). */
+    int
     run();
 
   private:
-    /** Print the run header: versions, threads, ranks (omitted in test mode). */
     void
     print_header();
-
-    /** Create the output directory and write parameters.prm and original.prm into it. */
     void
     prepare_output_directory() const;
+    void
+    create_material_points();
+    void
+    open_statistics();
+    /** Take one converged step from time t; returns false if the step size fell below the minimum.
+     */
+    bool
+    advance(double &dt);
+    void
+    record_statistics(const NewtonReport &report, const unsigned int attempts);
+    void
+    write_output();
+    /** Chemical-potential coefficients of every control point of the mu grid, from a solution. */
+    void
+    store_mu_coefficients(const dealii::Vector<double> &solution);
+    /** Initial guess for a step: du = 0, mu from the last converged coefficients. */
+    void
+    initial_guess(dealii::Vector<double> &solution) const;
 
-    SceneStructure             structure;
-    OutputSettings             output_settings;
+    SceneStructure              structure;
+    OutputSettings              output_settings;
+    FloryRehnerGel<dim>         material;
+    BackgroundGrid<dim>         grid;
+    Geometry<dim>               geometry;
+    BoundaryConditions<dim>     boundary_conditions;
+    MaterialPointGenerator<dim> generator;
+    DiscretisationSettings      discretisation;
+    NitscheSettings             nitsche;
+    LinearSolver                linear_solver;
+    NewtonSettings              newton;
+    TimeStepping                time_stepping;
+    Observables<dim>            observables;
+
     std::string                scene_file;
     std::string                parameters_as_used;
     dealii::ConditionalOStream pcout;
+    dealii::TimerOutput        timer;
+
+    dealii::Triangulation<dim>              triangulation;
+    dealii::MappingQ1<dim>                  mapping;
+    dealii::Particles::ParticleHandler<dim> particles;
+    std::unique_ptr<DiscreteSpaces<dim>>    spaces;
+    std::unique_ptr<MixedSystem<dim>>       system;
+    std::unique_ptr<ParticleOutput<dim>>    particle_output;
+    StatisticsFile                          statistics;
+    std::vector<double>                     mu_coefficients; // per mu control point
+
+    double       time             = 0.; // in tau_d
+    unsigned int step             = 0;
+    double       tau_d            = 1.; // L^2 / D, physical time of one tau_d
+    double       scale_u          = 1.;
+    double       scale_mu         = 1.;
+    double       next_output_time = 0.;
   };
 } // namespace GelMPM
 

@@ -1,0 +1,123 @@
+#ifndef gelmpm_assembly_discretisation_h
+#define gelmpm_assembly_discretisation_h
+
+#include <gelmpm/bspline/bspline_space.h>
+#include <gelmpm/bspline/extended_bspline_space.h>
+#include <gelmpm/scene/background_grid.h>
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace GelMPM
+{
+  /**
+   * @brief The "Discretisation" section: which B-spline pair interpolates u and mu (paper §3.4,
+   * §4.2 notation Qi–Qj and Qi–QjSD) and whether boundary functions are extended (§3.5).
+   */
+  struct DiscretisationSettings
+  {
+    /** Degree q_u of the displacement B-splines (cell size h of the background grid). */
+    unsigned int displacement_degree = 2;
+    /** Degree q_mu of the chemical-potential B-splines. */
+    unsigned int chemical_potential_degree = 2;
+    /** Subdivision stabilisation: mu on the grid of cell size 2h (eq. (46)–(49)). */
+    bool subdivision = true;
+    /** Extended B-splines against cut-cell ill-conditioning (eq. (50)–(54)). */
+    bool extension = true;
+
+    /** The pair's name in the paper's notation, e.g. "Q2-Q2SD". */
+    std::string
+    name() const;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+
+  /**
+   * @brief The two B-spline spaces of a run and, for the current step, their extended versions
+   * on the cells that hold material.
+   *
+   * The displacement space lives on the background grid (cell size h); the chemical-potential
+   * space on the same grid or, with subdivision, on the grid of cell size 2h over the same box, so
+   * that coarse cell (i/2, j/2) covers fine cells (i, j). The grid is reset every step: reinit()
+   * rebuilds the cell classification and the extended bases from where the volume points are.
+   *
+   * Global unknowns of the coupled system: dim components per displacement DoF (interleaved,
+   * index dim*i + c) followed by the chemical-potential DoFs (index n_u_dofs() + j).
+   */
+  template <int dim>
+  class DiscreteSpaces
+  {
+  public:
+    /** Build the two spaces. Throws InputError when subdivision needs an even cell count. */
+    DiscreteSpaces(const BackgroundGrid<dim> &grid, const DiscretisationSettings &settings);
+
+    /**
+     * Classify cells and build the extended spaces for this step. @p u_cell_has_material flags
+     * the displacement-grid cells that hold at least one volume point; a mu cell holds material
+     * when one of the displacement cells it covers does.
+     */
+    void
+    reinit(const std::vector<bool> &u_cell_has_material);
+
+    const BSplineSpace<dim> &
+    u_space() const;
+    const BSplineSpace<dim> &
+    mu_space() const;
+    const ExtendedBSplineSpace<dim> &
+    u() const;
+    const ExtendedBSplineSpace<dim> &
+    mu() const;
+
+    /** The mu cell that covers displacement cell @p u_cell. */
+    unsigned int
+    mu_cell_of(const unsigned int u_cell) const;
+
+    /** Number of displacement unknowns (dim per DoF of the extended u space). */
+    unsigned int
+    n_u_dofs() const;
+    /** Number of chemical-potential unknowns. */
+    unsigned int
+    n_mu_dofs() const;
+    /** n_u_dofs() + n_mu_dofs(). */
+    unsigned int
+    n_dofs() const;
+
+    /** Smallest cell size of the displacement grid (h_u of the Nitsche penalty). */
+    double
+    h_u() const;
+    /** Smallest cell size of the chemical-potential grid (h_mu). */
+    double
+    h_mu() const;
+
+    /**
+     * The cell with material in which a surface point at @p p is evaluated: the cell containing p
+     * if it holds material, else the nearest of its neighbours that does (the point lies on a face
+     * of, or just outside, the cells with volume points; the cell's polynomial pieces continue
+     * the field there). numbers::invalid_unsigned_int if no neighbour holds material.
+     */
+    unsigned int
+    active_u_cell_containing(const dealii::Point<dim> &p) const;
+
+    const DiscretisationSettings &
+    settings() const;
+
+  private:
+    DiscretisationSettings                     settings_;
+    BSplineSpace<dim>                          u_space_;
+    BSplineSpace<dim>                          mu_space_;
+    std::unique_ptr<ExtendedBSplineSpace<dim>> u_;
+    std::unique_ptr<ExtendedBSplineSpace<dim>> mu_;
+    std::vector<bool>                          u_cell_has_material_;
+  };
+} // namespace GelMPM
+
+#endif

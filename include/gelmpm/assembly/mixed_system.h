@@ -1,0 +1,189 @@
+#ifndef gelmpm_assembly_mixed_system_h
+#define gelmpm_assembly_mixed_system_h
+
+#include <gelmpm/assembly/discretisation.h>
+#include <gelmpm/assembly/nitsche_settings.h>
+#include <gelmpm/material/flory_rehner_gel.h>
+#include <gelmpm/particles/property_layout.h>
+#include <gelmpm/scene/boundary_conditions.h>
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+#include <deal.II/particles/particle_handler.h>
+
+#include <vector>
+
+namespace GelMPM
+{
+  /**
+   * @brief The coupled u–mu system of one time step on material points: residual and tangent of
+   * the previously-converged Lagrangian weak form (paper eq. (26), (31)) with Nitsche terms
+   * (eq. (32)), Neumann traction and solvent flux, assembled on the extended (and subdivided)
+   * B-spline bases.
+   *
+   * Units (see FloryRehnerGel): stresses in G, mu in k_BT. The mu equation is the paper's H
+   * multiplied by k_BT, so that the tangent is symmetric in these units:
+   *   R_mu[q] = sum_p V_p [ -(k_BT/nu)(dJ - 1) q - dt m_p grad mu . grad q ]
+   *           + sum_s A_s dt (k_BT/nu) (nu i) q                     (flux pieces)
+   *           + sum_s A_s dt [ m (grad mu.N) q + s m (grad q.N)(mu - mubar)
+   *                            - beta_mu (mu - mubar) q ]                  (prescribed mu)
+   *           - s sum_s A_s (W : dP_n/dmu) q                         (prescribed u),
+   * with m_p = FloryRehnerGel::mobility(F_n F_0) frozen over the step (§2.4) and
+   * W = Pi (u - ubar) (x) N, Pi the projector of the constrained components (I for a fixed
+   * piece, N(x)N for a normal one, T(x)T for a tangential one):
+   *   R_u[w] = sum_p V_p P_n : grad w - sum_s A_s ((I - Pi) T_n) . w
+   *          + sum_s A_s [ beta_u Pi(u - ubar).w - Pi(P_n N).w - s W : A_n : grad w ].
+   * u - ubar uses the total displacement u = x_n - X_0 + du. The symmetric terms are the
+   * gradient of a potential, so the exact tangent contains the third derivative of the energy
+   * contracted with W; it is included (see assemble()) so that Newton converges quadratically and
+   * the tangent equals the finite-difference Jacobian of the residual.
+   *
+   * The sign of the mu-symmetry term is the one that makes the tangent symmetric (s = 1); with
+   * the sign printed in eq. (32) the mu block would be skew.
+   *
+   * Per step, setup() gathers the material points, classifies the cells, builds the extended
+   * bases and caches every point's shape-function values and gradients: they do not change over
+   * the Newton iterations of a step (the grid is reset, points sit at x_n).
+   */
+  template <int dim>
+  class MixedSystem
+  {
+  public:
+    MixedSystem(const FloryRehnerGel<dim> &material,
+                BoundaryConditions<dim>   &boundary_conditions,
+                const NitscheSettings     &nitsche,
+                DiscreteSpaces<dim>       &spaces);
+
+    /**
+     * Start a step: locate the points of @p particles, classify cells from the volume points,
+     * rebuild the extended spaces, cache shape data and the sparsity pattern. Throws
+     * std::runtime_error if a point lies outside the background grid.
+     */
+    void
+    setup(dealii::Particles::ParticleHandler<dim> &particles);
+
+    /**
+     * Evaluate the boundary data (ubar, traction, mubar, flux) at time @p t_over_tau_d for
+     * every surface point; called once per attempt of a step.
+     */
+    void
+    set_boundary_values(const double t_over_tau_d);
+
+    /**
+     * Assemble the residual (and, if @p with_matrix, the tangent) at the unknowns @p solution
+     * (du then mu) for the physical time step @p dt. Throws NonPhysicalState if some point's
+     * state leaves the physical range (J <= 1).
+     */
+    void
+    assemble(const dealii::Vector<double> &solution, const double dt, const bool with_matrix);
+
+    /** The tangent assembled last. */
+    const dealii::TrilinosWrappers::SparseMatrix &
+    matrix() const;
+
+    /** The residual assembled last. */
+    const dealii::Vector<double> &
+    residual() const;
+
+    /** Euclidean norm of the displacement block of the residual. */
+    double
+    residual_norm_u() const;
+
+    /** Euclidean norm of the chemical-potential block of the residual. */
+    double
+    residual_norm_mu() const;
+
+    /**
+     * After convergence: move every material point by du, and update F_n F_0, V_n, N_n A_n
+     * (eq. (34)) and mu on the points. Leaves the particles unsorted (the caller re-sorts).
+     */
+    void
+    update_particles(const dealii::Vector<double> &solution);
+
+    /** Number of material points of the last setup(), and how many take part in assembly. */
+    unsigned int
+    n_points() const;
+
+    /** Displacement cells that hold volume points in this step. */
+    unsigned int
+    n_active_cells() const;
+
+    const DiscreteSpaces<dim> &
+    spaces() const;
+
+  private:
+    /** What a material point contributes, cached for a step. */
+    struct PointRecord
+    {
+      PointKind              kind;
+      int                    piece;
+      double                 measure;   // V_n or A_n
+      dealii::Tensor<1, dim> normal;    // unit N_n (surface points)
+      dealii::Point<dim>     x;         // x_n
+      dealii::Tensor<1, dim> u_n;       // x_n - X_0
+      dealii::Tensor<2, dim> F_p;       // F_n F_0
+      double                 mobility;  // m_n in the weak form's units
+      double                 mu_n;      // mu at the point, last converged step
+      unsigned int           block;     // index into blocks
+      unsigned int           u_offset;  // into u shape arrays
+      unsigned int           mu_offset; // into mu shape arrays
+      dealii::Tensor<2, dim> projector; // Pi (zero unless u is prescribed)
+      dealii::Tensor<1, dim> u_bar;
+      dealii::Tensor<1, dim> traction;
+      double                 mu_bar = 0.;
+      double                 flux   = 0.;
+      bool                   assembled; // volume points and surface points of a piece
+    };
+
+    /** The points of one displacement cell. */
+    struct Block
+    {
+      unsigned int u_cell, mu_cell;
+      unsigned int first, end;
+    };
+
+    struct CopyData;
+    struct ScratchData;
+
+    void
+    assemble_block(const Block                  &block,
+                   const dealii::Vector<double> &solution,
+                   const double                  dt,
+                   const bool                    with_matrix,
+                   ScratchData                  &scratch,
+                   CopyData                     &copy) const;
+
+    void
+    add_volume_point(const PointRecord &point,
+                     const double       dt,
+                     const bool         with_matrix,
+                     ScratchData       &scratch,
+                     CopyData          &copy) const;
+
+    void
+    add_surface_point(const PointRecord &point,
+                      const double       dt,
+                      const bool         with_matrix,
+                      ScratchData       &scratch,
+                      CopyData          &copy) const;
+
+    const FloryRehnerGel<dim> &material;
+    BoundaryConditions<dim>   &boundary_conditions;
+    const NitscheSettings     &nitsche;
+    DiscreteSpaces<dim>       &spaces_;
+
+    std::vector<PointRecord>                                                         points;
+    std::vector<typename dealii::Particles::ParticleHandler<dim>::particle_iterator> particles;
+    std::vector<Block>                                                               blocks;
+    std::vector<double>                 u_values, mu_values;
+    std::vector<dealii::Tensor<1, dim>> u_gradients, mu_gradients;
+    unsigned int                        n_active_cells_ = 0;
+
+    dealii::TrilinosWrappers::SparseMatrix matrix_;
+    dealii::Vector<double>                 residual_;
+  };
+} // namespace GelMPM
+
+#endif

@@ -1,0 +1,46 @@
+#ifndef gelmpm_io_particle_output_h
+#define gelmpm_io_particle_output_h
+
+#include <gelmpm/material/flory_rehner_gel.h>
+
+#include <deal.II/particles/particle_handler.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace GelMPM
+{
+  /**
+   * @brief Writes the material points for ParaView: one `particles-NNNNN.vtu` per output time and
+   * the series `particles.pvd`, which keeps the simulated times (deal.II write_pvd_record) and is
+   * rewritten (atomically, via a temporary file) after every output.
+   *
+   * Fields per point: kind (PointKind), piece, mu_over_kT, J (dry to current), phi = 1 - 1/J (the
+   * solvent volume fraction), measure (V_n or A_n), the principal in-plane stretches of F_n F_0
+   * (stretch_1 <= stretch_2 ...), the Cauchy stress sigma = P F^T / J (tensor), the displacement
+   * from the initial configuration and N_n A_n (vectors). Derived fields are computed when written,
+   * so they cost nothing between outputs.
+   */
+  template <int dim>
+  class ParticleOutput
+  {
+  public:
+    ParticleOutput(const std::string &directory, const FloryRehnerGel<dim> &material);
+
+    /** Write the points at @p time (in tau_d) and update the .pvd series. */
+    void
+    write(const dealii::Particles::ParticleHandler<dim> &particles, const double time);
+
+    /** (time, file name) of every output so far. */
+    const std::vector<std::pair<double, std::string>> &
+    times_and_names() const;
+
+  private:
+    std::string                                 directory;
+    const FloryRehnerGel<dim>                  &material;
+    std::vector<std::pair<double, std::string>> series;
+  };
+} // namespace GelMPM
+
+#endif

@@ -1,0 +1,54 @@
+#ifndef gelmpm_particles_material_point_generator_h
+#define gelmpm_particles_material_point_generator_h
+
+#include <gelmpm/particles/property_layout.h>
+#include <gelmpm/scene/background_grid.h>
+#include <gelmpm/scene/boundary_conditions.h>
+#include <gelmpm/scene/geometry.h>
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/particles/particle_handler.h>
+
+namespace GelMPM
+{
+  /**
+   * @brief The "Material points" section and the generation of the initial material points
+   * (paper §3.2) into a deal.II ParticleHandler with the PropertyLayout.
+   *
+   * Volume points: n^dim per background cell at the centres of the n^dim sub-cells that lie inside
+   * the body, each with V_0 = the sub-cell volume (area per unit thickness in 2D). Surface points:
+   * one per boundary element of length at most h/n_s (Geometry::surface_elements), with N_0 A_0,
+   * the boundary piece that selects it, and the kind that follows from that piece's conditions.
+   * All points start in the stress-free initial state: F = lambda_0 I, mu = mu_0.
+   */
+  template <int dim>
+  class MaterialPointGenerator
+  {
+  public:
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    /**
+     * Fill @p particles (initialised on @p tria, the grid's triangulation, with
+     * PropertyLayout<dim>::n_properties properties). Throws InputError when the body reaches
+     * outside the grid ("Geometry/Boxes"), when a boundary piece selects no surface point
+     * ("Boundary conditions/<name>/Selector"), or when no volume point lies in the body.
+     */
+    void
+    generate(const Geometry<dim>                     &geometry,
+             const BackgroundGrid<dim>               &grid,
+             const dealii::Triangulation<dim>        &tria,
+             const BoundaryConditions<dim>           &boundary_conditions,
+             const double                             lambda_0,
+             const double                             mu_0,
+             dealii::Particles::ParticleHandler<dim> &particles) const;
+
+    unsigned int points_per_cell         = 2;
+    unsigned int surface_points_per_edge = 2;
+  };
+} // namespace GelMPM
+
+#endif

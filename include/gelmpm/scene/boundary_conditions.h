@@ -1,0 +1,129 @@
+#ifndef gelmpm_scene_boundary_conditions_h
+#define gelmpm_scene_boundary_conditions_h
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/parsed_function.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace GelMPM
+{
+  /**
+   * @brief One named piece of the body's boundary and its conditions: the subsection
+   * "Boundary conditions/<name>".
+   *
+   * A surface point belongs to the piece when the piece's "Selector", an expression in the point's
+   * initial position and outward normal (x, y, nx, ny in 2D; x, y, z in 3D), is nonzero.
+   *
+   * Displacement: `free` (traction "Traction" on the whole boundary), `fixed` (u = ū),
+   * `normal` (u·N = ū·N: the paper's roller/symmetry condition; traction on the tangential part),
+   * `tangential` (u·T = ū·T with T the in-plane tangent; traction on the normal part). Chemical
+   * potential: `flux` (inward solvent volume flux "Flux" = ν i) or `prescribed` (μ = μ̄ from
+   * "Chemical potential value", in units of k_BT). Prescribed values are imposed weakly by
+   * Nitsche's method (paper eq. (32)).
+   *
+   * The values are deal.II ParsedFunctions of the point's initial position and of the time t in
+   * units of tau_d; ū is the total displacement from the initial configuration.
+   */
+  template <int dim>
+  class BoundaryPiece
+  {
+  public:
+    enum class DisplacementCondition
+    {
+      free,
+      fixed,
+      normal,
+      tangential
+    };
+    enum class ChemicalCondition
+    {
+      flux,
+      prescribed
+    };
+
+    /** Declare the subsection "<name>" in the current section. */
+    static void
+    declare_parameters(dealii::ParameterHandler &prm, const std::string &name);
+
+    /** Read it; @p path is "Boundary conditions/<name>" for messages. */
+    void
+    parse_parameters(dealii::ParameterHandler &prm, const std::string &name);
+
+    /** Whether a surface point at @p x (initial position) with outward @p normal belongs here. */
+    bool
+    selects(const dealii::Point<dim> &x, const dealii::Tensor<1, dim> &normal) const;
+
+    bool
+    displacement_prescribed() const;
+    bool
+    chemical_potential_prescribed() const;
+
+    const dealii::Function<dim> &
+    displacement_value() const;
+    const dealii::Function<dim> &
+    traction() const;
+    const dealii::Function<dim> &
+    chemical_potential_value() const;
+    const dealii::Function<dim> &
+    flux() const;
+
+    /** Set the time (in tau_d) of all functions of the piece. */
+    void
+    set_time(const double t);
+
+    std::string           name;
+    DisplacementCondition displacement_condition = DisplacementCondition::free;
+    ChemicalCondition     chemical_condition     = ChemicalCondition::flux;
+
+  private:
+    // deal.II instantiates FunctionParser up to three space variables plus time; in 2D the
+    // selector's variables x, y, nx, ny are passed as (x, y, nx) and time ny. In 3D it sees x, y,
+    // z.
+    std::unique_ptr<dealii::FunctionParser<3>>              selector;
+    std::unique_ptr<dealii::Functions::ParsedFunction<dim>> displacement_value_;
+    std::unique_ptr<dealii::Functions::ParsedFunction<dim>> traction_;
+    std::unique_ptr<dealii::Functions::ParsedFunction<dim>> chemical_potential_value_;
+    std::unique_ptr<dealii::Functions::ParsedFunction<dim>> flux_;
+  };
+
+
+  /**
+   * @brief All boundary pieces of a scene ("Boundary conditions"), in the order of
+   * "Boundary conditions/Pieces". A surface point belongs to the first piece that selects it, or
+   * to none (then it is traction-free and impermeable).
+   */
+  template <int dim>
+  class BoundaryConditions
+  {
+  public:
+    static void
+    declare_parameters(dealii::ParameterHandler &prm, const std::vector<std::string> &pieces);
+
+    void
+    parse_parameters(dealii::ParameterHandler &prm, const std::vector<std::string> &pieces);
+
+    unsigned int
+    n_pieces() const;
+    BoundaryPiece<dim> &
+    piece(const unsigned int i);
+    const BoundaryPiece<dim> &
+    piece(const unsigned int i) const;
+
+    /** Index of the first piece selecting the point, or -1. */
+    int
+    piece_of(const dealii::Point<dim> &x, const dealii::Tensor<1, dim> &normal) const;
+
+    /** Set the time (tau_d) of every piece's functions. */
+    void
+    set_time(const double t);
+
+  private:
+    std::vector<std::unique_ptr<BoundaryPiece<dim>>> pieces_;
+  };
+} // namespace GelMPM
+
+#endif

@@ -1,0 +1,53 @@
+#ifndef gelmpm_solvers_time_stepping_h
+#define gelmpm_solvers_time_stepping_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <utility>
+#include <vector>
+
+namespace GelMPM
+{
+  /**
+   * @brief The "Time stepping" section: adaptive implicit stepping as in the paper's §4.
+   *
+   * All times are in units of the diffusion time tau_d = L^2 / D, with L the scene's
+   * "Characteristic length" and D the material's diffusivity (the paper's normalisation; e.g.
+   * §4.1 uses L = h_0, the initial thickness). A failed Newton solve halves the step and retries
+   * from the last converged state; convergence in fewer than "Growth below iterations" Newton
+   * iterations multiplies the step by "Growth factor"; piecewise caps (paper eq. (64), (65))
+   * bound it; steps are shortened to land exactly on the "Stop at times".
+   */
+  struct TimeStepping
+  {
+    double                                 characteristic_length = 1.;
+    double                                 initial_step          = 1e-3;
+    double                                 end_time              = 1.;
+    double                                 minimum_step          = 1e-12;
+    double                                 growth_factor         = 1.25;
+    unsigned int                           growth_below          = 6;
+    double                                 cut_factor            = 0.5;
+    unsigned int                           maximum_steps         = 1000000;
+    std::vector<std::pair<double, double>> caps; // (until time, largest step), sorted
+    std::vector<double>                    stop_times;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    /** Largest step allowed at time @p t by the caps (infinity beyond the last cap). */
+    double
+    cap(const double t) const;
+
+    /**
+     * The step to take from @p t given the step @p dt the controller proposes: capped, and
+     * shortened to land on the next stop time or the end time.
+     */
+    double
+    next_step(const double t, const double dt) const;
+  };
+} // namespace GelMPM
+
+#endif

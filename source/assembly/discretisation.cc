@@ -1,0 +1,268 @@
+#include <gelmpm/assembly/discretisation.h>
+#include <gelmpm/core/input_error.h>
+
+#include <deal.II/base/numbers.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace GelMPM
+{
+  std::string
+  DiscretisationSettings::name() const
+  {
+    return "Q" + std::to_string(displacement_degree) + "-Q" +
+           std::to_string(chemical_potential_degree) + (subdivision ? "SD" : "");
+  }
+
+
+  void
+  DiscretisationSettings::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    using namespace dealii;
+    prm.enter_subsection("Discretisation");
+    prm.declare_entry("Displacement degree",
+                      "2",
+                      Patterns::Integer(1, 6),
+                      "Degree q_u of the maximally smooth B-splines for the displacement, on the "
+                      "background grid (cell size h).");
+    prm.declare_entry("Chemical potential degree",
+                      "2",
+                      Patterns::Integer(1, 6),
+                      "Degree q_mu of the maximally smooth B-splines for the chemical potential.");
+    prm.declare_entry("Chemical potential grid",
+                      "coarse",
+                      Patterns::Selection("coarse|same"),
+                      "'coarse': mu on the grid of cell size 2h (subdivision stabilisation, the "
+                      "paper's QiQjSD pairs, inf-sup stable; needs an even number of background "
+                      "cells in every direction). 'same': mu on the background grid (Qi-Qj; Q2-Q2 "
+                      "and Q3-Q2 are not inf-sup stable, kept for comparison).");
+    prm.declare_entry("Extended B-splines",
+                      "true",
+                      Patterns::Bool(),
+                      "Extrapolate the coefficients of boundary control points from interior ones "
+                      "(paper eq. (50)-(54)) so that cut cells do not make the tangent "
+                      "ill-conditioned. Switch off only to study the conditioning without it.");
+    prm.leave_subsection();
+  }
+
+
+  void
+  DiscretisationSettings::parse_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Discretisation");
+    displacement_degree       = prm.get_integer("Displacement degree");
+    chemical_potential_degree = prm.get_integer("Chemical potential degree");
+    subdivision               = (prm.get("Chemical potential grid") == "coarse");
+    extension                 = prm.get_bool("Extended B-splines");
+    prm.leave_subsection();
+  }
+
+
+  namespace
+  {
+    template <int dim>
+    std::array<unsigned int, dim>
+    mu_cells(const BackgroundGrid<dim> &grid, const bool subdivision)
+    {
+      std::array<unsigned int, dim> n = grid.n_cells;
+      if (subdivision)
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            require(n[d] % 2 == 0,
+                    "Background grid/Cells",
+                    "has an odd count (" + std::to_string(n[d]) + ") in direction " +
+                      std::to_string(d) +
+                      ", but 'Discretisation/Chemical potential grid = coarse' "
+                      "puts mu on cells twice as large",
+                    "use an even number of cells in every direction, or 'same'");
+            n[d] /= 2;
+          }
+      return n;
+    }
+  } // namespace
+
+
+  template <int dim>
+  DiscreteSpaces<dim>::DiscreteSpaces(const BackgroundGrid<dim>    &grid,
+                                      const DiscretisationSettings &settings)
+    : settings_(settings)
+    , u_space_(settings.displacement_degree, grid.lower, grid.upper, grid.n_cells)
+    , mu_space_(settings.chemical_potential_degree,
+                grid.lower,
+                grid.upper,
+                mu_cells(grid, settings.subdivision))
+  {}
+
+
+  template <int dim>
+  void
+  DiscreteSpaces<dim>::reinit(const std::vector<bool> &u_cell_has_material)
+  {
+    u_cell_has_material_ = u_cell_has_material;
+    std::vector<bool> mu_has_material(mu_space_.n_cells(), false);
+    for (unsigned int c = 0; c < u_cell_has_material.size(); ++c)
+      if (u_cell_has_material[c])
+        mu_has_material[mu_cell_of(c)] = true;
+    u_ = std::make_unique<ExtendedBSplineSpace<dim>>(u_space_,
+                                                     u_cell_has_material,
+                                                     settings_.extension);
+    mu_ =
+      std::make_unique<ExtendedBSplineSpace<dim>>(mu_space_, mu_has_material, settings_.extension);
+  }
+
+
+  template <int dim>
+  const BSplineSpace<dim> &
+  DiscreteSpaces<dim>::u_space() const
+  {
+    return u_space_;
+  }
+
+
+  template <int dim>
+  const BSplineSpace<dim> &
+  DiscreteSpaces<dim>::mu_space() const
+  {
+    return mu_space_;
+  }
+
+
+  template <int dim>
+  const ExtendedBSplineSpace<dim> &
+  DiscreteSpaces<dim>::u() const
+  {
+    return *u_;
+  }
+
+
+  template <int dim>
+  const ExtendedBSplineSpace<dim> &
+  DiscreteSpaces<dim>::mu() const
+  {
+    return *mu_;
+  }
+
+
+  template <int dim>
+  unsigned int
+  DiscreteSpaces<dim>::mu_cell_of(const unsigned int u_cell) const
+  {
+    if (!settings_.subdivision)
+      return u_cell;
+    // mu cells are numbered like u cells (x fastest), with half as many per direction.
+    auto index = u_space_.cell_multi_index(u_cell);
+    for (auto &i : index)
+      i /= 2;
+    return mu_space_.cell_index(index);
+  }
+
+
+  template <int dim>
+  unsigned int
+  DiscreteSpaces<dim>::n_u_dofs() const
+  {
+    return dim * u_->n_dofs();
+  }
+
+
+  template <int dim>
+  unsigned int
+  DiscreteSpaces<dim>::n_mu_dofs() const
+  {
+    return mu_->n_dofs();
+  }
+
+
+  template <int dim>
+  unsigned int
+  DiscreteSpaces<dim>::n_dofs() const
+  {
+    return n_u_dofs() + n_mu_dofs();
+  }
+
+
+  template <int dim>
+  double
+  DiscreteSpaces<dim>::h_u() const
+  {
+    double h = u_space_.cell_size(0);
+    for (unsigned int d = 1; d < dim; ++d)
+      h = std::min(h, u_space_.cell_size(d));
+    return h;
+  }
+
+
+  template <int dim>
+  double
+  DiscreteSpaces<dim>::h_mu() const
+  {
+    double h = mu_space_.cell_size(0);
+    for (unsigned int d = 1; d < dim; ++d)
+      h = std::min(h, mu_space_.cell_size(d));
+    return h;
+  }
+
+
+  template <int dim>
+  unsigned int
+  DiscreteSpaces<dim>::active_u_cell_containing(const dealii::Point<dim> &p) const
+  {
+    const unsigned int home = u_space_.cell_containing(p);
+    if (u_cell_has_material_[home])
+      return home;
+
+    // Surface points lie on the boundary of the body, which may run along a face of, or
+    // slightly outside, the cells that hold volume points (the body swells between
+    // classifications). Evaluate them in the nearest neighbouring cell with material: its
+    // polynomial pieces continue the (extended) field smoothly there.
+    const auto   home_index = u_space_.cell_multi_index(home);
+    unsigned int best       = dealii::numbers::invalid_unsigned_int;
+    double       best_gap   = std::numeric_limits<double>::max();
+    for (unsigned int neighbour = 0; neighbour < std::pow(3, dim); ++neighbour)
+      {
+        std::array<unsigned int, dim> index;
+        bool                          valid = true;
+        double                        gap   = 0.;
+        unsigned int                  rest  = neighbour;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const int offset = static_cast<int>(rest % 3) - 1;
+            rest /= 3;
+            const int i = static_cast<int>(home_index[d]) + offset;
+            if (i < 0 || i >= static_cast<int>(u_space_.n_cells_per_direction()[d]))
+              {
+                valid = false;
+                break;
+              }
+            index[d]             = i;
+            const auto  &basis   = u_space_.basis_1d(d);
+            const double lower   = basis.x_min() + i * basis.cell_size();
+            const double outside = std::max({0., lower - p[d], p[d] - (lower + basis.cell_size())});
+            gap += outside * outside;
+          }
+        if (!valid)
+          continue;
+        const unsigned int cell = u_space_.cell_index(index);
+        if (u_cell_has_material_[cell] && gap < best_gap)
+          {
+            best     = cell;
+            best_gap = gap;
+          }
+      }
+    return best;
+  }
+
+
+  template <int dim>
+  const DiscretisationSettings &
+  DiscreteSpaces<dim>::settings() const
+  {
+    return settings_;
+  }
+
+
+  template class DiscreteSpaces<2>;
+  template class DiscreteSpaces<3>;
+} // namespace GelMPM

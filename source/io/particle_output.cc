@@ -1,0 +1,136 @@
+#include <gelmpm/io/particle_output.h>
+#include <gelmpm/particles/property_layout.h>
+
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+#include <stdexcept>
+
+namespace GelMPM
+{
+  template <int dim>
+  ParticleOutput<dim>::ParticleOutput(const std::string         &directory,
+                                      const FloryRehnerGel<dim> &material)
+    : directory(directory)
+    , material(material)
+  {}
+
+
+  template <int dim>
+  void
+  ParticleOutput<dim>::write(const dealii::Particles::ParticleHandler<dim> &particles,
+                             const double                                   time)
+  {
+    using Layout = PropertyLayout<dim>;
+    using namespace dealii;
+
+    std::vector<std::string> names = {"kind", "piece", "mu_over_kT", "J", "phi", "measure"};
+    for (unsigned int d = 0; d < dim; ++d)
+      names.push_back("stretch_" + std::to_string(d + 1));
+    const unsigned int stress_first = names.size();
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        names.push_back("cauchy_stress");
+    const unsigned int displacement_first = names.size();
+    for (unsigned int d = 0; d < dim; ++d)
+      names.push_back("displacement");
+    const unsigned int normal_first = names.size();
+    for (unsigned int d = 0; d < dim; ++d)
+      names.push_back("normal_area");
+
+    std::vector<std::tuple<unsigned int,
+                           unsigned int,
+                           std::string,
+                           DataComponentInterpretation::DataComponentInterpretation>>
+      ranges = {{stress_first,
+                 stress_first + dim * dim - 1,
+                 "cauchy_stress",
+                 DataComponentInterpretation::component_is_part_of_tensor},
+                {displacement_first,
+                 displacement_first + dim - 1,
+                 "displacement",
+                 DataComponentInterpretation::component_is_part_of_vector},
+                {normal_first,
+                 normal_first + dim - 1,
+                 "normal_area",
+                 DataComponentInterpretation::component_is_part_of_vector}};
+
+    std::vector<DataOutBase::Patch<0, dim>> patches;
+    patches.reserve(particles.n_locally_owned_particles());
+    for (const auto &particle : particles)
+      {
+        const auto     props = particle.get_properties();
+        Tensor<2, dim> F;
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            F[i][j] = props[Layout::F + i * dim + j];
+        const double mu = props[Layout::mu];
+        const double J  = material.J(F);
+
+        DataOutBase::Patch<0, dim> patch;
+        patch.vertices[0] = particle.get_location();
+        patch.patch_index = patches.size();
+        patch.data.reinit(names.size(), 1);
+        patch.data(0, 0)     = props[Layout::kind];
+        patch.data(1, 0)     = props[Layout::piece];
+        patch.data(2, 0)     = mu;
+        patch.data(3, 0)     = J;
+        patch.data(4, 0)     = 1. - 1. / J;
+        patch.data(5, 0)     = props[Layout::measure_n];
+        const auto lambda_sq = eigenvalues(symmetrize(F * transpose(F)));
+        for (unsigned int d = 0; d < dim; ++d)
+          patch.data(6 + d, 0) = std::sqrt(lambda_sq[dim - 1 - d]);
+        if (J > 1.)
+          {
+            const Tensor<2, dim> sigma = material.stress(F, mu) * transpose(F) / J;
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = 0; j < dim; ++j)
+                patch.data(stress_first + i * dim + j, 0) = sigma[i][j];
+          }
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            patch.data(displacement_first + d, 0) =
+              particle.get_location()[d] - props[Layout::position_0 + d];
+            patch.data(normal_first + d, 0) = props[Layout::normal_area_n + d];
+          }
+        patches.push_back(std::move(patch));
+      }
+
+    std::ostringstream file_name;
+    file_name << "particles-" << std::setw(5) << std::setfill('0') << series.size() << ".vtu";
+    DataOutBase::VtkFlags flags;
+    flags.compression_level = DataOutBase::VtkFlags::best_speed;
+    {
+      std::ofstream out(directory + "/" + file_name.str());
+      if (!out)
+        throw std::runtime_error("cannot write " + directory + "/" + file_name.str());
+      DataOutBase::write_vtu(patches, names, ranges, flags, out);
+    }
+    series.emplace_back(time, file_name.str());
+
+    // Replace the series file only once it is complete.
+    const std::string pvd = directory + "/particles.pvd";
+    {
+      std::ofstream out(pvd + ".tmp");
+      DataOutBase::write_pvd_record(out, series);
+    }
+    std::rename((pvd + ".tmp").c_str(), pvd.c_str());
+  }
+
+
+  template <int dim>
+  const std::vector<std::pair<double, std::string>> &
+  ParticleOutput<dim>::times_and_names() const
+  {
+    return series;
+  }
+
+
+  template class ParticleOutput<2>;
+  template class ParticleOutput<3>;
+} // namespace GelMPM

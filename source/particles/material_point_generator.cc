@@ -1,0 +1,190 @@
+#include <gelmpm/core/input_error.h>
+#include <gelmpm/particles/material_point_generator.h>
+
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/grid/tria.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace GelMPM
+{
+  template <int dim>
+  void
+  MaterialPointGenerator<dim>::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Material points");
+    prm.declare_entry("Points per cell",
+                      "2",
+                      dealii::Patterns::Integer(1, 20),
+                      "n: volume points per background cell and direction (n^dim per cell, at "
+                      "sub-cell centres inside the body). Paper: 6 (§4.1), 5 (§4.2), 8 (§4.3).");
+    prm.declare_entry("Surface points per cell edge",
+                      "0",
+                      dealii::Patterns::Integer(0, 40),
+                      "n_s: surface points per background cell length along the boundary "
+                      "(0: the same as 'Points per cell').");
+    prm.leave_subsection();
+  }
+
+
+  template <int dim>
+  void
+  MaterialPointGenerator<dim>::parse_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Material points");
+    points_per_cell         = prm.get_integer("Points per cell");
+    surface_points_per_edge = prm.get_integer("Surface points per cell edge");
+    prm.leave_subsection();
+    if (surface_points_per_edge == 0)
+      surface_points_per_edge = points_per_cell;
+  }
+
+
+  namespace
+  {
+    template <int dim>
+    std::string
+    text(const dealii::Point<dim> &p)
+    {
+      std::ostringstream out;
+      out << "(" << p << ")";
+      return out.str();
+    }
+  } // namespace
+
+
+  template <int dim>
+  void
+  MaterialPointGenerator<dim>::generate(const Geometry<dim>              &geometry,
+                                        const BackgroundGrid<dim>        &grid,
+                                        const dealii::Triangulation<dim> &tria,
+                                        const BoundaryConditions<dim>    &boundary_conditions,
+                                        const double                      lambda_0,
+                                        const double                      mu_0,
+                                        dealii::Particles::ParticleHandler<dim> &particles) const
+  {
+    using Layout = PropertyLayout<dim>;
+
+    // Cells by lexicographic index (the active cell index of the structured grid).
+    std::vector<typename dealii::Triangulation<dim>::active_cell_iterator> cells(
+      tria.n_active_cells());
+    for (const auto &cell : tria.active_cell_iterators())
+      cells[cell->active_cell_index()] = cell;
+    const auto locate = [&](const dealii::Point<dim> &p) {
+      unsigned int flat = 0, stride = 1;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          const double s = std::floor((p[d] - grid.lower[d]) / grid.cell_size(d));
+          const auto   i = static_cast<unsigned int>(std::clamp(s, 0., grid.n_cells[d] - 1.));
+          flat += i * stride;
+          stride *= grid.n_cells[d];
+        }
+      return cells[flat];
+    };
+
+    std::vector<double>           properties(Layout::n_properties, 0.);
+    dealii::types::particle_index next_id = 0;
+    const auto                    insert  = [&](const dealii::Point<dim> &x) {
+      for (unsigned int d = 0; d < dim; ++d)
+        properties[Layout::position_0 + d] = x[d];
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          properties[Layout::F + i * dim + j] = (i == j) ? lambda_0 : 0.;
+      properties[Layout::mu]  = mu_0;
+      const auto         cell = locate(x);
+      dealii::Point<dim> reference;
+      for (unsigned int d = 0; d < dim; ++d)
+        reference[d] = (x[d] - cell->vertex(0)[d]) / grid.cell_size(d);
+      particles.insert_particle(x, reference, next_id++, cell, dealii::make_array_view(properties));
+    };
+
+    // Volume points at sub-cell centres.
+    const unsigned int n          = points_per_cell;
+    double             sub_volume = 1.;
+    for (unsigned int d = 0; d < dim; ++d)
+      sub_volume *= grid.cell_size(d) / n;
+    unsigned int n_sub = 1, n_cells = 1;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        n_sub *= n;
+        n_cells *= grid.n_cells[d];
+      }
+    for (unsigned int c = 0; c < n_cells; ++c)
+      for (unsigned int s = 0; s < n_sub; ++s)
+        {
+          dealii::Point<dim> x;
+          unsigned int       rest_c = c, rest_s = s;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              const unsigned int ic = rest_c % grid.n_cells[d], is = rest_s % n;
+              rest_c /= grid.n_cells[d];
+              rest_s /= n;
+              x[d] = grid.lower[d] + (ic + (is + 0.5) / n) * grid.cell_size(d);
+            }
+          if (!geometry.inside(x))
+            continue;
+          std::fill(properties.begin(), properties.end(), 0.);
+          properties[Layout::kind]      = static_cast<double>(PointKind::volume);
+          properties[Layout::piece]     = -1;
+          properties[Layout::measure_0] = properties[Layout::measure_n] = sub_volume;
+          insert(x);
+        }
+    require(next_id > 0,
+            "Geometry/Boxes",
+            "places no volume point inside the background grid",
+            "put the body inside 'Background grid'");
+
+    // The body must lie in the grid: check the boundary (it bounds the body).
+    double h_min = grid.cell_size(0);
+    for (unsigned int d = 1; d < dim; ++d)
+      h_min = std::min(h_min, grid.cell_size(d));
+    if constexpr (dim == 2)
+      {
+        const auto elements = geometry.surface_elements(h_min / surface_points_per_edge);
+        std::vector<unsigned int> count(boundary_conditions.n_pieces(), 0);
+        for (const auto &e : elements)
+          {
+            require(grid.contains(e.centre),
+                    "Geometry/Boxes",
+                    "puts the body outside the background grid, e.g. at " + text(e.centre),
+                    "enlarge 'Background grid/Lower corner' and 'Upper corner' or move the body");
+            const double                 area   = e.normal_area.norm();
+            const dealii::Tensor<1, dim> normal = e.normal_area / area;
+            const int                    piece  = boundary_conditions.piece_of(e.centre, normal);
+            std::fill(properties.begin(), properties.end(), 0.);
+            if (piece >= 0)
+              {
+                const auto &p = boundary_conditions.piece(piece);
+                ++count[piece];
+                properties[Layout::kind] =
+                  static_cast<double>(surface_point_kind(p.displacement_prescribed(),
+                                                         p.chemical_potential_prescribed()));
+              }
+            else
+              properties[Layout::kind] = static_cast<double>(PointKind::neumann_neumann);
+            properties[Layout::piece]     = piece;
+            properties[Layout::measure_0] = properties[Layout::measure_n] = area;
+            for (unsigned int d = 0; d < dim; ++d)
+              properties[Layout::normal_area_0 + d] = properties[Layout::normal_area_n + d] =
+                e.normal_area[d];
+            insert(e.centre);
+          }
+        for (unsigned int i = 0; i < boundary_conditions.n_pieces(); ++i)
+          require(count[i] > 0,
+                  "Boundary conditions/" + boundary_conditions.piece(i).name + "/Selector",
+                  "selects no point of the body's boundary",
+                  "check the expression against the geometry (variables x, y, nx, ny)");
+      }
+    else
+      require(boundary_conditions.n_pieces() == 0,
+              "Boundary conditions/Pieces",
+              "is not empty, but surface points are implemented in 2D only",
+              "run the scene in 2D");
+    particles.update_cached_numbers();
+  }
+
+
+  template class MaterialPointGenerator<2>;
+  template class MaterialPointGenerator<3>;
+} // namespace GelMPM

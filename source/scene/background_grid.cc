@@ -1,0 +1,88 @@
+#include <gelmpm/core/input_error.h>
+#include <gelmpm/core/parameters.h>
+#include <gelmpm/scene/background_grid.h>
+
+#include <deal.II/grid/grid_generator.h>
+
+namespace GelMPM
+{
+  template <int dim>
+  void
+  BackgroundGrid<dim>::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    using namespace dealii;
+    prm.enter_subsection("Background grid");
+    prm.declare_entry("Lower corner",
+                      dim == 2 ? "0, 0" : "0, 0, 0",
+                      Patterns::List(Patterns::Double(), dim, dim),
+                      "Lower corner of the fixed background grid, one coordinate per direction.");
+    prm.declare_entry("Upper corner",
+                      dim == 2 ? "1, 1" : "1, 1, 1",
+                      Patterns::List(Patterns::Double(), dim, dim),
+                      "Upper corner of the background grid. The body must stay inside the grid for "
+                      "the whole run (it swells).");
+    prm.declare_entry("Cells",
+                      dim == 2 ? "10, 10" : "10, 10, 10",
+                      Patterns::List(Patterns::Integer(1), dim, dim),
+                      "Number of cells per direction of the displacement grid (cell size h_u). "
+                      "With mu on the coarse grid (subdivision) the counts must be even.");
+    prm.leave_subsection();
+  }
+
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::parse_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Background grid");
+    const auto lo = get_double_list(prm, "Lower corner", "Background grid/Lower corner", dim);
+    const auto hi = get_double_list(prm, "Upper corner", "Background grid/Upper corner", dim);
+    const auto n  = get_double_list(prm, "Cells", "Background grid/Cells", dim);
+    prm.leave_subsection();
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        lower[d]   = lo[d];
+        upper[d]   = hi[d];
+        n_cells[d] = static_cast<unsigned int>(n[d]);
+        require(upper[d] > lower[d],
+                "Background grid/Upper corner",
+                "is not above 'Lower corner' in direction " + std::to_string(d),
+                "give an upper corner larger than the lower corner in every coordinate");
+      }
+  }
+
+
+  template <int dim>
+  double
+  BackgroundGrid<dim>::cell_size(const unsigned int d) const
+  {
+    return (upper[d] - lower[d]) / n_cells[d];
+  }
+
+
+  template <int dim>
+  bool
+  BackgroundGrid<dim>::contains(const dealii::Point<dim> &p) const
+  {
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        const double tolerance = 1e-12 * (upper[d] - lower[d]);
+        if (p[d] < lower[d] - tolerance || p[d] > upper[d] + tolerance)
+          return false;
+      }
+    return true;
+  }
+
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::create_triangulation(dealii::Triangulation<dim> &triangulation) const
+  {
+    std::vector<unsigned int> repetitions(n_cells.begin(), n_cells.end());
+    dealii::GridGenerator::subdivided_hyper_rectangle(triangulation, repetitions, lower, upper);
+  }
+
+
+  template struct BackgroundGrid<2>;
+  template struct BackgroundGrid<3>;
+} // namespace GelMPM

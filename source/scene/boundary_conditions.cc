@@ -1,0 +1,323 @@
+#include <gelmpm/core/input_error.h>
+#include <gelmpm/scene/boundary_conditions.h>
+
+#include <deal.II/base/exceptions.h>
+
+#include <sstream>
+
+namespace GelMPM
+{
+  namespace
+  {
+    std::string
+    variables(const int dim, const bool with_normal)
+    {
+      if (dim == 3)
+        return "x,y,z";
+      return with_normal ? "x,y,nx,ny" : "x,y";
+    }
+
+    std::string
+    one_line(const dealii::ExceptionBase &e)
+    {
+      std::ostringstream out;
+      e.print_info(out);
+      std::string text;
+      for (const char c : out.str())
+        if (!std::isspace(static_cast<unsigned char>(c)))
+          text += c;
+        else if (!text.empty() && text.back() != ' ')
+          text += ' ';
+      while (!text.empty() && text.back() == ' ')
+        text.pop_back();
+      return text;
+    }
+
+    const char *function_names[] = {"Displacement value",
+                                    "Traction",
+                                    "Chemical potential value",
+                                    "Flux"};
+  } // namespace
+
+
+  template <int dim>
+  void
+  BoundaryPiece<dim>::declare_parameters(dealii::ParameterHandler &prm, const std::string &name)
+  {
+    using namespace dealii;
+    prm.enter_subsection(name);
+    prm.declare_entry("Selector",
+                      "0",
+                      Patterns::Anything(),
+                      "Expression in the initial position and outward normal of a surface point (" +
+                        variables(dim, true) +
+                        "); the point belongs to this piece where it is nonzero, e.g. 'ny > 0.5' "
+                        "for a top face, 'abs(x) < 1e-9' for a left face.");
+    prm.declare_entry("Selector constants",
+                      "",
+                      Patterns::Anything(),
+                      "Constants for the selector, e.g. 'H=1, tol=1e-9'.");
+    prm.declare_entry("Displacement",
+                      "free",
+                      Patterns::Selection("free|fixed|normal|tangential"),
+                      "free: traction 'Traction'. fixed: u = u_bar. normal: u.N = u_bar.N (roller, "
+                      "symmetry). tangential: u.T = u_bar.T (2D). u_bar is 'Displacement value', "
+                      "the total displacement from the initial configuration; the constraint is "
+                      "imposed weakly by symmetric Nitsche terms (see section Nitsche).");
+    prm.declare_entry("Chemical potential",
+                      "flux",
+                      Patterns::Selection("flux|prescribed"),
+                      "flux: inward solvent volume flux 'Flux' (0: impermeable). prescribed: "
+                      "mu/(k_BT) = 'Chemical potential value', imposed weakly (Nitsche).");
+    const unsigned int n_components[] = {dim, dim, 1, 1};
+    for (unsigned int f = 0; f < 4; ++f)
+      {
+        prm.enter_subsection(function_names[f]);
+        Functions::ParsedFunction<dim>::declare_parameters(prm, n_components[f]);
+        prm.leave_subsection();
+      }
+    prm.leave_subsection();
+  }
+
+
+  template <int dim>
+  void
+  BoundaryPiece<dim>::parse_parameters(dealii::ParameterHandler &prm, const std::string &piece_name)
+  {
+    name                    = piece_name;
+    const std::string where = "Boundary conditions/" + name;
+    prm.enter_subsection(name);
+    const std::string selector_text      = prm.get("Selector");
+    const std::string selector_constants = prm.get("Selector constants");
+    const std::string u_condition        = prm.get("Displacement");
+    const std::string mu_condition       = prm.get("Chemical potential");
+
+    displacement_condition = u_condition == "fixed"        ? DisplacementCondition::fixed
+                             : u_condition == "normal"     ? DisplacementCondition::normal
+                             : u_condition == "tangential" ? DisplacementCondition::tangential
+                                                           : DisplacementCondition::free;
+    chemical_condition =
+      (mu_condition == "prescribed") ? ChemicalCondition::prescribed : ChemicalCondition::flux;
+
+    const unsigned int                                       n_components[] = {dim, dim, 1, 1};
+    std::unique_ptr<dealii::Functions::ParsedFunction<dim>> *targets[] =
+      {&displacement_value_, &traction_, &chemical_potential_value_, &flux_};
+    for (unsigned int f = 0; f < 4; ++f)
+      {
+        prm.enter_subsection(function_names[f]);
+        *targets[f] = std::make_unique<dealii::Functions::ParsedFunction<dim>>(n_components[f]);
+        try
+          {
+            (*targets[f])->parse_parameters(prm);
+          }
+        catch (const dealii::ExceptionBase &e)
+          {
+            prm.leave_subsection();
+            prm.leave_subsection();
+            throw InputError(where + "/" + function_names[f],
+                             "cannot be parsed: " + one_line(e),
+                             "give " + std::to_string(n_components[f]) + " expression(s) of x, y" +
+                               (dim == 3 ? ", z" : "") +
+                               ", t separated by ';' in 'Function expression'");
+          }
+        prm.leave_subsection();
+      }
+    prm.leave_subsection();
+
+    std::map<std::string, double> constants;
+    for (const auto &item : dealii::Utilities::split_string_list(selector_constants, ','))
+      {
+        const auto kv = dealii::Utilities::split_string_list(item, '=');
+        require(kv.size() == 2,
+                where + "/Selector constants",
+                "has the item '" + item + "' that is not 'name=value'",
+                "write e.g. 'H=1, tol=1e-9'");
+        try
+          {
+            constants[kv[0]] = dealii::Utilities::string_to_double(kv[1]);
+          }
+        catch (...)
+          {
+            throw InputError(where + "/Selector constants",
+                             "has a non-number in '" + item + "'",
+                             "give numbers");
+          }
+      }
+    selector = std::make_unique<dealii::FunctionParser<3>>(1);
+    try
+      {
+        selector->initialize(variables(dim, true), selector_text, constants, dim == 2);
+        // The parser compiles lazily: evaluate once to surface syntax errors here.
+        (void)selector->value(dealii::Point<3>());
+      }
+    catch (const dealii::ExceptionBase &e)
+      {
+        throw InputError(where + "/Selector",
+                         "'" + selector_text + "' cannot be parsed: " + one_line(e),
+                         "write an expression in " + variables(dim, true));
+      }
+  }
+
+
+  template <int dim>
+  bool
+  BoundaryPiece<dim>::selects(const dealii::Point<dim>     &x,
+                              const dealii::Tensor<1, dim> &normal) const
+  {
+    dealii::Point<3> p;
+    for (unsigned int d = 0; d < dim; ++d)
+      p[d] = x[d];
+    if (dim == 2)
+      {
+        p[2] = normal[0];
+        selector->set_time(normal[1]);
+      }
+    return selector->value(p) != 0.;
+  }
+
+
+  template <int dim>
+  bool
+  BoundaryPiece<dim>::displacement_prescribed() const
+  {
+    return displacement_condition != DisplacementCondition::free;
+  }
+
+
+  template <int dim>
+  bool
+  BoundaryPiece<dim>::chemical_potential_prescribed() const
+  {
+    return chemical_condition == ChemicalCondition::prescribed;
+  }
+
+
+  template <int dim>
+  const dealii::Function<dim> &
+  BoundaryPiece<dim>::displacement_value() const
+  {
+    return *displacement_value_;
+  }
+
+
+  template <int dim>
+  const dealii::Function<dim> &
+  BoundaryPiece<dim>::traction() const
+  {
+    return *traction_;
+  }
+
+
+  template <int dim>
+  const dealii::Function<dim> &
+  BoundaryPiece<dim>::chemical_potential_value() const
+  {
+    return *chemical_potential_value_;
+  }
+
+
+  template <int dim>
+  const dealii::Function<dim> &
+  BoundaryPiece<dim>::flux() const
+  {
+    return *flux_;
+  }
+
+
+  template <int dim>
+  void
+  BoundaryPiece<dim>::set_time(const double t)
+  {
+    displacement_value_->set_time(t);
+    traction_->set_time(t);
+    chemical_potential_value_->set_time(t);
+    flux_->set_time(t);
+  }
+
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::declare_parameters(dealii::ParameterHandler       &prm,
+                                              const std::vector<std::string> &pieces)
+  {
+    prm.enter_subsection("Boundary conditions");
+    for (const auto &name : pieces)
+      BoundaryPiece<dim>::declare_parameters(prm, name);
+    prm.leave_subsection();
+  }
+
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::parse_parameters(dealii::ParameterHandler       &prm,
+                                            const std::vector<std::string> &pieces)
+  {
+    pieces_.clear();
+    prm.enter_subsection("Boundary conditions");
+    try
+      {
+        for (const auto &name : pieces)
+          {
+            pieces_.push_back(std::make_unique<BoundaryPiece<dim>>());
+            pieces_.back()->parse_parameters(prm, name);
+          }
+      }
+    catch (...)
+      {
+        prm.leave_subsection();
+        throw;
+      }
+    prm.leave_subsection();
+  }
+
+
+  template <int dim>
+  unsigned int
+  BoundaryConditions<dim>::n_pieces() const
+  {
+    return pieces_.size();
+  }
+
+
+  template <int dim>
+  BoundaryPiece<dim> &
+  BoundaryConditions<dim>::piece(const unsigned int i)
+  {
+    return *pieces_[i];
+  }
+
+
+  template <int dim>
+  const BoundaryPiece<dim> &
+  BoundaryConditions<dim>::piece(const unsigned int i) const
+  {
+    return *pieces_[i];
+  }
+
+
+  template <int dim>
+  int
+  BoundaryConditions<dim>::piece_of(const dealii::Point<dim>     &x,
+                                    const dealii::Tensor<1, dim> &normal) const
+  {
+    for (unsigned int i = 0; i < pieces_.size(); ++i)
+      if (pieces_[i]->selects(x, normal))
+        return i;
+    return -1;
+  }
+
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::set_time(const double t)
+  {
+    for (auto &p : pieces_)
+      p->set_time(t);
+  }
+
+
+  template class BoundaryPiece<2>;
+  template class BoundaryPiece<3>;
+  template class BoundaryConditions<2>;
+  template class BoundaryConditions<3>;
+} // namespace GelMPM

@@ -1,0 +1,157 @@
+#include <gelmpm/core/input_error.h>
+#include <gelmpm/solvers/time_stepping.h>
+
+#include <deal.II/base/utilities.h>
+
+#include <algorithm>
+#include <limits>
+
+namespace GelMPM
+{
+  void
+  TimeStepping::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    using namespace dealii;
+    prm.enter_subsection("Time stepping");
+    prm.declare_entry("Characteristic length",
+                      "1",
+                      Patterns::Double(0.),
+                      "L of the diffusion time tau_d = L^2/D that all times of the scene are "
+                      "measured in (paper §4.1: the initial thickness h_0; §4.3: H/2).");
+    prm.declare_entry("Initial step", "1e-3", Patterns::Double(0.), "First time step, in tau_d.");
+    prm.declare_entry("End time", "1", Patterns::Double(0.), "End of the run, in tau_d.");
+    prm.declare_entry("Minimum step",
+                      "1e-12",
+                      Patterns::Double(0.),
+                      "When a failing step would be cut below this (in tau_d), the run stops "
+                      "cleanly, keeping every result written so far (exit status 1).");
+    prm.declare_entry("Growth factor",
+                      "1.25",
+                      Patterns::Double(1.),
+                      "The step grows by this factor after a step that converged in fewer than "
+                      "'Growth below iterations' Newton iterations (paper §4: 1.25).");
+    prm.declare_entry("Growth below iterations",
+                      "6",
+                      Patterns::Integer(1),
+                      "See 'Growth factor' (paper §4: 6).");
+    prm.declare_entry("Cut factor",
+                      "0.5",
+                      Patterns::Double(0., 1.),
+                      "A step whose Newton iteration fails is retried with the step times this "
+                      "factor (paper §4: 1/2).");
+    prm.declare_entry("Maximum steps",
+                      "1000000",
+                      Patterns::Integer(1),
+                      "Stop (cleanly, exit status 1) after this many steps.");
+    prm.declare_entry("Step caps",
+                      "",
+                      Patterns::Anything(),
+                      "Piecewise upper bounds of the step: 'until_1: cap_1, until_2: cap_2, ...' "
+                      "(times in tau_d, increasing): for t <= until_1 the step is at most cap_1, "
+                      "and so on; no cap after the last. Paper eq. (64): "
+                      "'5: 0.0125, 20: 0.0625, 40: 0.125, 100: 0.625'.");
+    prm.declare_entry("Stop at times",
+                      "",
+                      Patterns::List(Patterns::Double(0.)),
+                      "Times (tau_d) the stepping lands on exactly, e.g. for profiles compared "
+                      "with a reference; output is written at each of them.");
+    prm.leave_subsection();
+  }
+
+
+  void
+  TimeStepping::parse_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Time stepping");
+    characteristic_length       = prm.get_double("Characteristic length");
+    initial_step                = prm.get_double("Initial step");
+    end_time                    = prm.get_double("End time");
+    minimum_step                = prm.get_double("Minimum step");
+    growth_factor               = prm.get_double("Growth factor");
+    growth_below                = prm.get_integer("Growth below iterations");
+    cut_factor                  = prm.get_double("Cut factor");
+    maximum_steps               = prm.get_integer("Maximum steps");
+    const std::string caps_text = prm.get("Step caps");
+    const std::string stops     = prm.get("Stop at times");
+    prm.leave_subsection();
+
+    require(characteristic_length > 0.,
+            "Time stepping/Characteristic length",
+            "must be positive",
+            "give the length L of tau_d = L^2/D");
+    require(initial_step > 0., "Time stepping/Initial step", "must be positive", "give dt_0 > 0");
+    require(end_time > 0., "Time stepping/End time", "must be positive", "give t_final > 0");
+    require(cut_factor > 0. && cut_factor < 1.,
+            "Time stepping/Cut factor",
+            "must lie strictly between 0 and 1",
+            "use 0.5 as in the paper");
+    require(minimum_step < initial_step,
+            "Time stepping/Minimum step",
+            "is not smaller than the initial step",
+            "give a minimum step below 'Initial step'");
+
+    caps.clear();
+    for (const auto &item : dealii::Utilities::split_string_list(caps_text, ','))
+      {
+        const auto pair = dealii::Utilities::split_string_list(item, ':');
+        require(pair.size() == 2,
+                "Time stepping/Step caps",
+                "has the item '" + item + "' that is not 'until: cap'",
+                "write e.g. '5: 0.0125, 20: 0.0625'");
+        double until = 0., value = 0.;
+        try
+          {
+            until = dealii::Utilities::string_to_double(pair[0]);
+            value = dealii::Utilities::string_to_double(pair[1]);
+          }
+        catch (...)
+          {
+            throw InputError("Time stepping/Step caps",
+                             "has the item '" + item + "' with a non-number",
+                             "write e.g. '5: 0.0125, 20: 0.0625'");
+          }
+        require(value > 0.,
+                "Time stepping/Step caps",
+                "has the non-positive cap in '" + item + "'",
+                "give caps > 0");
+        require(caps.empty() || until > caps.back().first,
+                "Time stepping/Step caps",
+                "has times that do not increase",
+                "list the items in increasing time");
+        caps.emplace_back(until, value);
+      }
+
+    stop_times.clear();
+    for (const auto &item : dealii::Utilities::split_string_list(stops, ','))
+      stop_times.push_back(dealii::Utilities::string_to_double(item));
+    std::sort(stop_times.begin(), stop_times.end());
+  }
+
+
+  double
+  TimeStepping::cap(const double t) const
+  {
+    for (const auto &c : caps)
+      if (t < c.first * (1. - 1e-12))
+        return c.second;
+    return std::numeric_limits<double>::infinity();
+  }
+
+
+  double
+  TimeStepping::next_step(const double t, const double dt) const
+  {
+    double step = std::min(dt, cap(t));
+    double next = end_time;
+    for (const double s : stop_times)
+      if (s > t * (1. + 1e-12) + 1e-300)
+        {
+          next = std::min(next, s);
+          break;
+        }
+    // Land on the next stop exactly.
+    if (t + step >= next * (1. - 1e-10))
+      step = next - t;
+    return step;
+  }
+} // namespace GelMPM
