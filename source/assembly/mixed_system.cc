@@ -701,11 +701,17 @@ namespace GelMPM
         for (unsigned int d = 0; d < dim; ++d)
           {
             const auto  &basis     = spaces_.u_space().basis_1d(d);
-            const double tolerance = 1e-3 * basis.cell_size();
+            const double tolerance = 0.25 * basis.cell_size();
             if (x[d] < basis.x_min() && x[d] > basis.x_min() - tolerance)
               x[d] = basis.x_min();
             if (x[d] > basis.x_max() && x[d] < basis.x_max() + tolerance)
               x[d] = basis.x_max();
+            if (x[d] < basis.x_min() || x[d] > basis.x_max())
+              throw std::runtime_error("the material point at " + format_point(x) +
+                                       " (initially at " + format_point(r.x - r.u_n) + ", kind " +
+                                       std::to_string(static_cast<int>(r.kind)) +
+                                       ") has left the background grid; enlarge the grid "
+                                       "('Background grid/Lower corner', 'Upper corner')");
           }
         particles[p]->set_location(x);
       }
