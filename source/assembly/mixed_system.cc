@@ -719,6 +719,28 @@ namespace GelMPM
 
 
   template <int dim>
+  std::vector<double>
+  MixedSystem<dim>::mu_from_points() const
+  {
+    std::vector<double> sum(spaces_.n_mu_dofs(), 0.), weight(spaces_.n_mu_dofs(), 0.);
+    for (const auto &r : points)
+      if (r.kind == PointKind::volume)
+        {
+          const auto &dofs = spaces_.mu().cell_dofs(blocks[r.block].mu_cell);
+          for (unsigned int j = 0; j < dofs.size(); ++j)
+            {
+              const double w = std::abs(mu_values[r.mu_offset + j]) * r.measure;
+              sum[dofs[j]] += w * r.mu_n;
+              weight[dofs[j]] += w;
+            }
+        }
+    for (unsigned int i = 0; i < sum.size(); ++i)
+      sum[i] = (weight[i] > 0.) ? sum[i] / weight[i] : 0.;
+    return sum;
+  }
+
+
+  template <int dim>
   unsigned int
   MixedSystem<dim>::n_points() const
   {

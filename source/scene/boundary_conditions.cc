@@ -2,7 +2,9 @@
 #include <gelmpm/scene/boundary_conditions.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/lac/vector.h>
 
+#include <iostream>
 #include <sstream>
 
 namespace GelMPM
@@ -32,6 +34,26 @@ namespace GelMPM
         text.pop_back();
       return text;
     }
+
+    /**
+     * Keeps std::cerr quiet while alive: deal.II's expression parser writes its own diagnostics
+     * there before throwing, and the InputError that follows says it once, in the user's terms.
+     */
+    class QuietCerr
+    {
+    public:
+      QuietCerr()
+        : saved(std::cerr.rdbuf(sink.rdbuf()))
+      {}
+      ~QuietCerr()
+      {
+        std::cerr.rdbuf(saved);
+      }
+
+    private:
+      std::ostringstream sink;
+      std::streambuf    *saved;
+    };
 
     const char *function_names[] = {"Displacement value",
                                     "Traction",
@@ -108,7 +130,11 @@ namespace GelMPM
         *targets[f] = std::make_unique<dealii::Functions::ParsedFunction<dim>>(n_components[f]);
         try
           {
+            const QuietCerr quiet;
             (*targets[f])->parse_parameters(prm);
+            // Evaluate once: the parser compiles lazily.
+            dealii::Vector<double> values(n_components[f]);
+            (*targets[f])->vector_value(dealii::Point<dim>(), values);
           }
         catch (const dealii::ExceptionBase &e)
           {
@@ -146,6 +172,7 @@ namespace GelMPM
     selector = std::make_unique<dealii::FunctionParser<3>>(1);
     try
       {
+        const QuietCerr quiet;
         selector->initialize(variables(dim, true), selector_text, constants, dim == 2);
         // The parser compiles lazily: evaluate once to surface syntax errors here.
         (void)selector->value(dealii::Point<3>());

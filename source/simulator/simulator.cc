@@ -43,7 +43,7 @@ namespace GelMPM
     : structure(structure)
     , scene_file(scene_file)
     , pcout(std::cout, dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-    , timer(MPI_COMM_WORLD, pcout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times)
+    , timer(pcout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times)
   {
     output_settings.parse_parameters(prm);
     material.parse_parameters(prm);
@@ -59,8 +59,10 @@ namespace GelMPM
     observables.parse_parameters(prm, structure.boundary_pieces);
     // Checks that need more than one section: build the spaces once (odd cell counts with
     // subdivision are reported here, before anything is written).
-    DiscreteSpaces<dim> check(grid, discretisation);
-    (void)check;
+    // The material points too: a body outside the grid or a piece that selects nothing is
+    // bad input, found here.
+    spaces = std::make_unique<DiscreteSpaces<dim>>(grid, discretisation);
+    create_material_points();
 
     std::ostringstream used;
     prm.print_parameters(used, dealii::ParameterHandler::ShortPRM);
@@ -128,8 +130,9 @@ namespace GelMPM
         }
       else
         ++n_surface;
-    pcout << "  material points: " << n_volume << " volume, " << n_surface
-          << " surface; body volume " << volume << '\n';
+    n_volume_points  = n_volume;
+    n_surface_points = n_surface;
+    body_volume      = volume;
 
     tau_d    = std::pow(time_stepping.characteristic_length, 2) / material.diffusivity();
     scale_u  = material.shear_modulus() * std::pow(volume, (dim - 1.) / dim);
@@ -202,6 +205,7 @@ namespace GelMPM
     for (unsigned int i = 0; i < mu_coefficients.size(); ++i)
       {
         const unsigned int dof = mu.dof_of_control_point(i);
+        mu_known[i]            = true;
         if (dof != dealii::numbers::invalid_unsigned_int)
           mu_coefficients[i] = solution(n_u + dof);
         else if (mu.control_point_kind(i) == ControlPointKind::boundary)
@@ -211,6 +215,8 @@ namespace GelMPM
               value += weight * solution(n_u + mu.dof_of_control_point(interior));
             mu_coefficients[i] = value;
           }
+        else
+          mu_known[i] = false;
       }
   }
 
@@ -321,11 +327,12 @@ namespace GelMPM
   {
     print_header();
     prepare_output_directory();
-    create_material_points();
-    spaces = std::make_unique<DiscreteSpaces<dim>>(grid, discretisation);
+    pcout << "  material points: " << n_volume_points << " volume, " << n_surface_points
+          << " surface; body volume " << body_volume << '\n';
     system = std::make_unique<MixedSystem<dim>>(material, boundary_conditions, nitsche, *spaces);
     particle_output = std::make_unique<ParticleOutput<dim>>(output_settings.directory, material);
     mu_coefficients.assign(spaces->mu_space().n_functions(), material.mu_0());
+    mu_known.assign(spaces->mu_space().n_functions(), true);
     open_statistics();
     next_output_time = output_settings.interval_time;
 
@@ -355,6 +362,14 @@ namespace GelMPM
       }
     if (status == 0)
       pcout << "gelmpm: reached t/tau_d = " << time << " in " << step << " steps" << std::endl;
+    if (output_settings.test_mode && !statistics.rows().empty())
+      {
+        // The final row of statistics.csv, without timings, for comparison with a reference.
+        const auto &row = statistics.rows().back();
+        for (unsigned int c = 0; c < row.size(); ++c)
+          if (statistics.columns()[c] != "time")
+            pcout << "  final " << statistics.columns()[c] << " = " << row[c] << '\n';
+      }
     if (!output_settings.test_mode)
       {
         pcout << "gelmpm: results are in " << output_settings.directory

@@ -102,6 +102,15 @@ namespace GelMPM
     void
     update_particles(const dealii::Vector<double> &solution);
 
+    /**
+     * Particle-to-grid estimate of the chemical-potential coefficients: for every mu DoF the
+     * average of the points' mu_n weighted by |Ñ_i| V (volume points only). Used as the initial
+     * guess of DoFs whose control points held no value in the previous step (newly covered by
+     * material), where a stale value would start Newton far from the solution.
+     */
+    std::vector<double>
+    mu_from_points() const;
+
     /** Number of material points of the last setup(), and how many take part in assembly. */
     unsigned int
     n_points() const;

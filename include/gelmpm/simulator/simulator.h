@@ -116,7 +116,11 @@ namespace GelMPM
     std::unique_ptr<ParticleOutput<dim>>    particle_output;
     StatisticsFile                          statistics;
     std::vector<double>                     mu_coefficients; // per mu control point
+    std::vector<bool>                       mu_known;        // coefficient holds a current value
 
+    unsigned int n_volume_points  = 0;
+    unsigned int n_surface_points = 0;
+    double       body_volume      = 0.;
     double       time             = 0.; // in tau_d
     unsigned int step             = 0;
     double       tau_d            = 1.; // L^2 / D, physical time of one tau_d
