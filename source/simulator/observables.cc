@@ -1,8 +1,8 @@
-#include <deal.II/base/utilities.h>
-
 #include <gelmpm/core/input_error.h>
 #include <gelmpm/particles/property_layout.h>
 #include <gelmpm/simulator/observables.h>
+
+#include <deal.II/base/utilities.h>
 
 #include <algorithm>
 #include <cmath>
@@ -31,7 +31,7 @@ namespace GelMPM
 
   template <int dim>
   void
-  Observables<dim>::parse_parameters(dealii::ParameterHandler &      prm,
+  Observables<dim>::parse_parameters(dealii::ParameterHandler       &prm,
                                      const std::vector<std::string> &pieces)
   {
     prm.enter_subsection("Observables");
@@ -76,12 +76,12 @@ namespace GelMPM
   template <int dim>
   void
   Observables<dim>::evaluate(const dealii::Particles::ParticleHandler<dim> &particles,
-                             StatisticsFile &                               statistics) const
+                             StatisticsFile                                &statistics) const
   {
     if (thickness_first < 0)
       return;
-    using Layout = PropertyLayout<dim>;
-    const unsigned int d = thickness_direction;
+    using Layout              = PropertyLayout<dim>;
+    const unsigned int d      = thickness_direction;
     double             sum[2] = {0., 0.}, sum_0[2] = {0., 0.};
     unsigned int       count[2] = {0, 0};
     for (const auto &particle : particles)

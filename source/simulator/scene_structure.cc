@@ -1,7 +1,7 @@
-#include <deal.II/base/utilities.h>
-
 #include <gelmpm/core/input_error.h>
 #include <gelmpm/simulator/scene_structure.h>
+
+#include <deal.II/base/utilities.h>
 
 #include <set>
 
@@ -59,7 +59,8 @@ namespace GelMPM
 
 
   SceneStructure
-  SceneStructure::read(const std::string &file_name, const std::vector<ParameterOverride> &overrides)
+  SceneStructure::read(const std::string                    &file_name,
+                       const std::vector<ParameterOverride> &overrides)
   {
     dealii::ParameterHandler prm;
     declare_parameters(prm);

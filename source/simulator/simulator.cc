@@ -33,6 +33,7 @@ namespace GelMPM
     NewtonSettings::declare_parameters(prm);
     TimeStepping::declare_parameters(prm);
     Observables<dim>::declare_parameters(prm);
+    StabilitySettings::declare_parameters(prm);
   }
 
 
@@ -57,6 +58,11 @@ namespace GelMPM
     newton.parse_parameters(prm);
     time_stepping.parse_parameters(prm);
     observables.parse_parameters(prm, structure.boundary_pieces);
+    stability.parse_parameters(prm);
+    require(!stability.enabled() || nitsche.symmetry > 0.,
+            "Stability/Inertia",
+            "needs a symmetric tangent, but 'Nitsche/Variant = skew-symmetric'",
+            "use the symmetric Nitsche variant or switch the stability analysis off");
     // Checks that need more than one section: build the spaces once (odd cell counts with
     // subdivision are reported here, before anything is written).
     // The material points too: a body outside the grid or a piece that selects nothing is
@@ -156,6 +162,8 @@ namespace GelMPM
                                         "n_dofs_mu",
                                         "n_active_cells",
                                         "n_particles"};
+    for (const auto &c : stability.columns())
+      columns.push_back(c);
     for (const auto &c : observables.columns())
       columns.push_back(c);
     statistics.open(output_settings.directory + "/statistics.csv", columns);
@@ -274,6 +282,20 @@ namespace GelMPM
             continue;
           }
 
+        if (stability.enabled())
+          {
+            // The last assembly of Newton was at the converged state.
+            dealii::TimerOutput::Scope scope(timer, "stability");
+            const auto result = analyse_stability(system->matrix(), spaces->n_u_dofs(), stability);
+            if (stability.inertia)
+              {
+                statistics.set("n_pos", result.inertia.n_positive);
+                statistics.set("n_neg", result.inertia.n_negative);
+                statistics.set("n_zero", result.inertia.n_zero);
+              }
+            for (unsigned int k = 0; k < result.eigenvalues.size(); ++k)
+              statistics.set("eig_" + std::to_string(k + 1), result.eigenvalues[k]);
+          }
         {
           dealii::TimerOutput::Scope scope(timer, "update");
           const auto                 n_before = particles.n_global_particles();

@@ -1,10 +1,10 @@
 #ifndef gelmpm_simulator_observables_h
 #define gelmpm_simulator_observables_h
 
+#include <gelmpm/io/statistics_file.h>
+
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/particles/particle_handler.h>
-
-#include <gelmpm/io/statistics_file.h>
 
 #include <string>
 #include <vector>
@@ -38,11 +38,11 @@ namespace GelMPM
     /** Evaluate every observable on the current material points into @p statistics. */
     void
     evaluate(const dealii::Particles::ParticleHandler<dim> &particles,
-             StatisticsFile &                               statistics) const;
+             StatisticsFile                                &statistics) const;
 
   private:
-    int          thickness_first  = -1;
-    int          thickness_second = -1;
+    int          thickness_first     = -1;
+    int          thickness_second    = -1;
     unsigned int thickness_direction = 1;
   };
 } // namespace GelMPM

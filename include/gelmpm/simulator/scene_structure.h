@@ -1,9 +1,9 @@
 #ifndef gelmpm_simulator_scene_structure_h
 #define gelmpm_simulator_scene_structure_h
 
-#include <deal.II/base/parameter_handler.h>
-
 #include <gelmpm/core/parameters.h>
+
+#include <deal.II/base/parameter_handler.h>
 
 #include <string>
 #include <vector>

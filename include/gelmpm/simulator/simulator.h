@@ -17,6 +17,7 @@
 #include <gelmpm/solvers/linear_solver.h>
 #include <gelmpm/solvers/newton.h>
 #include <gelmpm/solvers/time_stepping.h>
+#include <gelmpm/stability/stability_analysis.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>
@@ -102,6 +103,7 @@ namespace GelMPM
     NewtonSettings              newton;
     TimeStepping                time_stepping;
     Observables<dim>            observables;
+    StabilitySettings           stability;
 
     std::string                scene_file;
     std::string                parameters_as_used;

@@ -1,0 +1,63 @@
+#ifndef gelmpm_stability_stability_analysis_h
+#define gelmpm_stability_stability_analysis_h
+
+#include <gelmpm/stability/symmetric_factorization.h>
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+
+#include <string>
+#include <vector>
+
+namespace GelMPM
+{
+  /**
+   * @brief The "Stability" section: what the stability analysis of paper §3.6 computes after every
+   * converged step. Off by default; when off it costs nothing.
+   *
+   * - Inertia: the signature (n+, n-, n0) of the tangent at the converged state, from its LDL^T
+   *   factorisation (columns n_pos, n_neg, n_zero of statistics.csv). A stable state has
+   *   (n_dofs_u, n_dofs_mu, 0).
+   * - Schur eigenvalues: the k eigenvalues of smallest magnitude of the Schur complement of
+   *   eq. (63) (columns eig_1 ... eig_k), by ARPACK through the same factorisation.
+   */
+  struct StabilitySettings
+  {
+    bool         inertia       = false;
+    unsigned int n_eigenvalues = 0;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    /** Whether anything is to be computed. */
+    bool
+    enabled() const;
+
+    /** The statistics columns it fills. */
+    std::vector<std::string>
+    columns() const;
+  };
+
+
+  /** What the stability analysis of one state found. */
+  struct StabilityReport
+  {
+    Inertia             inertia;
+    std::vector<double> eigenvalues;
+  };
+
+
+  /**
+   * Factorise the symmetric tangent @p K (displacement unknowns first, @p n_u of them) and compute
+   * what @p settings ask for.
+   */
+  StabilityReport
+  analyse_stability(const dealii::TrilinosWrappers::SparseMatrix &K,
+                    const unsigned int                            n_u,
+                    const StabilitySettings                      &settings);
+} // namespace GelMPM
+
+#endif
