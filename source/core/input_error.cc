@@ -14,7 +14,9 @@ namespace GelMPM
     }
   } // namespace
 
-  InputError::InputError(const std::string &entry, const std::string &problem, const std::string &fix)
+  InputError::InputError(const std::string &entry,
+                         const std::string &problem,
+                         const std::string &fix)
     : std::runtime_error(compose(entry, problem, fix))
     , entry_(entry)
     , problem_(problem)

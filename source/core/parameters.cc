@@ -1,8 +1,8 @@
-#include <deal.II/base/exceptions.h>
-#include <deal.II/base/utilities.h>
-
 #include <gelmpm/core/input_error.h>
 #include <gelmpm/core/parameters.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
 
 #include <cctype>
 #include <fstream>
@@ -128,9 +128,9 @@ namespace GelMPM
 
 
   void
-  apply_overrides(dealii::ParameterHandler &             prm,
+  apply_overrides(dealii::ParameterHandler             &prm,
                   const std::vector<ParameterOverride> &overrides,
-                  const bool                             skip_undefined)
+                  const bool                            skip_undefined)
   {
     for (const auto &o : overrides)
       {
@@ -166,10 +166,10 @@ namespace GelMPM
 
 
   void
-  read_scene_file(dealii::ParameterHandler &             prm,
-                  const std::string &                    file_name,
+  read_scene_file(dealii::ParameterHandler             &prm,
+                  const std::string                    &file_name,
                   const std::vector<ParameterOverride> &overrides,
-                  const bool                             skip_undefined)
+                  const bool                            skip_undefined)
   {
     {
       std::ifstream probe(file_name);
@@ -211,8 +211,8 @@ namespace GelMPM
 
   std::vector<double>
   get_double_list(const dealii::ParameterHandler &prm,
-                  const std::string &             entry,
-                  const std::string &             entry_path,
+                  const std::string              &entry,
+                  const std::string              &entry_path,
                   const unsigned int              n)
   {
     const auto parts = dealii::Utilities::split_string_list(prm.get(entry), ',');

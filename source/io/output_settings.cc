@@ -19,11 +19,6 @@ namespace GelMPM
                       "true",
                       Patterns::Bool(),
                       "Write the material points as .vtu files with a .pvd time series.");
-    prm.declare_entry("Write grid",
-                      "false",
-                      Patterns::Bool(),
-                      "Write the background grid (cell classification, grid fields u and mu) as "
-                      ".vtu files with a .pvd time series.");
     prm.declare_entry("Interval steps",
                       "1",
                       Patterns::Integer(0),
@@ -49,7 +44,6 @@ namespace GelMPM
     prm.enter_subsection("Output");
     directory       = prm.get("Directory");
     write_particles = prm.get_bool("Write particles");
-    write_grid      = prm.get_bool("Write grid");
     interval_steps  = prm.get_integer("Interval steps");
     interval_time   = prm.get_double("Interval time");
     test_mode       = prm.get_bool("Test mode");

@@ -86,7 +86,7 @@ namespace GelMPM
           << '\n';
     if (!output_settings.test_mode)
       pcout << "  GelMPM " << GELMPM_VERSION << " (" << GELMPM_GIT_REVISION << "), deal.II "
-            << DEAL_II_PACKAGE_VERSION << " (" << DEAL_II_GIT_SHORTREV << "), "
+            << DEAL_II_PACKAGE_VERSION << ", "
             << dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) << " MPI rank(s), "
             << dealii::MultithreadInfo::n_threads() << " thread(s)\n"
             << "  output directory: " << output_settings.directory << '\n';

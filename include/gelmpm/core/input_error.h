@@ -10,8 +10,8 @@ namespace GelMPM
    * @brief An error in what the user gave: a parameter file, a `--set` override, or a value that is
    * inconsistent with another.
    *
-   * It names the parameter entry ("Section/Subsection/Entry"), says what is wrong and how to fix it.
-   * The gelmpm application prints it as one message and exits with status 2 before writing any
+   * It names the parameter entry ("Section/Subsection/Entry"), says what is wrong and how to fix
+   * it. The gelmpm application prints it as one message and exits with status 2 before writing any
    * output; library code throws it wherever it checks input, so that the check stays next to the
    * parameter it guards.
    */

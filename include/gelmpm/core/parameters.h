@@ -73,19 +73,19 @@ namespace GelMPM
    *   of boundary pieces).
    */
   void
-  read_scene_file(dealii::ParameterHandler &             prm,
-                  const std::string &                    file_name,
+  read_scene_file(dealii::ParameterHandler             &prm,
+                  const std::string                    &file_name,
                   const std::vector<ParameterOverride> &overrides,
-                  const bool                             skip_undefined = false);
+                  const bool                            skip_undefined = false);
 
   /**
    * Apply @p overrides to @p prm (see read_scene_file()). With @p skip_undefined, overrides of
    * entries that @p prm does not declare are ignored.
    */
   void
-  apply_overrides(dealii::ParameterHandler &             prm,
+  apply_overrides(dealii::ParameterHandler             &prm,
                   const std::vector<ParameterOverride> &overrides,
-                  const bool                             skip_undefined = false);
+                  const bool                            skip_undefined = false);
 
   /**
    * Enter the subsections of the slash-separated @p path ("A/B") in @p prm; leave_sections()
@@ -104,8 +104,8 @@ namespace GelMPM
    */
   std::vector<double>
   get_double_list(const dealii::ParameterHandler &prm,
-                  const std::string &             entry,
-                  const std::string &             entry_path,
+                  const std::string              &entry,
+                  const std::string              &entry_path,
                   const unsigned int              n);
 } // namespace GelMPM
 

@@ -22,10 +22,10 @@ namespace GelMPM
   surface_point_kind(const bool displacement_prescribed, const bool chemical_potential_prescribed)
   {
     if (displacement_prescribed)
-      return chemical_potential_prescribed ? PointKind::dirichlet_dirichlet :
-                                             PointKind::dirichlet_neumann;
-    return chemical_potential_prescribed ? PointKind::neumann_dirichlet :
-                                           PointKind::neumann_neumann;
+      return chemical_potential_prescribed ? PointKind::dirichlet_dirichlet
+                                           : PointKind::dirichlet_neumann;
+    return chemical_potential_prescribed ? PointKind::neumann_dirichlet
+                                         : PointKind::neumann_neumann;
   }
 
   /**
