@@ -63,6 +63,17 @@ namespace GelMPM
   namespace
   {
     template <int dim>
+    double
+    smallest_cell_size(const BSplineSpace<dim> &space)
+    {
+      double h = space.cell_size(0);
+      for (unsigned int d = 1; d < dim; ++d)
+        h = std::min(h, space.cell_size(d));
+      return h;
+    }
+
+
+    template <int dim>
     std::array<unsigned int, dim>
     mu_cells(const BackgroundGrid<dim> &grid, const bool subdivision)
     {
@@ -187,10 +198,7 @@ namespace GelMPM
   double
   DiscreteSpaces<dim>::h_u() const
   {
-    double h = u_space_.cell_size(0);
-    for (unsigned int d = 1; d < dim; ++d)
-      h = std::min(h, u_space_.cell_size(d));
-    return h;
+    return smallest_cell_size(u_space_);
   }
 
 
@@ -198,10 +206,7 @@ namespace GelMPM
   double
   DiscreteSpaces<dim>::h_mu() const
   {
-    double h = mu_space_.cell_size(0);
-    for (unsigned int d = 1; d < dim; ++d)
-      h = std::min(h, mu_space_.cell_size(d));
-    return h;
+    return smallest_cell_size(mu_space_);
   }
 
 

@@ -12,27 +12,27 @@ namespace GelMPM
 {
   namespace
   {
-    /** deal.II's own description of an exception, without its file/line boilerplate. */
-    std::string
-    describe(const dealii::ExceptionBase &exception)
-    {
-      std::ostringstream out;
-      exception.print_info(out);
-      // One line: deal.II spreads some of its messages over several indented lines.
-      std::string text;
-      for (const char c : out.str())
-        if (!std::isspace(static_cast<unsigned char>(c)))
-          text += c;
-        else if (!text.empty() && text.back() != ' ')
-          text += ' ';
-      while (!text.empty() && text.back() == ' ')
-        text.pop_back();
-      return text;
-    }
-
     const std::string list_hint =
       "'gelmpm --print-parameters' lists every section and entry with its pattern and documentation";
   } // namespace
+
+
+  std::string
+  describe(const dealii::ExceptionBase &exception)
+  {
+    std::ostringstream out;
+    exception.print_info(out);
+    // One line: deal.II spreads some of its messages over several indented lines.
+    std::string text;
+    for (const char c : out.str())
+      if (!std::isspace(static_cast<unsigned char>(c)))
+        text += c;
+      else if (!text.empty() && text.back() != ' ')
+        text += ' ';
+    while (!text.empty() && text.back() == ' ')
+      text.pop_back();
+    return text;
+  }
 
 
   std::string

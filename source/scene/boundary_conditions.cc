@@ -1,4 +1,5 @@
 #include <gelmpm/core/input_error.h>
+#include <gelmpm/core/parameters.h>
 #include <gelmpm/scene/boundary_conditions.h>
 
 #include <deal.II/base/exceptions.h>
@@ -17,22 +18,6 @@ namespace GelMPM
       if (dim == 3)
         return "x,y,z";
       return with_normal ? "x,y,nx,ny" : "x,y";
-    }
-
-    std::string
-    one_line(const dealii::ExceptionBase &e)
-    {
-      std::ostringstream out;
-      e.print_info(out);
-      std::string text;
-      for (const char c : out.str())
-        if (!std::isspace(static_cast<unsigned char>(c)))
-          text += c;
-        else if (!text.empty() && text.back() != ' ')
-          text += ' ';
-      while (!text.empty() && text.back() == ' ')
-        text.pop_back();
-      return text;
     }
 
     /**
@@ -141,7 +126,7 @@ namespace GelMPM
             prm.leave_subsection();
             prm.leave_subsection();
             throw InputError(where + "/" + function_names[f],
-                             "cannot be parsed: " + one_line(e),
+                             "cannot be parsed: " + describe(e),
                              "give " + std::to_string(n_components[f]) + " expression(s) of x, y" +
                                (dim == 3 ? ", z" : "") +
                                ", t separated by ';' in 'Function expression'");
@@ -180,7 +165,7 @@ namespace GelMPM
     catch (const dealii::ExceptionBase &e)
       {
         throw InputError(where + "/Selector",
-                         "'" + selector_text + "' cannot be parsed: " + one_line(e),
+                         "'" + selector_text + "' cannot be parsed: " + describe(e),
                          "write an expression in " + variables(dim, true));
       }
   }

@@ -1,6 +1,7 @@
 #ifndef gelmpm_core_parameters_h
 #define gelmpm_core_parameters_h
 
+#include <deal.II/base/exceptions.h>
 #include <deal.II/base/parameter_handler.h>
 
 #include <string>
@@ -8,6 +9,14 @@
 
 namespace GelMPM
 {
+  /**
+   * deal.II's own description of an exception on one line, without its file/line boilerplate,
+   * for messages to the user.
+   */
+  std::string
+  describe(const dealii::ExceptionBase &exception);
+
+
   /**
    * @brief One `--set "Section/Subsection/Entry=value"` given on the command line.
    *
