@@ -1,14 +1,15 @@
 // Conditioning with and without extended B-splines (§3.5) on a cut domain: the box
-// [0.2, 0.7 + f h] x [0.2, 0.8] in a 10 x 10 grid of [0, 1]^2 (q = 2), so that its right edge leaves
-// cut cells with material fraction f. Integration points: 4 x 4 per (cut) cell at sub-cell centres of
-// the part inside the box, 4 per boundary segment per cell. Matrices: the point-integrated mass
-// matrix and a Laplace matrix with symmetric Nitsche terms on the whole boundary (penalty 10/h).
-// Condition numbers (2-norm, dense LAPACK eigenvalues) for f = 1e-1 ... 1e-8: with extension they
-// stay below 1e3 (mass) and 1e4 (Laplace-Nitsche) for every f; without extension they grow by more
-// than 1e4 from f = 1e-1 to f = 1e-6. Prints the table of doc/conditioning.md.
-#include <deal.II/lac/lapack_full_matrix.h>
-
+// [0.2, 0.7 + f h] x [0.2, 0.8] in a 10 x 10 grid of [0, 1]^2 (q = 2), so that its right edge
+// leaves cut cells with material fraction f. Integration points: 4 x 4 per (cut) cell at sub-cell
+// centres of the part inside the box, 4 per boundary segment per cell. Matrices: the
+// point-integrated mass matrix and a Laplace matrix with symmetric Nitsche terms on the whole
+// boundary (penalty 10/h). Condition numbers (2-norm, dense LAPACK eigenvalues) for f = 1e-1 ...
+// 1e-8: with extension they stay below 1e3 (mass) and 1e4 (Laplace-Nitsche) for every f; without
+// extension they grow by more than 1e4 from f = 1e-1 to f = 1e-6. Prints the table of
+// doc/conditioning.md.
 #include <gelmpm/bspline/extended_bspline_space.h>
+
+#include <deal.II/lac/lapack_full_matrix.h>
 
 #include <cmath>
 #include <iomanip>
@@ -45,7 +46,10 @@ namespace
                            (a1 - a0) * (b1 - b0) / (n * n),
                            Tensor<1, 2>()});
           // Boundary segments of the box inside this cell.
-          const auto edge = [&](const bool vertical, const double c, const double s0, const double s1,
+          const auto edge = [&](const bool          vertical,
+                                const double        c,
+                                const double        s0,
+                                const double        s1,
                                 const Tensor<1, 2> &normal) {
             for (unsigned int k = 0; k < n; ++k)
               {
@@ -87,7 +91,7 @@ main()
 {
   const double          h = 0.1;
   const BSplineSpace<2> space(2, Point<2>(0., 0.), Point<2>(1., 1.), {10, 10});
-  bool                  ok = true;
+  bool                  ok             = true;
   double                plain_first[2] = {0., 0.}, plain_last[2] = {0., 0.};
   std::cout << "f          cond(M) ext  cond(M) plain  cond(K) ext  cond(K) plain" << std::endl;
   for (const double f : {1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8})
@@ -123,9 +127,9 @@ main()
                       K(dofs[i], dofs[j]) += p.weight * g[i] * g[j];
                     }
                   else
-                    K(dofs[i], dofs[j]) += p.weight * (10. / h * v[i] * v[j] -
-                                                       (g[i] * p.normal) * v[j] -
-                                                       v[i] * (g[j] * p.normal));
+                    K(dofs[i], dofs[j]) +=
+                      p.weight *
+                      (10. / h * v[i] * v[j] - (g[i] * p.normal) * v[j] - v[i] * (g[j] * p.normal));
             }
           cond[extension ? 0 : 1][0] = condition_number(M);
           cond[extension ? 0 : 1][1] = condition_number(K);
@@ -153,8 +157,8 @@ main()
     }
   const bool bounded = ok;
   const bool grows   = plain_last[0] > 1e4 * plain_first[0] && plain_last[1] > 1e4 * plain_first[1];
-  std::cout << "with extension: cond(M) < 1e3 and cond(K) < 1e4 for all f: " << (bounded ? "yes" : "no  FAIL")
-            << std::endl;
+  std::cout << "with extension: cond(M) < 1e3 and cond(K) < 1e4 for all f: "
+            << (bounded ? "yes" : "no  FAIL") << std::endl;
   std::cout << "without extension: both grow by more than 1e4 from f = 1e-1 to 1e-6: "
             << (grows ? "yes" : "no  FAIL") << std::endl;
   return (bounded && grows) ? 0 : 1;
