@@ -167,9 +167,18 @@ namespace GelMPM
             r.measure = na.norm();
             r.normal  = na / r.measure;
             if (r.piece >= 0)
-              r.projector =
-                constraint_projector<dim>(boundary_conditions.piece(r.piece).displacement_condition,
-                                          r.normal);
+              {
+                // A roller or a tangential constraint acts along the wall the surface started
+                // on: the directions come from the reference normal N_0 and apply to the total
+                // displacement. With the current normal N_n instead, a tilt of the surface by
+                // round-off turns part of the accumulated displacement into a lateral gap, and
+                // the correction tilts the surface further: a growing mode (doc/method.md).
+                Tensor<1, dim> na0;
+                for (unsigned int d = 0; d < dim; ++d)
+                  na0[d] = props[Layout::normal_area_0 + d];
+                r.projector = constraint_projector<dim>(
+                  boundary_conditions.piece(r.piece).displacement_condition, na0 / na0.norm());
+              }
           }
         const unsigned int cell = (r.kind == PointKind::volume)
                                     ? u_space.cell_containing(r.x)
