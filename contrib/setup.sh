@@ -4,7 +4,8 @@
 #
 #   bash contrib/setup.sh [--plotting]
 #
-# --plotting also installs what the plotting scripts in contrib/plotting need (matplotlib, numpy).
+# --plotting also installs what the plotting scripts in contrib/plotting need (matplotlib, numpy,
+# VTK's Python module); run those scripts with /usr/bin/python3, which sees Debian's packages.
 # Environment: GELMPM_BUILD_DIR (default: build), GELMPM_BUILD_TYPE (default: Release), GELMPM_JOBS.
 set -euo pipefail
 
@@ -23,7 +24,7 @@ packages=(
   make           # build tool
 )
 if [[ "${1:-}" == "--plotting" ]]; then
-  packages+=(python3-numpy python3-matplotlib)
+  packages+=(python3-numpy python3-matplotlib python3-vtk9)
 fi
 
 missing=()

@@ -1,5 +1,6 @@
 #include <gelmpm/io/statistics_file.h>
 
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
@@ -57,5 +58,31 @@ namespace GelMPM
   StatisticsFile::rows() const
   {
     return rows_;
+  }
+
+
+  std::map<std::string, std::vector<double>>
+  read_statistics(const std::string &file_name)
+  {
+    std::ifstream in(file_name);
+    if (!in)
+      throw std::runtime_error("cannot read " + file_name);
+    std::string                                line, cell;
+    std::vector<std::string>                   names;
+    std::map<std::string, std::vector<double>> columns;
+    std::getline(in, line);
+    for (std::stringstream header(line); std::getline(header, cell, ',');)
+      names.push_back(cell);
+    while (std::getline(in, line))
+      {
+        std::stringstream row(line);
+        for (unsigned int c = 0; c < names.size(); ++c)
+          {
+            if (!std::getline(row, cell, ','))
+              cell.clear();
+            columns[names[c]].push_back(cell.empty() ? std::nan("") : std::stod(cell));
+          }
+      }
+    return columns;
   }
 } // namespace GelMPM

@@ -2,10 +2,13 @@
 #include <gelmpm/particles/property_layout.h>
 #include <gelmpm/simulator/observables.h>
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 
 namespace GelMPM
 {
@@ -25,6 +28,12 @@ namespace GelMPM
                       "1",
                       dealii::Patterns::Integer(0, 2),
                       "Coordinate direction of the thickness (0: x, 1: y, 2: z).");
+    prm.declare_entry("Volume ratio range",
+                      "false",
+                      dealii::Patterns::Bool(),
+                      "Adds the columns J_min, J_mean and J_max: the smallest, mean (weighted "
+                      "by the initial volumes V_0) and largest volume ratio J (dry state to "
+                      "current) over the volume points. A homogeneous state has J_min = J_max.");
     prm.leave_subsection();
   }
 
@@ -37,6 +46,7 @@ namespace GelMPM
     prm.enter_subsection("Observables");
     const auto names    = dealii::Utilities::split_string_list(prm.get("Thickness pieces"), ',');
     thickness_direction = prm.get_integer("Thickness direction");
+    volume_ratio_range  = prm.get_bool("Volume ratio range");
     prm.leave_subsection();
 
     require(thickness_direction < dim,
@@ -69,6 +79,9 @@ namespace GelMPM
     std::vector<std::string> c;
     if (thickness_first >= 0)
       c.push_back("delta_h_over_h0");
+    if (volume_ratio_range)
+      for (const char *name : {"J_min", "J_mean", "J_max"})
+        c.push_back(name);
     return c;
   }
 
@@ -76,10 +89,25 @@ namespace GelMPM
   template <int dim>
   void
   Observables<dim>::evaluate(const dealii::Particles::ParticleHandler<dim> &particles,
+                             const FloryRehnerGel<dim>                     &material,
                              StatisticsFile                                &statistics) const
   {
-    if (thickness_first < 0)
-      return;
+    if (thickness_first >= 0)
+      statistics.set("delta_h_over_h0", thickness_change(particles));
+    if (volume_ratio_range)
+      {
+        const auto J = volume_ratio_statistics(particles, material);
+        statistics.set("J_min", J[0]);
+        statistics.set("J_mean", J[1]);
+        statistics.set("J_max", J[2]);
+      }
+  }
+
+
+  template <int dim>
+  double
+  Observables<dim>::thickness_change(const dealii::Particles::ParticleHandler<dim> &particles) const
+  {
     using Layout              = PropertyLayout<dim>;
     const unsigned int d      = thickness_direction;
     double             sum[2] = {0., 0.}, sum_0[2] = {0., 0.};
@@ -98,7 +126,38 @@ namespace GelMPM
       }
     const double h   = sum[0] / count[0] - sum[1] / count[1];
     const double h_0 = sum_0[0] / count[0] - sum_0[1] / count[1];
-    statistics.set("delta_h_over_h0", h / h_0 - 1.);
+    return h / h_0 - 1.;
+  }
+
+
+  template <int dim>
+  std::array<double, 3>
+  Observables<dim>::volume_ratio_statistics(
+    const dealii::Particles::ParticleHandler<dim> &particles,
+    const FloryRehnerGel<dim>                     &material) const
+  {
+    using Layout = PropertyLayout<dim>;
+    double J_min = std::numeric_limits<double>::max(), J_max = -J_min;
+    double sum_JV = 0., sum_V = 0.;
+    for (const auto &particle : particles)
+      {
+        const auto props = particle.get_properties();
+        if (std::lround(props[Layout::kind]) != static_cast<long>(PointKind::volume))
+          continue;
+        dealii::Tensor<2, dim> F;
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            F[i][j] = props[Layout::F + i * dim + j];
+        const double J = material.J(F);
+        J_min          = std::min(J_min, J);
+        J_max          = std::max(J_max, J);
+        sum_JV += J * props[Layout::measure_0];
+        sum_V += props[Layout::measure_0];
+      }
+    return {dealii::Utilities::MPI::min(J_min, MPI_COMM_WORLD),
+            dealii::Utilities::MPI::sum(sum_JV, MPI_COMM_WORLD) /
+              dealii::Utilities::MPI::sum(sum_V, MPI_COMM_WORLD),
+            dealii::Utilities::MPI::max(J_max, MPI_COMM_WORLD)};
   }
 
 

@@ -188,7 +188,7 @@ namespace GelMPM
         statistics.set("n_dofs_mu", spaces->n_mu_dofs());
         statistics.set("n_active_cells", system->n_active_cells());
       }
-    observables.evaluate(particles, statistics);
+    observables.evaluate(particles, material, statistics);
     statistics.write_row();
   }
 
@@ -402,6 +402,23 @@ namespace GelMPM
   }
 
 
+  template <int dim>
+  int
+  run_scene_file(const std::string &scene_file, const std::vector<ParameterOverride> &overrides)
+  {
+    const auto               structure = SceneStructure::read(scene_file, overrides);
+    dealii::ParameterHandler prm;
+    Simulator<dim>::declare_parameters(prm, structure);
+    read_scene_file(prm, scene_file, overrides);
+    Simulator<dim> simulator(prm, structure, scene_file);
+    return simulator.run();
+  }
+
+
   template class Simulator<2>;
   template class Simulator<3>;
+  template int
+  run_scene_file<2>(const std::string &, const std::vector<ParameterOverride> &);
+  template int
+  run_scene_file<3>(const std::string &, const std::vector<ParameterOverride> &);
 } // namespace GelMPM

@@ -9,41 +9,16 @@
 // - every step converged with the stable signature (n_dofs_u, n_dofs_mu, 0) is not asserted here
 //   (tests/scenes/constrained_swelling_short does).
 #include <gelmpm/core/parameters.h>
+#include <gelmpm/io/statistics_file.h>
 #include <gelmpm/reference/constrained_swelling_1d.h>
-#include <gelmpm/simulator/scene_structure.h>
 #include <gelmpm/simulator/simulator.h>
 
 #include <deal.II/base/mpi.h>
 
 #include <cmath>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
-#include <map>
 #include <sstream>
-
-namespace
-{
-  /** Columns of a CSV file with a header row, by name. */
-  std::map<std::string, std::vector<double>>
-  read_csv(const std::string &file_name)
-  {
-    std::ifstream                              in(file_name);
-    std::string                                line, cell;
-    std::vector<std::string>                   names;
-    std::map<std::string, std::vector<double>> columns;
-    std::getline(in, line);
-    for (std::stringstream header(line); std::getline(header, cell, ',');)
-      names.push_back(cell);
-    while (std::getline(in, line))
-      {
-        std::stringstream row(line);
-        for (unsigned int c = 0; c < names.size() && std::getline(row, cell, ','); ++c)
-          columns[names[c]].push_back(cell.empty() ? std::nan("") : std::stod(cell));
-      }
-    return columns;
-  }
-} // namespace
 
 
 int
@@ -65,19 +40,11 @@ main(int argc, char **argv)
   // The run's own progress output is not part of what this test compares.
   std::ostringstream log;
   auto *const        cout_buffer = std::cout.rdbuf(log.rdbuf());
-  int                status      = 1;
-  {
-    const auto               structure = GelMPM::SceneStructure::read(scene, overrides);
-    dealii::ParameterHandler prm;
-    GelMPM::Simulator<2>::declare_parameters(prm, structure);
-    GelMPM::read_scene_file(prm, scene, overrides);
-    GelMPM::Simulator<2> simulator(prm, structure, scene);
-    status = simulator.run();
-  }
+  const int          status      = GelMPM::run_scene_file<2>(scene, overrides);
   std::cout.rdbuf(cout_buffer);
   std::cout << std::boolalpha << "run completed: " << (status == 0) << std::endl;
 
-  auto                          mpm = read_csv("results/statistics.csv");
+  auto                          mpm = GelMPM::read_statistics("results/statistics.csv");
   GelMPM::ConstrainedSwelling1D reference(GelMPM::ConstrainedSwelling1D::Parameters{});
   const double                  equilibrium = reference.stretch_at(0.) - 1.;
   const auto                   &t           = mpm["t_over_tau_d"];

@@ -45,6 +45,14 @@ namespace GelMPM
     std::vector<std::string>              current;
     std::vector<std::vector<std::string>> rows_;
   };
+
+  /**
+   * Read a statistics.csv written by StatisticsFile back, column by column (empty fields become
+   * NaN). For tests and tools that compare a run with a reference. Throws std::runtime_error if
+   * the file cannot be read.
+   */
+  std::map<std::string, std::vector<double>>
+  read_statistics(const std::string &file_name);
 } // namespace GelMPM
 
 #endif

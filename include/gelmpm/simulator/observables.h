@@ -2,10 +2,12 @@
 #define gelmpm_simulator_observables_h
 
 #include <gelmpm/io/statistics_file.h>
+#include <gelmpm/material/flory_rehner_gel.h>
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/particles/particle_handler.h>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -19,6 +21,9 @@ namespace GelMPM
    *   h(t) is the mean coordinate x_d of the surface points of the first piece minus that of the
    *   second, h_0 the same in the initial configuration, and the column is h/h_0 - 1 (paper §4.1:
    *   Delta h / h_0).
+   * - Volume ratio range (columns J_min, J_mean, J_max): the extremes and the V_0-weighted mean of
+   *   J (dry state to current) over the volume points; the spread measures how far a state is
+   *   from homogeneous (patch tests).
    */
   template <int dim>
   class Observables
@@ -38,12 +43,22 @@ namespace GelMPM
     /** Evaluate every observable on the current material points into @p statistics. */
     void
     evaluate(const dealii::Particles::ParticleHandler<dim> &particles,
+             const FloryRehnerGel<dim>                     &material,
              StatisticsFile                                &statistics) const;
 
   private:
+    /** h/h_0 - 1 between the thickness pieces. */
+    double
+    thickness_change(const dealii::Particles::ParticleHandler<dim> &particles) const;
+    /** (min, V_0-weighted mean, max) of J over the volume points. */
+    std::array<double, 3>
+    volume_ratio_statistics(const dealii::Particles::ParticleHandler<dim> &particles,
+                            const FloryRehnerGel<dim>                     &material) const;
+
     int          thickness_first     = -1;
     int          thickness_second    = -1;
     unsigned int thickness_direction = 1;
+    bool         volume_ratio_range  = false;
   };
 } // namespace GelMPM
 

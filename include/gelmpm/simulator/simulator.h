@@ -4,6 +4,7 @@
 #include <gelmpm/assembly/discretisation.h>
 #include <gelmpm/assembly/mixed_system.h>
 #include <gelmpm/assembly/nitsche_settings.h>
+#include <gelmpm/core/parameters.h>
 #include <gelmpm/io/output_settings.h>
 #include <gelmpm/io/particle_output.h>
 #include <gelmpm/io/statistics_file.h>
@@ -130,6 +131,16 @@ namespace GelMPM
     double       scale_mu         = 1.;
     double       next_output_time = 0.;
   };
+
+
+  /**
+   * Read @p scene_file with @p overrides, check it and run it, as `gelmpm` does: for tests and
+   * tools that run a whole scene in-process. Returns Simulator::run()'s status; throws InputError
+   * on bad input.
+   */
+  template <int dim>
+  int
+  run_scene_file(const std::string &scene_file, const std::vector<ParameterOverride> &overrides);
 } // namespace GelMPM
 
 #endif
