@@ -5,10 +5,7 @@
 #include <deal.II/base/symmetric_tensor.h>
 
 #include <cmath>
-#include <cstdio>
 #include <fstream>
-#include <iomanip>
-#include <sstream>
 #include <stdexcept>
 
 namespace GelMPM
@@ -16,8 +13,8 @@ namespace GelMPM
   template <int dim>
   ParticleOutput<dim>::ParticleOutput(const std::string         &directory,
                                       const FloryRehnerGel<dim> &material)
-    : directory(directory)
-    , material(material)
+    : material(material)
+    , series(directory, "particles")
   {}
 
 
@@ -101,25 +98,15 @@ namespace GelMPM
         patches.push_back(std::move(patch));
       }
 
-    std::ostringstream file_name;
-    file_name << "particles-" << std::setw(5) << std::setfill('0') << series.size() << ".vtu";
     DataOutBase::VtkFlags flags;
     flags.compression_level = DataOutBase::VtkFlags::best_speed;
     {
-      std::ofstream out(directory + "/" + file_name.str());
+      std::ofstream out(series.next_path());
       if (!out)
-        throw std::runtime_error("cannot write " + directory + "/" + file_name.str());
+        throw std::runtime_error("cannot write " + series.next_path());
       DataOutBase::write_vtu(patches, names, ranges, flags, out);
     }
-    series.emplace_back(time, file_name.str());
-
-    // Replace the series file only once it is complete.
-    const std::string pvd = directory + "/particles.pvd";
-    {
-      std::ofstream out(pvd + ".tmp");
-      DataOutBase::write_pvd_record(out, series);
-    }
-    std::rename((pvd + ".tmp").c_str(), pvd.c_str());
+    series.add(time);
   }
 
 
@@ -127,7 +114,7 @@ namespace GelMPM
   const std::vector<std::pair<double, std::string>> &
   ParticleOutput<dim>::times_and_names() const
   {
-    return series;
+    return series.times_and_names();
   }
 
 

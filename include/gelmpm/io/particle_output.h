@@ -1,6 +1,7 @@
 #ifndef gelmpm_io_particle_output_h
 #define gelmpm_io_particle_output_h
 
+#include <gelmpm/io/pvd_series.h>
 #include <gelmpm/material/flory_rehner_gel.h>
 
 #include <deal.II/particles/particle_handler.h>
@@ -13,8 +14,7 @@ namespace GelMPM
 {
   /**
    * @brief Writes the material points for ParaView: one `particles-NNNNN.vtu` per output time and
-   * the series `particles.pvd`, which keeps the simulated times (deal.II write_pvd_record) and is
-   * rewritten (atomically, via a temporary file) after every output.
+   * the series `particles.pvd` with the simulated times (a PvdSeries).
    *
    * Fields per point: kind (PointKind), piece, mu_over_kT, J (dry to current), phi = 1 - 1/J (the
    * solvent volume fraction), measure (V_n or A_n), the principal in-plane stretches of F_n F_0
@@ -37,9 +37,8 @@ namespace GelMPM
     times_and_names() const;
 
   private:
-    std::string                                 directory;
-    const FloryRehnerGel<dim>                  &material;
-    std::vector<std::pair<double, std::string>> series;
+    const FloryRehnerGel<dim> &material;
+    PvdSeries                  series;
   };
 } // namespace GelMPM
 
