@@ -19,6 +19,17 @@ namespace GelMPM
                       "true",
                       Patterns::Bool(),
                       "Write the material points as .vtu files with a .pvd time series.");
+    prm.declare_entry("Write grid",
+                      "false",
+                      Patterns::Bool(),
+                      "Also write the background grid, at the same times as the particles, as "
+                      "grid-NNNNN.vtu files with the series grid.pvd: per cell the "
+                      "classification of the u and the mu space (u_cell_kind, mu_cell_kind: 0 "
+                      "interior, 1 boundary, 2 outer) and the volume points it held "
+                      "(n_volume_points); per vertex the displacement increment of the last "
+                      "converged step (displacement_increment) and mu/(k_BT) (mu_over_kT) from the "
+                      "extended B-spline fields, NaN on cells without material. Off by default: "
+                      "it costs a pass over the points and an evaluation of the fields per step.");
     prm.declare_entry("Interval steps",
                       "1",
                       Patterns::Integer(0),
@@ -44,6 +55,7 @@ namespace GelMPM
     prm.enter_subsection("Output");
     directory       = prm.get("Directory");
     write_particles = prm.get_bool("Write particles");
+    write_grid      = prm.get_bool("Write grid");
     interval_steps  = prm.get_integer("Interval steps");
     interval_time   = prm.get_double("Interval time");
     test_mode       = prm.get_bool("Test mode");

@@ -197,10 +197,26 @@ namespace GelMPM
   void
   Simulator<dim>::write_output()
   {
-    if (!output_settings.write_particles)
-      return;
     dealii::TimerOutput::Scope scope(timer, "output");
-    particle_output->write(particles, time);
+    if (output_settings.write_particles)
+      particle_output->write(particles, time);
+    if (grid_output)
+      grid_output->write(time);
+  }
+
+
+  template <int dim>
+  void
+  Simulator<dim>::record_initial_grid()
+  {
+    grid_volume_points = GridOutput<dim>::count_volume_points(particles, spaces->u_space());
+    std::vector<bool> has_material(grid_volume_points.size());
+    for (unsigned int c = 0; c < has_material.size(); ++c)
+      has_material[c] = grid_volume_points[c] > 0;
+    spaces->reinit(has_material);
+    dealii::Vector<double> solution;
+    initial_guess(solution);
+    grid_output->record(spaces->u(), spaces->mu(), grid_volume_points, solution);
   }
 
 
@@ -251,6 +267,8 @@ namespace GelMPM
   {
     {
       dealii::TimerOutput::Scope scope(timer, "setup");
+      if (grid_output)
+        grid_volume_points = GridOutput<dim>::count_volume_points(particles, spaces->u_space());
       system->setup(particles);
     }
     dealii::Vector<double> solution;
@@ -307,6 +325,8 @@ namespace GelMPM
                                      std::to_string(time + step_dt) +
                                      " tau_d; enlarge the grid ('Background grid/Upper corner')");
           store_mu_coefficients(solution);
+          if (grid_output)
+            grid_output->record(spaces->u(), spaces->mu(), grid_volume_points, solution);
         }
         const bool shortened = step_dt < std::min(dt, time_stepping.cap(time)) * (1. - 1e-12);
         time += step_dt;
@@ -355,6 +375,11 @@ namespace GelMPM
     particle_output = std::make_unique<ParticleOutput<dim>>(output_settings.directory, material);
     mu_coefficients.assign(spaces->mu_space().n_functions(), material.mu_0());
     mu_known.assign(spaces->mu_space().n_functions(), true);
+    if (output_settings.write_grid)
+      {
+        grid_output = std::make_unique<GridOutput<dim>>(output_settings.directory, triangulation);
+        record_initial_grid();
+      }
     open_statistics();
     next_output_time = output_settings.interval_time;
 

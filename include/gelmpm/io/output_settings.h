@@ -19,6 +19,11 @@ namespace GelMPM
     std::string directory = "output";
     /** Write material points (.vtu per output time, .pvd series). */
     bool write_particles = true;
+    /**
+     * Write the background grid (cell classification, volume points per cell, du and mu of the
+     * last converged step; GridOutput) at the same times as the particles.
+     */
+    bool write_grid = false;
     /** Write output every this many converged steps (0: only the initial and final state). */
     unsigned int interval_steps = 1;
     /** Also write output whenever simulated time passes a multiple of this (0: off). */

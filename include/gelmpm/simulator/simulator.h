@@ -5,6 +5,7 @@
 #include <gelmpm/assembly/mixed_system.h>
 #include <gelmpm/assembly/nitsche_settings.h>
 #include <gelmpm/core/parameters.h>
+#include <gelmpm/io/grid_output.h>
 #include <gelmpm/io/output_settings.h>
 #include <gelmpm/io/particle_output.h>
 #include <gelmpm/io/statistics_file.h>
@@ -84,6 +85,9 @@ namespace GelMPM
     record_statistics(const NewtonReport &report, const unsigned int attempts);
     void
     write_output();
+    /** Record the initial grid for GridOutput: cells classified from the points, du = 0, mu_0. */
+    void
+    record_initial_grid();
     /** Chemical-potential coefficients of every control point of the mu grid, from a solution. */
     void
     store_mu_coefficients(const dealii::Vector<double> &solution);
@@ -117,6 +121,8 @@ namespace GelMPM
     std::unique_ptr<DiscreteSpaces<dim>>    spaces;
     std::unique_ptr<MixedSystem<dim>>       system;
     std::unique_ptr<ParticleOutput<dim>>    particle_output;
+    std::unique_ptr<GridOutput<dim>>        grid_output;        // with Output/Write grid
+    std::vector<unsigned int>               grid_volume_points; // per cell, start of the step
     StatisticsFile                          statistics;
     std::vector<double>                     mu_coefficients; // per mu control point
     std::vector<bool>                       mu_known;        // coefficient holds a current value
