@@ -34,6 +34,15 @@ namespace GelMPM
                       "Adds the columns J_min, J_mean and J_max: the smallest, mean (weighted "
                       "by the initial volumes V_0) and largest volume ratio J (dry state to "
                       "current) over the volume points. A homogeneous state has J_min = J_max.");
+    prm.declare_entry("Chemical potential oscillation",
+                      "false",
+                      dealii::Patterns::Bool(),
+                      "Adds the column mu_oscillation: along every row of volume points (points "
+                      "with the same initial y, ordered by initial x), the sum of |second "
+                      "differences| of mu; the mean over rows, divided by the range of mu over "
+                      "all volume points. Spurious (inf-sup) pressure modes make it of order one; "
+                      "a smooth field gives a small value that shrinks with the point spacing "
+                      "(doc/flat_punch.md).");
     prm.leave_subsection();
   }
 
@@ -47,6 +56,7 @@ namespace GelMPM
     const auto names    = dealii::Utilities::split_string_list(prm.get("Thickness pieces"), ',');
     thickness_direction = prm.get_integer("Thickness direction");
     volume_ratio_range  = prm.get_bool("Volume ratio range");
+    mu_oscillation      = prm.get_bool("Chemical potential oscillation");
     prm.leave_subsection();
 
     require(thickness_direction < dim,
@@ -82,6 +92,8 @@ namespace GelMPM
     if (volume_ratio_range)
       for (const char *name : {"J_min", "J_mean", "J_max"})
         c.push_back(name);
+    if (mu_oscillation)
+      c.push_back("mu_oscillation");
     return c;
   }
 
@@ -101,6 +113,8 @@ namespace GelMPM
         statistics.set("J_mean", J[1]);
         statistics.set("J_max", J[2]);
       }
+    if (mu_oscillation)
+      statistics.set("mu_oscillation", chemical_potential_oscillation(particles));
   }
 
 
@@ -158,6 +172,48 @@ namespace GelMPM
             dealii::Utilities::MPI::sum(sum_JV, MPI_COMM_WORLD) /
               dealii::Utilities::MPI::sum(sum_V, MPI_COMM_WORLD),
             dealii::Utilities::MPI::max(J_max, MPI_COMM_WORLD)};
+  }
+
+
+  template <int dim>
+  double
+  Observables<dim>::chemical_potential_oscillation(
+    const dealii::Particles::ParticleHandler<dim> &particles) const
+  {
+    using Layout = PropertyLayout<dim>;
+    // (row coordinate, position along the row, mu) of every volume point. Points are generated at
+    // sub-cell centres of the background grid, so rows of equal initial y exist for any body.
+    std::vector<std::array<double, 3>> points;
+    for (const auto &particle : particles)
+      {
+        const auto props = particle.get_properties();
+        if (std::lround(props[Layout::kind]) == static_cast<long>(PointKind::volume))
+          points.push_back(
+            {{props[Layout::position_0 + dim - 1], props[Layout::position_0], props[Layout::mu]}});
+      }
+    AssertThrow(dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1,
+                dealii::ExcMessage("mu_oscillation is implemented for one MPI rank"));
+    if (points.size() < 3)
+      return 0.;
+    std::sort(points.begin(), points.end());
+    double mu_min = points[0][2], mu_max = points[0][2];
+    for (const auto &p : points)
+      mu_min = std::min(mu_min, p[2]), mu_max = std::max(mu_max, p[2]);
+    const double extent = std::abs(points.back()[0] - points.front()[0]) + 1.;
+
+    double       sum    = 0.;
+    unsigned int n_rows = 0;
+    for (std::size_t first = 0; first < points.size();)
+      {
+        std::size_t end = first + 1;
+        while (end < points.size() && points[end][0] - points[first][0] <= 1e-9 * extent)
+          ++end;
+        for (std::size_t i = first + 1; i + 1 < end; ++i)
+          sum += std::abs(points[i + 1][2] - 2. * points[i][2] + points[i - 1][2]);
+        ++n_rows;
+        first = end;
+      }
+    return (mu_max > mu_min) ? sum / n_rows / (mu_max - mu_min) : 0.;
   }
 
 

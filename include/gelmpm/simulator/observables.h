@@ -24,6 +24,9 @@ namespace GelMPM
    * - Volume ratio range (columns J_min, J_mean, J_max): the extremes and the V_0-weighted mean of
    *   J (dry state to current) over the volume points; the spread measures how far a state is
    *   from homogeneous (patch tests).
+   * - Chemical potential oscillation (column mu_oscillation): the mean over rows of volume points
+   *   (equal initial y) of the summed |second differences| of mu along the row, over the range of
+   *   mu: of order one for the spurious modes of inf-sup unstable pairs (paper §4.2).
    */
   template <int dim>
   class Observables
@@ -54,11 +57,15 @@ namespace GelMPM
     std::array<double, 3>
     volume_ratio_statistics(const dealii::Particles::ParticleHandler<dim> &particles,
                             const FloryRehnerGel<dim>                     &material) const;
+    /** The oscillation measure of mu over the volume points (one MPI rank). */
+    double
+    chemical_potential_oscillation(const dealii::Particles::ParticleHandler<dim> &particles) const;
 
     int          thickness_first     = -1;
     int          thickness_second    = -1;
     unsigned int thickness_direction = 1;
     bool         volume_ratio_range  = false;
+    bool         mu_oscillation      = false;
   };
 } // namespace GelMPM
 
