@@ -177,7 +177,8 @@ namespace GelMPM
                 for (unsigned int d = 0; d < dim; ++d)
                   na0[d] = props[Layout::normal_area_0 + d];
                 r.projector = constraint_projector<dim>(
-                  boundary_conditions.piece(r.piece).displacement_condition, na0 / na0.norm());
+                  boundary_conditions.piece(r.piece).displacement_condition,
+                  na0 / na0.norm());
               }
           }
         const unsigned int cell = (r.kind == PointKind::volume)
@@ -746,6 +747,24 @@ namespace GelMPM
     for (unsigned int i = 0; i < sum.size(); ++i)
       sum[i] = (weight[i] > 0.) ? sum[i] / weight[i] : 0.;
     return sum;
+  }
+
+
+  template <int dim>
+  dealii::FullMatrix<double>
+  MixedSystem<dim>::mu_mass_matrix() const
+  {
+    dealii::FullMatrix<double> mass(spaces_.n_mu_dofs(), spaces_.n_mu_dofs());
+    for (const auto &r : points)
+      if (r.kind == PointKind::volume)
+        {
+          const auto &dofs = spaces_.mu().cell_dofs(blocks[r.block].mu_cell);
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            for (unsigned int j = 0; j < dofs.size(); ++j)
+              mass(dofs[i], dofs[j]) +=
+                r.measure * mu_values[r.mu_offset + i] * mu_values[r.mu_offset + j];
+        }
+    return mass;
   }
 
 

@@ -304,7 +304,10 @@ namespace GelMPM
           {
             // The last assembly of Newton was at the converged state.
             dealii::TimerOutput::Scope scope(timer, "stability");
-            const auto result = analyse_stability(system->matrix(), spaces->n_u_dofs(), stability);
+            const auto                 result =
+              analyse_stability(system->matrix(), spaces->n_u_dofs(), stability, [this]() {
+                return system->mu_mass_matrix();
+              });
             if (stability.inertia)
               {
                 statistics.set("n_pos", result.inertia.n_positive);
@@ -313,6 +316,8 @@ namespace GelMPM
               }
             for (unsigned int k = 0; k < result.eigenvalues.size(); ++k)
               statistics.set("eig_" + std::to_string(k + 1), result.eigenvalues[k]);
+            if (stability.inf_sup)
+              statistics.set("inf_sup", result.inf_sup);
           }
         {
           dealii::TimerOutput::Scope scope(timer, "update");

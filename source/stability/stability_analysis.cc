@@ -1,4 +1,5 @@
 #include <gelmpm/core/input_error.h>
+#include <gelmpm/stability/inf_sup.h>
 #include <gelmpm/stability/schur_eigenvalues.h>
 #include <gelmpm/stability/stability_analysis.h>
 
@@ -22,6 +23,14 @@ namespace GelMPM
       "k > 0: after every converged step, the k eigenvalues of smallest magnitude of "
       "the Schur complement S = K_uu - K_umu K_mumu^-1 K_muu (paper eq. (63)), by "
       "ARPACK in shift-invert mode: columns eig_1 ... eig_k. 0: off.");
+    prm.declare_entry("Inf-sup constant",
+                      "false",
+                      dealii::Patterns::Bool(),
+                      "After every converged step, the discrete inf-sup constant beta_h of the "
+                      "undrained (dt -> 0) saddle-point problem: beta_h^2 is the smallest "
+                      "eigenvalue of K_muu K_uu^-1 K_umu q = beta^2 M q, M the mass matrix of the "
+                      "mu basis (column inf_sup). Dense LAPACK: for grids with at most 8000 "
+                      "displacement unknowns (the inf-sup study of doc/inf_sup.md).");
     prm.leave_subsection();
   }
 
@@ -32,6 +41,7 @@ namespace GelMPM
     prm.enter_subsection("Stability");
     inertia       = prm.get_bool("Inertia");
     n_eigenvalues = prm.get_integer("Schur eigenvalues");
+    inf_sup       = prm.get_bool("Inf-sup constant");
     prm.leave_subsection();
   }
 
@@ -39,7 +49,7 @@ namespace GelMPM
   bool
   StabilitySettings::enabled() const
   {
-    return inertia || n_eigenvalues > 0;
+    return inertia || n_eigenvalues > 0 || inf_sup;
   }
 
 
@@ -51,22 +61,30 @@ namespace GelMPM
       c = {"n_pos", "n_neg", "n_zero"};
     for (unsigned int k = 0; k < n_eigenvalues; ++k)
       c.push_back("eig_" + std::to_string(k + 1));
+    if (inf_sup)
+      c.push_back("inf_sup");
     return c;
   }
 
 
   StabilityReport
-  analyse_stability(const dealii::TrilinosWrappers::SparseMatrix &K,
-                    const unsigned int                            n_u,
-                    const StabilitySettings                      &settings)
+  analyse_stability(const dealii::TrilinosWrappers::SparseMatrix      &K,
+                    const unsigned int                                 n_u,
+                    const StabilitySettings                           &settings,
+                    const std::function<dealii::FullMatrix<double>()> &mass_mu)
   {
-    StabilityReport        report;
-    SymmetricFactorization factorization;
-    factorization.factorize(K);
-    report.inertia = factorization.inertia();
-    if (settings.n_eigenvalues > 0)
-      report.eigenvalues =
-        smallest_schur_eigenvalues(factorization, n_u, settings.n_eigenvalues).values;
+    StabilityReport report;
+    if (settings.inertia || settings.n_eigenvalues > 0)
+      {
+        SymmetricFactorization factorization;
+        factorization.factorize(K);
+        report.inertia = factorization.inertia();
+        if (settings.n_eigenvalues > 0)
+          report.eigenvalues =
+            smallest_schur_eigenvalues(factorization, n_u, settings.n_eigenvalues).values;
+      }
+    if (settings.inf_sup)
+      report.inf_sup = discrete_inf_sup_constant(K, n_u, mass_mu());
     return report;
   }
 } // namespace GelMPM

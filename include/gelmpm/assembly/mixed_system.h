@@ -9,6 +9,7 @@
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/particles/particle_handler.h>
@@ -110,6 +111,14 @@ namespace GelMPM
      */
     std::vector<double>
     mu_from_points() const;
+
+    /**
+     * The mass matrix of the chemical-potential basis integrated on the volume points,
+     * M_ij = sum_p V_p Ñ_i(x_p) Ñ_j(x_p), dense: for analyses of small discretisations (the
+     * inf-sup constant).
+     */
+    dealii::FullMatrix<double>
+    mu_mass_matrix() const;
 
     /** Number of material points of the last setup(), and how many take part in assembly. */
     unsigned int

@@ -4,8 +4,10 @@
 #include <gelmpm/stability/symmetric_factorization.h>
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -20,11 +22,14 @@ namespace GelMPM
    *   (n_dofs_u, n_dofs_mu, 0).
    * - Schur eigenvalues: the k eigenvalues of smallest magnitude of the Schur complement of
    *   eq. (63) (columns eig_1 ... eig_k), by ARPACK through the same factorisation.
+   * - Inf-sup constant: beta_h of the undrained saddle-point problem (column inf_sup), see
+   *   discrete_inf_sup_constant(); dense, for small discretisations.
    */
   struct StabilitySettings
   {
     bool         inertia       = false;
     unsigned int n_eigenvalues = 0;
+    bool         inf_sup       = false;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
@@ -47,17 +52,21 @@ namespace GelMPM
   {
     Inertia             inertia;
     std::vector<double> eigenvalues;
+    double              inf_sup = 0.;
   };
 
 
   /**
-   * Factorise the symmetric tangent @p K (displacement unknowns first, @p n_u of them) and compute
-   * what @p settings ask for.
+   * Compute what @p settings ask for at the symmetric tangent @p K (displacement unknowns first,
+   * @p n_u of them): the LDL^T factorisation for the inertia and the Schur eigenvalues, and, with
+   * the mass matrix of the mu basis that @p mass_mu returns (called only then), the inf-sup
+   * constant.
    */
   StabilityReport
-  analyse_stability(const dealii::TrilinosWrappers::SparseMatrix &K,
-                    const unsigned int                            n_u,
-                    const StabilitySettings                      &settings);
+  analyse_stability(const dealii::TrilinosWrappers::SparseMatrix      &K,
+                    const unsigned int                                 n_u,
+                    const StabilitySettings                           &settings,
+                    const std::function<dealii::FullMatrix<double>()> &mass_mu);
 } // namespace GelMPM
 
 #endif
