@@ -1,5 +1,6 @@
 #include <gelmpm/core/input_error.h>
 #include <gelmpm/particles/material_point_generator.h>
+#include <gelmpm/particles/point_location.h>
 
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/tria.h>
@@ -66,22 +67,7 @@ namespace GelMPM
   {
     using Layout = PropertyLayout<dim>;
 
-    // Cells by lexicographic index (the active cell index of the structured grid).
-    std::vector<typename dealii::Triangulation<dim>::active_cell_iterator> cells(
-      tria.n_active_cells());
-    for (const auto &cell : tria.active_cell_iterators())
-      cells[cell->active_cell_index()] = cell;
-    const auto locate = [&](const dealii::Point<dim> &p) {
-      unsigned int flat = 0, stride = 1;
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          const double s = std::floor((p[d] - grid.lower[d]) / grid.cell_size(d));
-          const auto   i = static_cast<unsigned int>(std::clamp(s, 0., grid.n_cells[d] - 1.));
-          flat += i * stride;
-          stride *= grid.n_cells[d];
-        }
-      return cells[flat];
-    };
+    const GridCellLocator<dim> locator(grid, tria);
 
     std::vector<double>           properties(Layout::n_properties, 0.);
     dealii::types::particle_index next_id = 0;
@@ -91,11 +77,8 @@ namespace GelMPM
       for (unsigned int i = 0; i < dim; ++i)
         for (unsigned int j = 0; j < dim; ++j)
           properties[Layout::F + i * dim + j] = (i == j) ? lambda_0 : 0.;
-      properties[Layout::mu]  = mu_0;
-      const auto         cell = locate(x);
-      dealii::Point<dim> reference;
-      for (unsigned int d = 0; d < dim; ++d)
-        reference[d] = (x[d] - cell->vertex(0)[d]) / grid.cell_size(d);
+      properties[Layout::mu]       = mu_0;
+      const auto [cell, reference] = locator.locate(x);
       particles.insert_particle(x, reference, next_id++, cell, dealii::make_array_view(properties));
     };
 

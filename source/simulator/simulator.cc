@@ -1,5 +1,6 @@
 #include <gelmpm/core/input_error.h>
 #include <gelmpm/core/version.h>
+#include <gelmpm/particles/point_location.h>
 #include <gelmpm/simulator/simulator.h>
 
 #include <deal.II/base/mpi.h>
@@ -323,7 +324,7 @@ namespace GelMPM
           dealii::TimerOutput::Scope scope(timer, "update");
           const auto                 n_before = particles.n_global_particles();
           system->update_particles(solution);
-          particles.sort_particles_into_subdomains_and_cells();
+          sort_into_cells(particles, grid, triangulation);
           if (particles.n_global_particles() != n_before)
             throw std::runtime_error(std::to_string(n_before - particles.n_global_particles()) +
                                      " material point(s) left the background grid at t = " +

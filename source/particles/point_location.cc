@@ -1,0 +1,95 @@
+#include <gelmpm/particles/point_location.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace GelMPM
+{
+  template <int dim>
+  GridCellLocator<dim>::GridCellLocator(const BackgroundGrid<dim>        &grid,
+                                        const dealii::Triangulation<dim> &triangulation)
+    : grid(grid)
+    , cells(triangulation.n_active_cells())
+  {
+    // The active cell index of the structured grid is lexicographic, x fastest.
+    for (const auto &cell : triangulation.active_cell_iterators())
+      cells[cell->active_cell_index()] = cell;
+  }
+
+
+  template <int dim>
+  std::pair<typename dealii::Triangulation<dim>::active_cell_iterator, dealii::Point<dim>>
+  GridCellLocator<dim>::locate(const dealii::Point<dim> &p) const
+  {
+    unsigned int flat = 0, stride = 1;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        const double s = std::floor((p[d] - grid.lower[d]) / grid.cell_size(d));
+        const auto   i = static_cast<unsigned int>(std::clamp(s, 0., grid.n_cells[d] - 1.));
+        flat += i * stride;
+        stride *= grid.n_cells[d];
+      }
+    const auto         cell = cells[flat];
+    dealii::Point<dim> reference;
+    for (unsigned int d = 0; d < dim; ++d)
+      reference[d] = std::clamp((p[d] - cell->vertex(0)[d]) / grid.cell_size(d), 0., 1.);
+    return {cell, reference};
+  }
+
+
+  template <int dim>
+  unsigned int
+  sort_into_cells(dealii::Particles::ParticleHandler<dim> &particles,
+                  const BackgroundGrid<dim>               &grid,
+                  const dealii::Triangulation<dim>        &triangulation)
+  {
+    struct Lost
+    {
+      dealii::Point<dim>            location;
+      dealii::types::particle_index id;
+      std::vector<double>           properties;
+    };
+    std::vector<Lost> lost;
+    {
+      const auto connection = particles.signals.particle_lost.connect(
+        [&](const typename dealii::Particles::ParticleIterator<dim> &particle,
+            const typename dealii::Triangulation<dim>::active_cell_iterator &) {
+          if (grid.contains(particle->get_location()))
+            {
+              const auto properties = particle->get_properties();
+              lost.push_back({particle->get_location(),
+                              particle->get_id(),
+                              std::vector<double>(properties.begin(), properties.end())});
+            }
+        });
+      particles.sort_particles_into_subdomains_and_cells();
+      connection.disconnect();
+    }
+    if (lost.empty())
+      return 0;
+    const GridCellLocator<dim> locator(grid, triangulation);
+    for (const auto &point : lost)
+      {
+        const auto [cell, reference] = locator.locate(point.location);
+        particles.insert_particle(point.location,
+                                  reference,
+                                  point.id,
+                                  cell,
+                                  dealii::make_array_view(point.properties));
+      }
+    particles.update_cached_numbers();
+    return lost.size();
+  }
+
+
+  template class GridCellLocator<2>;
+  template class GridCellLocator<3>;
+  template unsigned int
+  sort_into_cells(dealii::Particles::ParticleHandler<2> &,
+                  const BackgroundGrid<2> &,
+                  const dealii::Triangulation<2> &);
+  template unsigned int
+  sort_into_cells(dealii::Particles::ParticleHandler<3> &,
+                  const BackgroundGrid<3> &,
+                  const dealii::Triangulation<3> &);
+} // namespace GelMPM
