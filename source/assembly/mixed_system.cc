@@ -655,31 +655,67 @@ namespace GelMPM
 
   template <int dim>
   void
+  MixedSystem<dim>::fields_at_point(const PointRecord            &r,
+                                    const dealii::Vector<double> &solution,
+                                    Tensor<1, dim>               &du,
+                                    Tensor<2, dim>               &delta_F,
+                                    double                       &mu) const
+  {
+    const Block &b      = blocks[r.block];
+    const auto  &u_dofs = spaces_.u().cell_dofs(b.u_cell);
+    const auto  &m_dofs = spaces_.mu().cell_dofs(b.mu_cell);
+    const auto   n_u    = spaces_.n_u_dofs();
+    delta_F             = dealii::unit_symmetric_tensor<dim>();
+    du                  = Tensor<1, dim>();
+    for (unsigned int a = 0; a < u_dofs.size(); ++a)
+      {
+        Tensor<1, dim> coefficient;
+        for (unsigned int c = 0; c < dim; ++c)
+          coefficient[c] = solution(dim * u_dofs[a] + c);
+        delta_F += outer(coefficient, u_gradients[r.u_offset + a]);
+        du += u_values[r.u_offset + a] * coefficient;
+      }
+    mu = 0.;
+    for (unsigned int j = 0; j < m_dofs.size(); ++j)
+      mu += mu_values[r.mu_offset + j] * solution(n_u + m_dofs[j]);
+  }
+
+
+  template <int dim>
+  std::pair<double, double>
+  MixedSystem<dim>::dirichlet_errors(const dealii::Vector<double> &solution) const
+  {
+    double u_error = 0., mu_error = 0.;
+    for (const auto &r : points)
+      {
+        if (r.kind == PointKind::volume || r.piece < 0)
+          continue;
+        Tensor<1, dim> du;
+        Tensor<2, dim> delta_F;
+        double         mu;
+        fields_at_point(r, solution, du, delta_F, mu);
+        if (r.projector.norm_square() > 0.)
+          u_error = std::max(u_error, (r.projector * (r.u_n + du - r.u_bar)).norm());
+        if (boundary_conditions.piece(r.piece).chemical_potential_prescribed())
+          mu_error = std::max(mu_error, std::abs(mu - r.mu_bar));
+      }
+    return {u_error, mu_error};
+  }
+
+
+  template <int dim>
+  void
   MixedSystem<dim>::update_particles(const dealii::Vector<double> &solution)
   {
-    using Layout                    = PropertyLayout<dim>;
-    const unsigned int n_u          = spaces_.n_u_dofs();
-    const double       lambda_0_dim = std::pow(material.lambda_0(), dim);
+    using Layout              = PropertyLayout<dim>;
+    const double lambda_0_dim = std::pow(material.lambda_0(), dim);
     for (unsigned int p = 0; p < points.size(); ++p)
       {
-        const PointRecord &r      = points[p];
-        const Block       &b      = blocks[r.block];
-        const auto        &u_dofs = spaces_.u().cell_dofs(b.u_cell);
-        const auto        &m_dofs = spaces_.mu().cell_dofs(b.mu_cell);
-
-        Tensor<2, dim> delta_F = dealii::unit_symmetric_tensor<dim>();
-        Tensor<1, dim> du;
-        for (unsigned int a = 0; a < u_dofs.size(); ++a)
-          {
-            Tensor<1, dim> coefficient;
-            for (unsigned int c = 0; c < dim; ++c)
-              coefficient[c] = solution(dim * u_dofs[a] + c);
-            delta_F += outer(coefficient, u_gradients[r.u_offset + a]);
-            du += u_values[r.u_offset + a] * coefficient;
-          }
-        double mu = 0.;
-        for (unsigned int j = 0; j < m_dofs.size(); ++j)
-          mu += mu_values[r.mu_offset + j] * solution(n_u + m_dofs[j]);
+        const PointRecord &r = points[p];
+        Tensor<1, dim>     du;
+        Tensor<2, dim>     delta_F;
+        double             mu;
+        fields_at_point(r, solution, du, delta_F, mu);
 
         const Tensor<2, dim> F_p = delta_F * r.F_p;
         // J_n relative to the initial configuration (the out-of-plane stretch stays lambda_0).

@@ -34,6 +34,14 @@ namespace GelMPM
                       "Adds the columns J_min, J_mean and J_max: the smallest, mean (weighted "
                       "by the initial volumes V_0) and largest volume ratio J (dry state to "
                       "current) over the volume points. A homogeneous state has J_min = J_max.");
+    prm.declare_entry("Boundary condition error",
+                      "false",
+                      dealii::Patterns::Bool(),
+                      "Adds the columns u_bc_error and mu_bc_error: after every converged step, "
+                      "the largest violation of the weakly imposed (Nitsche) conditions over the "
+                      "surface points, |Pi (u - ubar)| for prescribed displacements (in the "
+                      "scene's length unit) and |mu - mubar|/k_BT for prescribed chemical "
+                      "potentials. Empty in the initial row.");
     prm.declare_entry("Chemical potential oscillation",
                       "false",
                       dealii::Patterns::Bool(),
@@ -57,6 +65,7 @@ namespace GelMPM
     thickness_direction = prm.get_integer("Thickness direction");
     volume_ratio_range  = prm.get_bool("Volume ratio range");
     mu_oscillation      = prm.get_bool("Chemical potential oscillation");
+    boundary_error      = prm.get_bool("Boundary condition error");
     prm.leave_subsection();
 
     require(thickness_direction < dim,
@@ -94,15 +103,19 @@ namespace GelMPM
         c.push_back(name);
     if (mu_oscillation)
       c.push_back("mu_oscillation");
+    if (boundary_error)
+      for (const char *name : {"u_bc_error", "mu_bc_error"})
+        c.push_back(name);
     return c;
   }
 
 
   template <int dim>
   void
-  Observables<dim>::evaluate(const dealii::Particles::ParticleHandler<dim> &particles,
-                             const FloryRehnerGel<dim>                     &material,
-                             StatisticsFile                                &statistics) const
+  Observables<dim>::evaluate(const dealii::Particles::ParticleHandler<dim>    &particles,
+                             const FloryRehnerGel<dim>                        &material,
+                             const std::function<std::pair<double, double>()> &dirichlet_errors,
+                             StatisticsFile                                   &statistics) const
   {
     if (thickness_first >= 0)
       statistics.set("delta_h_over_h0", thickness_change(particles));
@@ -115,6 +128,12 @@ namespace GelMPM
       }
     if (mu_oscillation)
       statistics.set("mu_oscillation", chemical_potential_oscillation(particles));
+    if (boundary_error && dirichlet_errors)
+      {
+        const auto [u_error, mu_error] = dirichlet_errors();
+        statistics.set("u_bc_error", u_error);
+        statistics.set("mu_bc_error", mu_error);
+      }
   }
 
 
@@ -168,10 +187,10 @@ namespace GelMPM
         sum_JV += J * props[Layout::measure_0];
         sum_V += props[Layout::measure_0];
       }
-    return {dealii::Utilities::MPI::min(J_min, MPI_COMM_WORLD),
-            dealii::Utilities::MPI::sum(sum_JV, MPI_COMM_WORLD) /
-              dealii::Utilities::MPI::sum(sum_V, MPI_COMM_WORLD),
-            dealii::Utilities::MPI::max(J_max, MPI_COMM_WORLD)};
+    return {{dealii::Utilities::MPI::min(J_min, MPI_COMM_WORLD),
+             dealii::Utilities::MPI::sum(sum_JV, MPI_COMM_WORLD) /
+               dealii::Utilities::MPI::sum(sum_V, MPI_COMM_WORLD),
+             dealii::Utilities::MPI::max(J_max, MPI_COMM_WORLD)}};
   }
 
 

@@ -173,7 +173,9 @@ namespace GelMPM
 
   template <int dim>
   void
-  Simulator<dim>::record_statistics(const NewtonReport &report, const unsigned int attempts)
+  Simulator<dim>::record_statistics(const NewtonReport           &report,
+                                    const unsigned int            attempts,
+                                    const dealii::Vector<double> *solution)
   {
     statistics.set("step", step);
     statistics.set("time", time * tau_d);
@@ -189,7 +191,12 @@ namespace GelMPM
         statistics.set("n_dofs_mu", spaces->n_mu_dofs());
         statistics.set("n_active_cells", system->n_active_cells());
       }
-    observables.evaluate(particles, material, statistics);
+    std::function<std::pair<double, double>()> dirichlet_errors;
+    if (solution != nullptr)
+      dirichlet_errors = [&]() {
+        return system->dirichlet_errors(*solution);
+      };
+    observables.evaluate(particles, material, dirichlet_errors, statistics);
     statistics.write_row();
   }
 
@@ -319,6 +326,8 @@ namespace GelMPM
               statistics.set("eig_" + std::to_string(k + 1), result.eigenvalues[k]);
             if (stability.inf_sup)
               statistics.set("inf_sup", result.inf_sup);
+            if (stability.condition)
+              statistics.set("condition_number", result.condition_number);
           }
         {
           dealii::TimerOutput::Scope scope(timer, "update");
@@ -338,7 +347,7 @@ namespace GelMPM
         time += step_dt;
         ++step;
         statistics.set("dt", step_dt);
-        record_statistics(report, attempt);
+        record_statistics(report, attempt, &solution);
 
         pcout << "  step " << std::setw(5) << step << "  t/tau_d = " << std::setw(11)
               << std::setprecision(5) << time << "  dt = " << std::setw(10) << step_dt
@@ -390,7 +399,7 @@ namespace GelMPM
     next_output_time = output_settings.interval_time;
 
     statistics.set("dt", 0.);
-    record_statistics(NewtonReport(), 0);
+    record_statistics(NewtonReport(), 0, nullptr);
     write_output();
 
     double dt     = time_stepping.initial_step;

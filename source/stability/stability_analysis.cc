@@ -1,4 +1,5 @@
 #include <gelmpm/core/input_error.h>
+#include <gelmpm/stability/condition_number.h>
 #include <gelmpm/stability/inf_sup.h>
 #include <gelmpm/stability/schur_eigenvalues.h>
 #include <gelmpm/stability/stability_analysis.h>
@@ -31,6 +32,12 @@ namespace GelMPM
                       "eigenvalue of K_muu K_uu^-1 K_umu q = beta^2 M q, M the mass matrix of the "
                       "mu basis (column inf_sup). Dense LAPACK: for grids with at most 8000 "
                       "displacement unknowns (the inf-sup study of doc/inf_sup.md).");
+    prm.declare_entry("Condition number",
+                      "false",
+                      dealii::Patterns::Bool(),
+                      "After every converged step, LAPACK's estimate of the 1-norm condition "
+                      "number of the tangent (column condition_number). Dense: for grids with at "
+                      "most 10000 unknowns in all (the Nitsche penalty study of doc/extremes.md).");
     prm.leave_subsection();
   }
 
@@ -42,6 +49,7 @@ namespace GelMPM
     inertia       = prm.get_bool("Inertia");
     n_eigenvalues = prm.get_integer("Schur eigenvalues");
     inf_sup       = prm.get_bool("Inf-sup constant");
+    condition     = prm.get_bool("Condition number");
     prm.leave_subsection();
   }
 
@@ -49,7 +57,7 @@ namespace GelMPM
   bool
   StabilitySettings::enabled() const
   {
-    return inertia || n_eigenvalues > 0 || inf_sup;
+    return inertia || n_eigenvalues > 0 || inf_sup || condition;
   }
 
 
@@ -63,6 +71,8 @@ namespace GelMPM
       c.push_back("eig_" + std::to_string(k + 1));
     if (inf_sup)
       c.push_back("inf_sup");
+    if (condition)
+      c.push_back("condition_number");
     return c;
   }
 
@@ -85,6 +95,8 @@ namespace GelMPM
       }
     if (settings.inf_sup)
       report.inf_sup = discrete_inf_sup_constant(K, n_u, mass_mu());
+    if (settings.condition)
+      report.condition_number = condition_number_estimate(K);
     return report;
   }
 } // namespace GelMPM

@@ -14,6 +14,7 @@
 #include <deal.II/lac/vector.h>
 #include <deal.II/particles/particle_handler.h>
 
+#include <utility>
 #include <vector>
 
 namespace GelMPM
@@ -113,6 +114,15 @@ namespace GelMPM
     mu_from_points() const;
 
     /**
+     * How well the converged @p solution meets the weakly imposed conditions: the largest
+     * |Pi (u - ubar)| over surface points with a prescribed displacement (component), and the
+     * largest |mu - mubar| (in k_BT) over surface points with a prescribed chemical potential, at
+     * the boundary values of the last set_boundary_values().
+     */
+    std::pair<double, double>
+    dirichlet_errors(const dealii::Vector<double> &solution) const;
+
+    /**
      * The mass matrix of the chemical-potential basis integrated on the volume points,
      * M_ij = sum_p V_p Ñ_i(x_p) Ñ_j(x_p), dense: for analyses of small discretisations (the
      * inf-sup constant).
@@ -172,6 +182,14 @@ namespace GelMPM
                    const bool                    with_matrix,
                    ScratchData                  &scratch,
                    CopyData                     &copy) const;
+
+    /** du, Delta F = I + grad_n du and mu at the point @p r for the unknowns @p solution. */
+    void
+    fields_at_point(const PointRecord            &r,
+                    const dealii::Vector<double> &solution,
+                    dealii::Tensor<1, dim>       &du,
+                    dealii::Tensor<2, dim>       &delta_F,
+                    double                       &mu) const;
 
     void
     add_volume_point(const PointRecord &point,

@@ -8,7 +8,9 @@
 #include <deal.II/particles/particle_handler.h>
 
 #include <array>
+#include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace GelMPM
@@ -27,6 +29,8 @@ namespace GelMPM
    * - Chemical potential oscillation (column mu_oscillation): the mean over rows of volume points
    *   (equal initial y) of the summed |second differences| of mu along the row, over the range of
    *   mu: of order one for the spurious modes of inf-sup unstable pairs (paper §4.2).
+   * - Boundary condition error (columns u_bc_error, mu_bc_error): the largest violation of the
+   *   weakly imposed conditions over the surface points (MixedSystem::dirichlet_errors()).
    */
   template <int dim>
   class Observables
@@ -43,11 +47,16 @@ namespace GelMPM
     std::vector<std::string>
     columns() const;
 
-    /** Evaluate every observable on the current material points into @p statistics. */
+    /**
+     * Evaluate every observable on the current material points into @p statistics;
+     * @p dirichlet_errors gives the boundary-condition errors of the converged step (empty in the
+     * initial state) and is called only when they are asked for.
+     */
     void
-    evaluate(const dealii::Particles::ParticleHandler<dim> &particles,
-             const FloryRehnerGel<dim>                     &material,
-             StatisticsFile                                &statistics) const;
+    evaluate(const dealii::Particles::ParticleHandler<dim>    &particles,
+             const FloryRehnerGel<dim>                        &material,
+             const std::function<std::pair<double, double>()> &dirichlet_errors,
+             StatisticsFile                                   &statistics) const;
 
   private:
     /** h/h_0 - 1 between the thickness pieces. */
@@ -66,6 +75,7 @@ namespace GelMPM
     unsigned int thickness_direction = 1;
     bool         volume_ratio_range  = false;
     bool         mu_oscillation      = false;
+    bool         boundary_error      = false;
   };
 } // namespace GelMPM
 

@@ -81,8 +81,11 @@ namespace GelMPM
      */
     bool
     advance(double &dt);
+    /** One row of statistics.csv; @p solution is the converged step's (nullptr initially). */
     void
-    record_statistics(const NewtonReport &report, const unsigned int attempts);
+    record_statistics(const NewtonReport           &report,
+                      const unsigned int            attempts,
+                      const dealii::Vector<double> *solution);
     void
     write_output();
     /** Record the initial grid for GridOutput: cells classified from the points, du = 0, mu_0. */

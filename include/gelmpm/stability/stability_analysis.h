@@ -24,12 +24,15 @@ namespace GelMPM
    *   eq. (63) (columns eig_1 ... eig_k), by ARPACK through the same factorisation.
    * - Inf-sup constant: beta_h of the undrained saddle-point problem (column inf_sup), see
    *   discrete_inf_sup_constant(); dense, for small discretisations.
+   * - Condition number: LAPACK's 1-norm estimate for the tangent (column condition_number);
+   *   dense, for small discretisations.
    */
   struct StabilitySettings
   {
     bool         inertia       = false;
     unsigned int n_eigenvalues = 0;
     bool         inf_sup       = false;
+    bool         condition     = false;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
@@ -52,7 +55,8 @@ namespace GelMPM
   {
     Inertia             inertia;
     std::vector<double> eigenvalues;
-    double              inf_sup = 0.;
+    double              inf_sup          = 0.;
+    double              condition_number = 0.;
   };
 
 

@@ -1,0 +1,34 @@
+#include <gelmpm/stability/condition_number.h>
+
+#include <deal.II/lac/lapack_full_matrix.h>
+
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace GelMPM
+{
+  double
+  condition_number_estimate(const dealii::TrilinosWrappers::SparseMatrix &K)
+  {
+    if (K.m() > 10000)
+      throw std::runtime_error("the condition number is estimated with a dense matrix; " +
+                               std::to_string(K.m()) +
+                               " unknowns are too many (at most 10000): use a coarser grid");
+    dealii::LAPACKFullMatrix<double> dense(K.m(), K.n());
+    for (unsigned int row = 0; row < K.m(); ++row)
+      for (auto entry = K.begin(row); entry != K.end(row); ++entry)
+        dense(row, entry->column()) = entry->value();
+    const double norm = dense.l1_norm();
+    try
+      {
+        dense.compute_lu_factorization();
+      }
+    catch (const std::exception &)
+      {
+        return std::numeric_limits<double>::infinity();
+      }
+    const double reciprocal = dense.reciprocal_condition_number(norm);
+    return reciprocal > 0. ? 1. / reciprocal : std::numeric_limits<double>::infinity();
+  }
+} // namespace GelMPM
