@@ -93,7 +93,7 @@ except ImportError:  # older VTK layout
                  "run it with /usr/bin/python3")
 
 
-# (directory name, label, point spacing in H: h_u / 5)
+# (directory name under --study, label)
 RUNS = [
     ("q2_q2", "(i) Q2–Q2"),
     ("q3_q2", "(ii) Q3–Q2"),
