@@ -168,6 +168,20 @@ namespace GelMPM
     for (const auto &c : observables.columns())
       columns.push_back(c);
     statistics.open(output_settings.directory + "/statistics.csv", columns);
+    if (stability.inertia)
+      {
+        std::vector<std::string> bracket_columns = {"t_stable",
+                                                    "t_unstable",
+                                                    "n_dofs_u",
+                                                    "n_dofs_mu",
+                                                    "n_neg_stable",
+                                                    "n_neg_unstable",
+                                                    "n_zero_unstable"};
+        if (stability.n_eigenvalues > 0)
+          for (const char *name : {"eig_1_stable", "eig_1_unstable"})
+            bracket_columns.push_back(name);
+        stability_file.open(output_settings.directory + "/stability.csv", bracket_columns);
+      }
   }
 
 
@@ -198,6 +212,99 @@ namespace GelMPM
       };
     observables.evaluate(particles, material, dirichlet_errors, statistics);
     statistics.write_row();
+  }
+
+
+  template <int dim>
+  void
+  Simulator<dim>::record_stability(const StabilityReport &result)
+  {
+    if (stability.inertia)
+      {
+        statistics.set("n_pos", result.inertia.n_positive);
+        statistics.set("n_neg", result.inertia.n_negative);
+        statistics.set("n_zero", result.inertia.n_zero);
+      }
+    for (unsigned int k = 0; k < result.eigenvalues.size(); ++k)
+      statistics.set("eig_" + std::to_string(k + 1), result.eigenvalues[k]);
+    if (stability.inf_sup)
+      statistics.set("inf_sup", result.inf_sup);
+    if (stability.condition)
+      statistics.set("condition_number", result.condition_number);
+  }
+
+
+  template <int dim>
+  double
+  Simulator<dim>::bisection_step() const
+  {
+    const double remaining = bisection.unstable_time - time;
+    // Half the bracket while it is wider than the tolerance; then the step onto its unstable end.
+    return (remaining > stability.bisection_tolerance) ? 0.5 * remaining : remaining;
+  }
+
+
+  template <int dim>
+  bool
+  Simulator<dim>::narrow_instability_bracket(const StabilityReport &result, const double step_dt)
+  {
+    if (!stability.inertia)
+      return false;
+    const bool stable = result.inertia.n_positive == spaces->n_u_dofs() &&
+                        result.inertia.n_negative == spaces->n_mu_dofs() &&
+                        result.inertia.n_zero == 0;
+    const bool was_stable = last_stable;
+    if (stable && bisection.active && time + step_dt >= bisection.unstable_time * (1. - 1e-12))
+      {
+        // The step onto the unstable end of the bracket is stable when taken shorter: the
+        // signature depends on the step through K_mumu (~ dt), so the bracket closes here.
+        bisection.active = false;
+        pcout << "    with shorter steps the state at t = " << time + step_dt
+              << " is stable: the loss of stability depends on the step size; bracketing ended"
+              << std::endl;
+      }
+    if (stable || !was_stable)
+      {
+        last_stable         = stable;
+        last_stable_inertia = result.inertia;
+        last_eigenvalue     = result.eigenvalues.empty() ? 0. : result.eigenvalues[0];
+        return false;
+      }
+
+    // The signature left (n_u, n_mu, 0) within this step: the critical time lies in
+    // (time, time + step_dt]. Retake the step from the last stable state until the bracket is
+    // narrower than the tolerance, then accept the unstable step and report the bracket.
+    const double unstable_time = time + step_dt;
+    if (stability.bisection_tolerance > 0. && step_dt > stability.bisection_tolerance)
+      {
+        if (!bisection.active)
+          pcout << "    the signature leaves (n_u, n_mu, 0) between t = " << time << " and "
+                << unstable_time << "; bisecting to 'Stability/Bisection tolerance' = "
+                << stability.bisection_tolerance << std::endl;
+        bisection.active        = true;
+        bisection.unstable_time = unstable_time;
+        return true;
+      }
+    bisection.active = false;
+    last_stable      = false;
+    pcout << "    loss of stability between t/tau_d = " << time << " (stable) and " << unstable_time
+          << ": signature (" << result.inertia.n_positive << ", " << result.inertia.n_negative
+          << ", " << result.inertia.n_zero << "), expected (" << spaces->n_u_dofs() << ", "
+          << spaces->n_mu_dofs() << ", 0)" << std::endl;
+    stability_file.set("t_stable", time);
+    stability_file.set("t_unstable", unstable_time);
+    stability_file.set("n_neg_stable", last_stable_inertia.n_negative);
+    stability_file.set("n_neg_unstable", result.inertia.n_negative);
+    stability_file.set("n_zero_unstable", result.inertia.n_zero);
+    stability_file.set("n_dofs_u", spaces->n_u_dofs());
+    stability_file.set("n_dofs_mu", spaces->n_mu_dofs());
+    if (!result.eigenvalues.empty())
+      {
+        stability_file.set("eig_1_stable", last_eigenvalue);
+        stability_file.set("eig_1_unstable", result.eigenvalues[0]);
+      }
+    stability_file.write_row();
+    return false;
   }
 
 
@@ -282,7 +389,8 @@ namespace GelMPM
     dealii::Vector<double> solution;
     for (unsigned int attempt = 1;; ++attempt)
       {
-        const double step_dt = time_stepping.next_step(time, dt);
+        const double step_dt =
+          bisection.active ? bisection_step() : time_stepping.next_step(time, dt);
         system->set_boundary_values(time + step_dt);
         initial_guess(solution);
         const NewtonReport report = solve_newton(*system,
@@ -297,6 +405,12 @@ namespace GelMPM
           {
             pcout << "    step " << step + 1 << " at t = " << time << " with dt = " << step_dt
                   << " failed (" << report.failure << ")";
+            if (bisection.active)
+              {
+                // Newton fails inside the bracket: give the bisection up, cut steps as usual.
+                bisection.active = false;
+                pcout << "; bracketing of the loss of stability abandoned";
+              }
             dt = step_dt * time_stepping.cut_factor;
             if (dt < time_stepping.minimum_step)
               {
@@ -310,24 +424,17 @@ namespace GelMPM
 
         if (stability.enabled())
           {
-            // The last assembly of Newton was at the converged state.
-            dealii::TimerOutput::Scope scope(timer, "stability");
-            const auto                 result =
-              analyse_stability(system->matrix(), spaces->n_u_dofs(), stability, [this]() {
+            StabilityReport result;
+            {
+              // The last assembly of Newton was at the converged state.
+              dealii::TimerOutput::Scope scope(timer, "stability");
+              result = analyse_stability(system->matrix(), spaces->n_u_dofs(), stability, [this]() {
                 return system->mu_mass_matrix();
               });
-            if (stability.inertia)
-              {
-                statistics.set("n_pos", result.inertia.n_positive);
-                statistics.set("n_neg", result.inertia.n_negative);
-                statistics.set("n_zero", result.inertia.n_zero);
-              }
-            for (unsigned int k = 0; k < result.eigenvalues.size(); ++k)
-              statistics.set("eig_" + std::to_string(k + 1), result.eigenvalues[k]);
-            if (stability.inf_sup)
-              statistics.set("inf_sup", result.inf_sup);
-            if (stability.condition)
-              statistics.set("condition_number", result.condition_number);
+            }
+            if (narrow_instability_bracket(result, step_dt))
+              continue;
+            record_stability(result);
           }
         {
           dealii::TimerOutput::Scope scope(timer, "update");

@@ -32,6 +32,14 @@ namespace GelMPM
                       "eigenvalue of K_muu K_uu^-1 K_umu q = beta^2 M q, M the mass matrix of the "
                       "mu basis (column inf_sup). Dense LAPACK: for grids with at most 8000 "
                       "displacement unknowns (the inf-sup study of doc/inf_sup.md).");
+    prm.declare_entry("Bisection tolerance",
+                      "0",
+                      dealii::Patterns::Double(0.),
+                      "With 'Inertia': when the signature leaves (n_dofs_u, n_dofs_mu, 0) within a "
+                      "step, retake the step from the last stable state with halved steps until "
+                      "the critical time is bracketed to this width (in tau_d); the bracket goes "
+                      "to the log and to stability.csv. 0: no bisection (the bracket is the step "
+                      "that lost stability).");
     prm.declare_entry("Condition number",
                       "false",
                       dealii::Patterns::Bool(),
@@ -46,11 +54,16 @@ namespace GelMPM
   StabilitySettings::parse_parameters(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection("Stability");
-    inertia       = prm.get_bool("Inertia");
-    n_eigenvalues = prm.get_integer("Schur eigenvalues");
-    inf_sup       = prm.get_bool("Inf-sup constant");
-    condition     = prm.get_bool("Condition number");
+    inertia             = prm.get_bool("Inertia");
+    n_eigenvalues       = prm.get_integer("Schur eigenvalues");
+    inf_sup             = prm.get_bool("Inf-sup constant");
+    condition           = prm.get_bool("Condition number");
+    bisection_tolerance = prm.get_double("Bisection tolerance");
     prm.leave_subsection();
+    require(bisection_tolerance == 0. || inertia,
+            "Stability/Bisection tolerance",
+            "needs the signature of the tangent, but 'Stability/Inertia = false'",
+            "set 'Inertia = true' or the tolerance to 0");
   }
 
 

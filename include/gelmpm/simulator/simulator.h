@@ -86,6 +86,20 @@ namespace GelMPM
     record_statistics(const NewtonReport           &report,
                       const unsigned int            attempts,
                       const dealii::Vector<double> *solution);
+    /** The stability columns of statistics.csv for a converged step. */
+    void
+    record_stability(const StabilityReport &result);
+    /**
+     * After a converged step with the stability analysis: if the signature left (n_u, n_mu, 0)
+     * within the step and 'Stability/Bisection tolerance' asks for it, returns true to retake the
+     * step shorter (bisection of the critical time); when the bracket is tight, reports it in the
+     * log and in stability.csv and returns false.
+     */
+    bool
+    narrow_instability_bracket(const StabilityReport &result, const double step_dt);
+    /** The next step while a critical time is being bracketed. */
+    double
+    bisection_step() const;
     void
     write_output();
     /** Record the initial grid for GridOutput: cells classified from the points, du = 0, mu_0. */
@@ -127,8 +141,18 @@ namespace GelMPM
     std::unique_ptr<GridOutput<dim>>        grid_output;        // with Output/Write grid
     std::vector<unsigned int>               grid_volume_points; // per cell, start of the step
     StatisticsFile                          statistics;
-    std::vector<double>                     mu_coefficients; // per mu control point
-    std::vector<bool>                       mu_known;        // coefficient holds a current value
+    StatisticsFile                          stability_file; // stability.csv, with the inertia
+    /** The bracket of a loss of stability while it is being narrowed. */
+    struct
+    {
+      bool   active        = false;
+      double unstable_time = 0.;
+    } bisection;
+    bool                last_stable = true; // signature of the last accepted step
+    Inertia             last_stable_inertia;
+    double              last_eigenvalue = 0.;
+    std::vector<double> mu_coefficients; // per mu control point
+    std::vector<bool>   mu_known;        // coefficient holds a current value
 
     unsigned int n_volume_points  = 0;
     unsigned int n_surface_points = 0;

@@ -24,6 +24,8 @@ namespace GelMPM
    *   eq. (63) (columns eig_1 ... eig_k), by ARPACK through the same factorisation.
    * - Inf-sup constant: beta_h of the undrained saddle-point problem (column inf_sup), see
    *   discrete_inf_sup_constant(); dense, for small discretisations.
+   * - Bisection tolerance: with the inertia, the width to which the time where the signature
+   *   leaves (n_u, n_mu, 0) is bracketed by retaking the step (Simulator; stability.csv).
    * - Condition number: LAPACK's 1-norm estimate for the tangent (column condition_number);
    *   dense, for small discretisations.
    */
@@ -33,6 +35,8 @@ namespace GelMPM
     unsigned int n_eigenvalues = 0;
     bool         inf_sup       = false;
     bool         condition     = false;
+    /** Width (tau_d) to which a loss of stability is bracketed; 0: off. */
+    double bisection_tolerance = 0.;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
