@@ -171,6 +171,79 @@ def binned_means(y, values, bins):
 
 
 # ------------------------------------------------------------------------------------------------
+# The comparison (shared)
+
+def agreement_data(mpm_dir, reference_dir, chi=0.1, n_nu=7.299e-3, lambda_0=1.2801,
+                   profiles=True, note=print):
+    """The MPM-versus-reference comparison that the agreement table and Fig. 6b/6c are made of;
+    shared with contrib/benchmarks/speed_accuracy.py. Returns a dict with
+      t_mpm, dh_mpm, newton        per step with t > 0 (statistics.csv)
+      t_ref, dh_ref                reference thickness curve (sorted)
+      dh_ref_at_mpm                reference interpolated at the MPM step times
+      dh_eq                        closed-form equilibrium Δh/h_0
+      error                        (Δh_MPM − Δh_ref)/Δh_eq per step
+      worst                        index of max |error| over t ≥ 0.01 τ_d
+      end_error                    (Δh_MPM − Δh_eq)/Δh_eq at the last step
+      profiles                     per particles-*.vtu at a reference profile time (if @p profiles):
+                                   time, y, mu, difference, y_ref, mu_ref, worst, worst_y, rms, top_mu
+    Exits (SystemExit) on missing or inconsistent input."""
+    statistics = read_csv(os.path.join(mpm_dir, "statistics.csv"))
+    if "delta_h_over_h0" not in statistics:
+        sys.exit("constrained_swelling.py: statistics.csv has no delta_h_over_h0 "
+                 "(Observables/Thickness pieces)")
+    t_all = statistics["t_over_tau_d"]
+    keep = t_all > 0.0
+    t_mpm, dh_mpm = t_all[keep], statistics["delta_h_over_h0"][keep]
+    newton = statistics["newton_iterations"][keep]
+
+    thickness = read_csv(os.path.join(reference_dir, "reference_thickness.csv"))
+    t_ref, dh_ref = thickness["t_over_tau_d"], thickness["delta_h_over_h0"]
+    order = np.argsort(t_ref)
+    t_ref, dh_ref = t_ref[order], dh_ref[order]
+    if t_mpm.min() < t_ref.min() or t_mpm.max() > t_ref.max() * (1 + 1e-12):
+        sys.exit("constrained_swelling.py: the reference does not cover the MPM times "
+                 f"[{t_mpm.min():g}, {t_mpm.max():g}]")
+    dh_ref_at_mpm = log_log_interpolation(np.minimum(t_mpm, t_ref.max()), t_ref, dh_ref)
+
+    dh_eq = equilibrium_thickness_change(chi, n_nu, lambda_0)
+    error = (dh_mpm - dh_ref_at_mpm) / dh_eq
+    late = t_mpm >= 0.01
+    worst = int(np.argmax(np.abs(error) * late))
+    end_error = (dh_mpm[-1] - dh_eq) / dh_eq
+
+    mpm_profiles = []
+    if profiles:
+        reference_profiles = read_csv(os.path.join(reference_dir, "reference_profiles.csv"))
+        profile_times = np.unique(reference_profiles["t_over_tau_d"])
+        series = [(time, path) for time, path in read_pvd(mpm_dir) if time > 0.0]
+        for time, path in series:
+            match = np.abs(profile_times - time) <= 1e-9 * max(1.0, time)
+            if not match.any():
+                note(f"constrained_swelling.py: no reference profile at t = {time:g}; skipped")
+                continue
+            on = reference_profiles["t_over_tau_d"] == profile_times[match][0]
+            y_ref, mu_ref = reference_profiles["Y_over_h0"][on], reference_profiles["mu_over_kT"][on]
+            order = np.argsort(y_ref)
+            y_ref, mu_ref = y_ref[order], mu_ref[order]
+            points = read_points(path)
+            volume = points["kind"] == 0
+            y, mu = points["Y"][volume], points["mu"][volume]
+            difference = mu - np.interp(y, y_ref, mu_ref)
+            worst_point = np.argmax(np.abs(difference))
+            top = points["kind"] != 0
+            top = top & (points["Y"] > 1.0 - 1e-6)
+            mpm_profiles.append({
+                "time": time, "y": y, "mu": mu, "difference": difference, "y_ref": y_ref,
+                "mu_ref": mu_ref, "worst": abs(difference[worst_point]), "worst_y": y[worst_point],
+                "rms": float(np.sqrt(np.mean(difference ** 2))),
+                "top_mu": points["mu"][top].mean() if top.any() else float("nan"),
+            })
+    return {"t_mpm": t_mpm, "dh_mpm": dh_mpm, "newton": newton, "t_ref": t_ref, "dh_ref": dh_ref,
+            "dh_ref_at_mpm": dh_ref_at_mpm, "dh_eq": dh_eq, "error": error, "worst": worst,
+            "end_error": end_error, "profiles": mpm_profiles}
+
+
+# ------------------------------------------------------------------------------------------------
 
 def main():
     parser = argparse.ArgumentParser(
@@ -194,33 +267,16 @@ def main():
     os.makedirs(arguments.output, exist_ok=True)
 
     # ---- thickness --------------------------------------------------------------------------
-    statistics = read_csv(os.path.join(arguments.mpm, "statistics.csv"))
-    if "delta_h_over_h0" not in statistics:
-        sys.exit("constrained_swelling.py: statistics.csv has no delta_h_over_h0 "
-                 "(Observables/Thickness pieces)")
-    t_all = statistics["t_over_tau_d"]
-    keep = t_all > 0.0
-    t_mpm, dh_mpm = t_all[keep], statistics["delta_h_over_h0"][keep]
-    newton = statistics["newton_iterations"][keep]
-
-    thickness = read_csv(os.path.join(arguments.reference, "reference_thickness.csv"))
-    t_ref, dh_ref = thickness["t_over_tau_d"], thickness["delta_h_over_h0"]
-    order = np.argsort(t_ref)
-    t_ref, dh_ref = t_ref[order], dh_ref[order]
-    if t_mpm.min() < t_ref.min() or t_mpm.max() > t_ref.max() * (1 + 1e-12):
-        sys.exit("constrained_swelling.py: the reference does not cover the MPM times "
-                 f"[{t_mpm.min():g}, {t_mpm.max():g}]")
-    dh_ref_at_mpm = log_log_interpolation(np.minimum(t_mpm, t_ref.max()), t_ref, dh_ref)
-
-    dh_eq = equilibrium_thickness_change(arguments.chi, arguments.n_nu, arguments.lambda_0)
-    error = (dh_mpm - dh_ref_at_mpm) / dh_eq
-    late = t_mpm >= 0.01
-    worst = np.argmax(np.abs(error) * late)
+    data = agreement_data(arguments.mpm, arguments.reference, arguments.chi, arguments.n_nu,
+                          arguments.lambda_0)
+    t_mpm, dh_mpm, newton = data["t_mpm"], data["dh_mpm"], data["newton"]
+    t_ref, dh_ref, dh_ref_at_mpm = data["t_ref"], data["dh_ref"], data["dh_ref_at_mpm"]
+    dh_eq, error, worst = data["dh_eq"], data["error"], data["worst"]
 
     rows = []  # (quantity, where, measured, target, met)
     rows.append(("max |Δh_MPM − Δh_ref| / Δh_eq", "t ≥ 0.01 τ_d (worst at t = %.4g τ_d)" % t_mpm[worst],
                  "%.3f %%" % (100 * abs(error[worst])), "≤ 2 %", abs(error[worst]) <= 0.02))
-    end_error = (dh_mpm[-1] - dh_eq) / dh_eq
+    end_error = data["end_error"]
     rows.append(("(Δh_MPM − Δh_eq) / Δh_eq at the end",
                  "t = %.4g τ_d; Δh_MPM/h_0 = %.6f, Δh_eq/h_0 = %.6f" % (t_mpm[-1], dh_mpm[-1], dh_eq),
                  "%+.4f %%" % (100 * end_error), "≤ 0.5 %", abs(end_error) <= 0.005))
@@ -237,39 +293,16 @@ def main():
                      abs(s - 0.5) <= 0.05 if targeted else None))
 
     # ---- profiles ---------------------------------------------------------------------------
-    profiles = read_csv(os.path.join(arguments.reference, "reference_profiles.csv"))
-    profile_times = np.unique(profiles["t_over_tau_d"])
-    series = [(time, path) for time, path in read_pvd(arguments.mpm) if time > 0.0]
-    mpm_profiles = []
-    for time, path in series:
-        match = np.abs(profile_times - time) <= 1e-9 * max(1.0, time)
-        if not match.any():
-            print(f"constrained_swelling.py: no reference profile at t = {time:g}; skipped")
-            continue
-        on = profiles["t_over_tau_d"] == profile_times[match][0]
-        y_ref, mu_ref = profiles["Y_over_h0"][on], profiles["mu_over_kT"][on]
-        order = np.argsort(y_ref)
-        y_ref, mu_ref = y_ref[order], mu_ref[order]
-        points = read_points(path)
-        volume = points["kind"] == 0
-        y, mu = points["Y"][volume], points["mu"][volume]
-        difference = mu - np.interp(y, y_ref, mu_ref)
-        worst_point = np.argmax(np.abs(difference))
-        top = points["kind"] != 0
-        top = top & (points["Y"] > 1.0 - 1e-6)
-        mpm_profiles.append({
-            "time": time, "y": y, "mu": mu, "difference": difference, "y_ref": y_ref,
-            "mu_ref": mu_ref, "worst": abs(difference[worst_point]), "worst_y": y[worst_point],
-            "rms": float(np.sqrt(np.mean(difference ** 2))),
-            "top_mu": points["mu"][top].mean() if top.any() else float("nan"),
-        })
+    mpm_profiles = data["profiles"]
+    for entry in mpm_profiles:
+        time = entry["time"]
         targeted = time >= 0.1281 * (1 - 1e-9)
         rows.append(("max |μ_MPM − μ_ref| / k_BT over volume points",
                      "t = %g τ_d (worst at Y = %.4f; rms %.2g; top surface points μ = %.2g)"
-                     % (time, y[worst_point], mpm_profiles[-1]["rms"], mpm_profiles[-1]["top_mu"]),
-                     "%.2e" % abs(difference[worst_point]),
+                     % (time, entry["worst_y"], entry["rms"], entry["top_mu"]),
+                     "%.2e" % entry["worst"],
                      "≤ 0.02" if targeted else "(not targeted)",
-                     (abs(difference[worst_point]) <= 0.02) if targeted else None))
+                     (entry["worst"] <= 0.02) if targeted else None))
 
     # ---- tables -----------------------------------------------------------------------------
     def verdict(met):
