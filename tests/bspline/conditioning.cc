@@ -12,6 +12,7 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 
 #include <cmath>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -94,6 +95,9 @@ main()
   bool                  ok             = true;
   double                plain_first[2] = {0., 0.}, plain_last[2] = {0., 0.};
   std::cout << "f          cond(M) ext  cond(M) plain  cond(K) ext  cond(K) plain" << std::endl;
+  std::ofstream csv("conditioning.csv");
+  csv << "fraction,cond_mass_extended,cond_mass_plain,cond_laplace_nitsche_extended,"
+         "cond_laplace_nitsche_plain\n";
   for (const double f : {1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8})
     {
       const auto        points = points_of_box(0.2, 0.7 + f * h, 0.2, 0.8, h);
@@ -144,6 +148,9 @@ main()
           out << "  > 1e10";
         return out.str();
       };
+      // All values, unrounded, for the plot of doc/conditioning.md (not compared).
+      csv << std::setprecision(6) << f << ',' << cond[0][0] << ',' << cond[1][0] << ','
+          << cond[0][1] << ',' << cond[1][1] << '\n';
       std::cout << std::scientific << std::setprecision(0) << f << "   " << shown(cond[0][0])
                 << "     " << shown(cond[1][0]) << "       " << shown(cond[0][1]) << "     "
                 << shown(cond[1][1]) << std::endl;
