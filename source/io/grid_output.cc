@@ -14,10 +14,11 @@ namespace GelMPM
 {
   template <int dim>
   GridOutput<dim>::GridOutput(const std::string                &directory,
-                              const dealii::Triangulation<dim> &triangulation)
+                              const dealii::Triangulation<dim> &triangulation,
+                              const std::string                &basename)
     : fe(dealii::FE_DGQ<dim>(1), dim + 1)
     , dof_handler(triangulation)
-    , series(directory, "grid")
+    , series(directory, basename)
   {
     dof_handler.distribute_dofs(fe);
   }

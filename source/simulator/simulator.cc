@@ -310,6 +310,21 @@ namespace GelMPM
 
   template <int dim>
   void
+  Simulator<dim>::record_mode(const dealii::Vector<double> &mode)
+  {
+    // The mode as a displacement field (mu = 0), scaled to a largest coefficient of one: the
+    // eigenvector's sign and size are arbitrary.
+    dealii::Vector<double> field(spaces->n_dofs());
+    const double           largest = mode.linfty_norm();
+    for (unsigned int i = 0; i < mode.size(); ++i)
+      field(i) = (largest > 0.) ? mode(i) / largest : 0.;
+    mode_output->record(spaces->u(), spaces->mu(), grid_volume_points, field);
+    mode_recorded = true;
+  }
+
+
+  template <int dim>
+  void
   Simulator<dim>::write_output()
   {
     dealii::TimerOutput::Scope scope(timer, "output");
@@ -317,6 +332,8 @@ namespace GelMPM
       particle_output->write(particles, time);
     if (grid_output)
       grid_output->write(time);
+    if (mode_output && mode_recorded)
+      mode_output->write(time);
   }
 
 
@@ -382,7 +399,7 @@ namespace GelMPM
   {
     {
       dealii::TimerOutput::Scope scope(timer, "setup");
-      if (grid_output)
+      if (grid_output || mode_output)
         grid_volume_points = GridOutput<dim>::count_volume_points(particles, spaces->u_space());
       system->setup(particles);
     }
@@ -435,6 +452,8 @@ namespace GelMPM
             if (narrow_instability_bracket(result, step_dt))
               continue;
             record_stability(result);
+            if (mode_output && result.mode.size() == spaces->n_u_dofs())
+              record_mode(result.mode);
           }
         {
           dealii::TimerOutput::Scope scope(timer, "update");
@@ -502,6 +521,9 @@ namespace GelMPM
         grid_output = std::make_unique<GridOutput<dim>>(output_settings.directory, triangulation);
         record_initial_grid();
       }
+    if (stability.write_mode)
+      mode_output =
+        std::make_unique<GridOutput<dim>>(output_settings.directory, triangulation, "mode");
     open_statistics();
     next_output_time = output_settings.interval_time;
 

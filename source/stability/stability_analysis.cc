@@ -40,6 +40,14 @@ namespace GelMPM
                       "the critical time is bracketed to this width (in tau_d); the bracket goes "
                       "to the log and to stability.csv. 0: no bisection (the bracket is the step "
                       "that lost stability).");
+    prm.declare_entry("Write mode",
+                      "false",
+                      dealii::Patterns::Bool(),
+                      "With 'Schur eigenvalues' >= 1: at every output time, the eigenvector of the "
+                      "smallest Schur eigenvalue of the last converged step as a displacement "
+                      "field on the background grid (mode-NNNNN.vtu, mode.pvd; field "
+                      "displacement_increment, scaled to a largest coefficient of 1): the shape in "
+                      "which the gel is about to lose, or has lost, stability.");
     prm.declare_entry("Condition number",
                       "false",
                       dealii::Patterns::Bool(),
@@ -59,11 +67,16 @@ namespace GelMPM
     inf_sup             = prm.get_bool("Inf-sup constant");
     condition           = prm.get_bool("Condition number");
     bisection_tolerance = prm.get_double("Bisection tolerance");
+    write_mode          = prm.get_bool("Write mode");
     prm.leave_subsection();
     require(bisection_tolerance == 0. || inertia,
             "Stability/Bisection tolerance",
             "needs the signature of the tangent, but 'Stability/Inertia = false'",
             "set 'Inertia = true' or the tolerance to 0");
+    require(!write_mode || n_eigenvalues > 0,
+            "Stability/Write mode",
+            "needs the eigenvector of the smallest Schur eigenvalue, but 'Schur eigenvalues' is 0",
+            "set 'Schur eigenvalues' to at least 1 or 'Write mode' to false");
   }
 
 
@@ -103,8 +116,15 @@ namespace GelMPM
         factorization.factorize(K);
         report.inertia = factorization.inertia();
         if (settings.n_eigenvalues > 0)
-          report.eigenvalues =
-            smallest_schur_eigenvalues(factorization, n_u, settings.n_eigenvalues).values;
+          {
+            auto eigen         = smallest_schur_eigenvalues(factorization,
+                                                    n_u,
+                                                    settings.n_eigenvalues,
+                                                    settings.write_mode);
+            report.eigenvalues = std::move(eigen.values);
+            if (!eigen.vectors.empty())
+              report.mode = std::move(eigen.vectors[0]);
+          }
       }
     if (settings.inf_sup)
       report.inf_sup = discrete_inf_sup_constant(K, n_u, mass_mu());

@@ -46,8 +46,12 @@ namespace GelMPM
      * @param triangulation The background grid, whose active cell index equals the cell index of
      *   the displacement BSplineSpace (GridGenerator::subdivided_hyper_rectangle with the same
      *   box and cell counts). It must outlive this object.
+     * @param basename The files are `<basename>-NNNNN.vtu` and `<basename>.pvd` ("mode" for the
+     *   critical mode of the stability analysis, whose `displacement_increment` is the mode).
      */
-    GridOutput(const std::string &directory, const dealii::Triangulation<dim> &triangulation);
+    GridOutput(const std::string                &directory,
+               const dealii::Triangulation<dim> &triangulation,
+               const std::string                &basename = "grid");
 
     /** The number of volume points in each cell of @p space, from the points' current positions. */
     static std::vector<unsigned int>

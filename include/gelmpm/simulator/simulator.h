@@ -97,6 +97,9 @@ namespace GelMPM
      */
     bool
     narrow_instability_bracket(const StabilityReport &result, const double step_dt);
+    /** Keep the critical @p mode of the converged step for the next output (mode.pvd). */
+    void
+    record_mode(const dealii::Vector<double> &mode);
     /** The next step while a critical time is being bracketed. */
     double
     bisection_step() const;
@@ -138,8 +141,10 @@ namespace GelMPM
     std::unique_ptr<DiscreteSpaces<dim>>    spaces;
     std::unique_ptr<MixedSystem<dim>>       system;
     std::unique_ptr<ParticleOutput<dim>>    particle_output;
-    std::unique_ptr<GridOutput<dim>>        grid_output;        // with Output/Write grid
-    std::vector<unsigned int>               grid_volume_points; // per cell, start of the step
+    std::unique_ptr<GridOutput<dim>>        grid_output;
+    std::unique_ptr<GridOutput<dim>>        mode_output;           // with Stability/Write mode
+    bool                                    mode_recorded = false; // with Output/Write grid
+    std::vector<unsigned int>               grid_volume_points;    // per cell, start of the step
     StatisticsFile                          statistics;
     StatisticsFile                          stability_file; // stability.csv, with the inertia
     /** The bracket of a loss of stability while it is being narrowed. */

@@ -6,6 +6,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/vector.h>
 
 #include <functional>
 #include <string>
@@ -26,6 +27,7 @@ namespace GelMPM
    *   discrete_inf_sup_constant(); dense, for small discretisations.
    * - Bisection tolerance: with the inertia, the width to which the time where the signature
    *   leaves (n_u, n_mu, 0) is bracketed by retaking the step (Simulator; stability.csv).
+   * - Write mode: the eigenvector of the smallest Schur eigenvalue on the background grid.
    * - Condition number: LAPACK's 1-norm estimate for the tangent (column condition_number);
    *   dense, for small discretisations.
    */
@@ -37,6 +39,8 @@ namespace GelMPM
     bool         condition     = false;
     /** Width (tau_d) to which a loss of stability is bracketed; 0: off. */
     double bisection_tolerance = 0.;
+    /** Write the critical mode (eigenvector of the smallest Schur eigenvalue) for ParaView. */
+    bool write_mode = false;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
@@ -59,8 +63,10 @@ namespace GelMPM
   {
     Inertia             inertia;
     std::vector<double> eigenvalues;
-    double              inf_sup          = 0.;
-    double              condition_number = 0.;
+    double              inf_sup = 0.;
+    /** With 'Write mode': the eigenvector of eigenvalues[0] (displacement unknowns). */
+    dealii::Vector<double> mode;
+    double                 condition_number = 0.;
   };
 
 

@@ -4,18 +4,28 @@
 // Asserted from stability.csv: exactly one loss of stability is reported before t = 0.3 tau_d, its
 // bracket is at most 1e-3 tau_d wide, one eigenvalue crosses (n_neg grows by one), the smallest
 // Schur eigenvalue changes sign across it, and it lies within 10% of the paper's onset
-// t_onset = 0.28 tau_d (Fig. 10; measured here: 0.2853 to 0.2862 tau_d).
+// t_onset = 0.28 tau_d (Fig. 10; measured here: 0.2853 to 0.2862 tau_d). With 'Stability/Write
+// mode', the critical mode written at the end (mode.pvd, read back with VTK) is the sway of the
+// column: its lateral displacement exceeds the vertical one fivefold, and it grows from the pinned
+// bottom to the top (which only the normal condition holds).
 #include <gelmpm/core/parameters.h>
 #include <gelmpm/io/statistics_file.h>
 #include <gelmpm/simulator/simulator.h>
 
 #include <deal.II/base/mpi.h>
 
+#include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
 #include <vector>
+#include <vtkDataArray.h>
+#include <vtkPointData.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridReader.h>
 
 int
 main(int argc, char **argv)
@@ -33,7 +43,8 @@ main(int argc, char **argv)
                            "Time stepping/Stop at times=",
                            "Stability/Inertia=true",
                            "Stability/Schur eigenvalues=1",
-                           "Stability/Bisection tolerance=1e-3"})
+                           "Stability/Bisection tolerance=1e-3",
+                           "Stability/Write mode=true"})
     overrides.push_back(GelMPM::ParameterOverride::parse(text));
   std::ostringstream log;
   auto *const        cout_buffer = std::cout.rdbuf(log.rdbuf());
@@ -59,4 +70,37 @@ main(int argc, char **argv)
             << std::endl;
   std::cout << "onset within 10% of the paper's 0.28 tau_d: "
             << (std::abs(0.5 * (t_stable + t_unstable) / 0.28 - 1.) < 0.1) << std::endl;
+
+  // The last entry of mode.pvd: the mode of the last converged step.
+  std::ifstream pvd("results/mode.pvd");
+  std::string   line, last_file;
+  while (std::getline(pvd, line))
+    if (const auto at = line.find("file=\""); at != std::string::npos)
+      last_file = line.substr(at + 6, line.find('"', at + 6) - at - 6);
+  std::cout << "mode.pvd lists the mode: " << !last_file.empty() << std::endl;
+  if (last_file.empty())
+    return 0;
+  const auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+  reader->SetFileName(("results/" + last_file).c_str());
+  reader->Update();
+  vtkUnstructuredGrid *grid   = reader->GetOutput();
+  vtkDataArray        *field  = grid->GetPointData()->GetArray("displacement_increment");
+  double               ux_max = 0., uy_max = 0., ux_bottom = 0., ux_top = 0.;
+  for (vtkIdType k = 0; field != nullptr && k < grid->GetNumberOfPoints(); ++k)
+    {
+      const double *u = field->GetTuple3(k);
+      const double *x = grid->GetPoint(k);
+      if (!std::isfinite(u[0]))
+        continue;
+      ux_max = std::max(ux_max, std::abs(u[0]));
+      uy_max = std::max(uy_max, std::abs(u[1]));
+      if (x[1] < 1.5)
+        ux_bottom = std::max(ux_bottom, std::abs(u[0]));
+      if (x[1] > 8.5)
+        ux_top = std::max(ux_top, std::abs(u[0]));
+    }
+  std::cout << "the mode is lateral (max |u_x| > 5 max |u_y|): " << (ux_max > 5. * uy_max)
+            << std::endl;
+  std::cout << "the mode sways: |u_x| at the top above 10 x at the bottom: "
+            << (ux_top > 10. * ux_bottom) << std::endl;
 }
