@@ -1,0 +1,170 @@
+#ifndef gelmpm_fem_fem_mixed_system_h
+#define gelmpm_fem_fem_mixed_system_h
+
+#include <gelmpm/material/flory_rehner_gel.h>
+
+#include <deal.II/base/types.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <map>
+#include <vector>
+
+namespace GelMPM
+{
+  /**
+   * @brief The coupled u–mu system of one time step on a conforming (body-fitted) finite-element
+   * mesh of the gel's initial configuration Omega_0: the peer of the material point MixedSystem,
+   * with the same equations, the same material (FloryRehnerGel) and the same frozen mobility
+   * m_n of the paper's §2.4, but Taylor–Hood elements (FE_Q(k)^dim for u, FE_Q(k-1) for mu),
+   * Gauss quadrature and strong Dirichlet conditions (AffineConstraints) instead of B-splines,
+   * material points and Nitsche terms. Derivation in doc/fem_peer.md.
+   *
+   * Unknowns of a step, as for MixedSystem: the increment du = u_{n+1} - u_n (u measured from
+   * Omega_0) and mu_{n+1}. The state is the converged u_n and mu_n only: F_n = I + grad_0 u_n is
+   * re-evaluated at every quadrature point, F_p = F_n F_0 with F_0 = lambda_0 I.
+   *
+   * Two algebraically equivalent forms of the residual (units of FloryRehnerGel; the mu equation
+   * is the paper's H times k_BT, so that the tangent is symmetric):
+   *
+   * - previously converged Lagrangian (paper eq. (26), (31)), integrated on Omega_n:
+   *     R_u[w]  = int_{Omega_n} P_n(dF, mu; F_p) : grad_n w dV_n,
+   *     R_mu[q] = int_{Omega_n} [ -(k_BT/nu)(dJ - 1) q - dt m_n grad_n mu . grad_n q ] dV_n,
+   *   with dF = I + grad_n du, grad_n = F_n^{-T} grad_0 and dV_n = det F_n dV_0: the Gauss points
+   *   of Omega_0 carried to Omega_n by x = X + u_n(X), i.e. the isoparametric mesh of Omega_n;
+   * - total Lagrangian on Omega_0:
+   *     R_u[w]  = int_{Omega_0} P_0(F_t, mu) : grad_0 w dV_0,   P_0 = P(F_t F_0) F_0^T / J_0,
+   *     R_mu[q] = int_{Omega_0} [ -(k_BT/nu)(det F_t - det F_n) q
+   *                               - dt m_n det F_n (F_n^T F_n)^{-1} grad_0 mu . grad_0 q ] dV_0,
+   *   with F_t = I + grad_0 (u_n + du) = dF F_n.
+   *
+   * Since P_n : grad_n w dV_n = P_0 : grad_0 w dV_0 and (dJ - 1) dV_n = (det F_t - det F_n) dV_0
+   * pointwise, the two give the same residual and tangent up to round-off; both are kept so that
+   * this can be checked (tests/fem/fem_formulations).
+   *
+   * Boundary conditions: displacement components held (du = 0 on them, so u = 0 relative to
+   * Omega_0) and prescribed mu on boundary ids of the triangulation; everything else is traction
+   * free and impermeable. Constrained rows of the residual are zero and of the tangent carry a
+   * diagonal entry, so Newton keeps the constrained values of the initial guess.
+   */
+  template <int dim>
+  class FemMixedSystem
+  {
+  public:
+    /** Which of the two equivalent forms of the residual is assembled (see the class text). */
+    enum class Formulation
+    {
+      previously_converged_lagrangian,
+      total_lagrangian
+    };
+
+    /**
+     * @p triangulation is the mesh of Omega_0 (kept by reference); @p u_degree >= 2 is the degree
+     * of the displacement, mu gets u_degree - 1 (Taylor–Hood).
+     */
+    FemMixedSystem(const FloryRehnerGel<dim>        &material,
+                   const dealii::Triangulation<dim> &triangulation,
+                   const unsigned int                u_degree,
+                   const Formulation                 formulation);
+
+    /** Hold the displacement components @p components (0..dim-1) on boundary @p id. */
+    void
+    constrain_displacement(const dealii::types::boundary_id id,
+                           const std::vector<unsigned int> &components);
+
+    /** Prescribe mu/k_BT = @p mu_bar on boundary @p id for t > 0. */
+    void
+    prescribe_chemical_potential(const dealii::types::boundary_id id, const double mu_bar);
+
+    /**
+     * Distribute the DoFs (displacement block first, then mu), build the constraints and the
+     * sparsity pattern, and set the initial state u_0 = 0, mu = mu_0 of the material. Throws
+     * std::invalid_argument for an unknown boundary id or component.
+     */
+    void
+    setup();
+
+    /**
+     * The first Newton iterate of a step: du = 0, mu = mu_n, with the prescribed mu on its
+     * boundaries.
+     */
+    void
+    initial_guess(dealii::Vector<double> &solution) const;
+
+    /**
+     * Residual (and, if @p with_matrix, tangent) at the unknowns @p solution (du then mu) for the
+     * physical time step @p dt. Throws NonPhysicalState if some quadrature point leaves the
+     * physical range (J <= 1).
+     */
+    void
+    assemble(const dealii::Vector<double> &solution, const double dt, const bool with_matrix);
+
+    /** The tangent assembled last. */
+    const dealii::TrilinosWrappers::SparseMatrix &
+    matrix() const;
+
+    /** The residual assembled last (zero in constrained rows). */
+    const dealii::Vector<double> &
+    residual() const;
+
+    /** Euclidean norm of the displacement block of the residual. */
+    double
+    residual_norm_u() const;
+
+    /** Euclidean norm of the chemical-potential block of the residual. */
+    double
+    residual_norm_mu() const;
+
+    /** After convergence: u_n += du, mu_n = mu. */
+    void
+    update(const dealii::Vector<double> &solution);
+
+    /** Mean of the displacement component @p component of u_n over boundary @p id. */
+    double
+    mean_boundary_displacement(const dealii::types::boundary_id id,
+                               const unsigned int               component) const;
+
+    /** |Omega_0|. */
+    double
+    volume() const;
+
+    unsigned int
+    n_dofs() const;
+    unsigned int
+    n_u_dofs() const;
+    unsigned int
+    n_mu_dofs() const;
+
+    /** The converged state: u_n (from Omega_0) then mu_n, in the DoF order of the system. */
+    const dealii::Vector<double> &
+    state() const;
+
+    const dealii::DoFHandler<dim> &
+    dof_handler() const;
+
+  private:
+    const FloryRehnerGel<dim>        &material;
+    const dealii::Triangulation<dim> &triangulation;
+    const Formulation                 formulation;
+    const dealii::FESystem<dim>       fe;
+    dealii::DoFHandler<dim>           dof_handler_;
+
+    std::map<dealii::types::boundary_id, std::vector<bool>> displacement_constraints;
+    std::map<dealii::types::boundary_id, double>            mu_constraints;
+
+    /** Homogeneous constraints of the Newton increments; the prescribed values for the guess. */
+    dealii::AffineConstraints<double> zero_constraints, constraints;
+
+    unsigned int n_u_dofs_ = 0;
+
+    dealii::Vector<double>                 state_;
+    dealii::TrilinosWrappers::SparseMatrix matrix_;
+    dealii::Vector<double>                 residual_;
+  };
+} // namespace GelMPM
+
+#endif
