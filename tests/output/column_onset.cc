@@ -8,9 +8,7 @@
 // mode', the critical mode written at the end (mode.pvd, read back with VTK) is the sway of the
 // column: its lateral displacement exceeds the vertical one fivefold, and it grows from the pinned
 // bottom to the top (which only the normal condition holds).
-#include <gelmpm/core/parameters.h>
 #include <gelmpm/io/statistics_file.h>
-#include <gelmpm/simulator/simulator.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -27,32 +25,26 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
+#include "../scene_run.h"
+
 int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::vector<GelMPM::ParameterOverride>   overrides;
-  for (const char *text : {"Output/Directory=results",
-                           "Output/Test mode=true",
-                           "Output/Write particles=false",
-                           "Background grid/Cells=140, 80",
-                           "Material points/Points per cell=3",
-                           "Time stepping/Initial step=0.02",
-                           "Time stepping/Step caps=2: 0.02",
-                           "Time stepping/End time=0.3",
-                           "Time stepping/Stop at times=",
-                           "Stability/Inertia=true",
-                           "Stability/Schur eigenvalues=1",
-                           "Stability/Bisection tolerance=1e-3",
-                           "Stability/Write mode=true"})
-    overrides.push_back(GelMPM::ParameterOverride::parse(text));
-  std::ostringstream log;
-  auto *const        cout_buffer = std::cout.rdbuf(log.rdbuf());
-  const int          status =
-    GelMPM::run_scene_file<2>(std::string(SOURCE_DIR) + "/../../prm/column_buckling.prm",
-                              overrides);
-  std::cout.rdbuf(cout_buffer);
-  std::cout << std::boolalpha << "run completed: " << (status == 0) << std::endl;
+  const auto                               run =
+    GelMPMTests::run_scene(std::string(SOURCE_DIR) + "/../../prm/column_buckling.prm",
+                           "results",
+                           {"Background grid/Cells=140, 80",
+                            "Material points/Points per cell=3",
+                            "Time stepping/Initial step=0.02",
+                            "Time stepping/Step caps=2: 0.02",
+                            "Time stepping/End time=0.3",
+                            "Time stepping/Stop at times=",
+                            "Stability/Inertia=true",
+                            "Stability/Schur eigenvalues=1",
+                            "Stability/Bisection tolerance=1e-3",
+                            "Stability/Write mode=true"});
+  std::cout << std::boolalpha << "run completed: " << (run.status == 0) << std::endl;
 
   const auto brackets = GelMPM::read_statistics("results/stability.csv");
   const bool one      = brackets.count("t_stable") && brackets.at("t_stable").size() == 1;

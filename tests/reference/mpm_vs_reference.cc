@@ -8,10 +8,7 @@
 //   swelling, Delta h ~ sqrt(t));
 // - every step converged with the stable signature (n_dofs_u, n_dofs_mu, 0) is not asserted here
 //   (tests/scenes/constrained_swelling_short does).
-#include <gelmpm/core/parameters.h>
-#include <gelmpm/io/statistics_file.h>
 #include <gelmpm/reference/constrained_swelling_1d.h>
-#include <gelmpm/simulator/simulator.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -20,31 +17,25 @@
 #include <iostream>
 #include <sstream>
 
+#include "../scene_run.h"
+
 
 int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const std::string scene = std::string(SOURCE_DIR) + "/../../prm/constrained_swelling.prm";
-  std::vector<GelMPM::ParameterOverride> overrides;
-  for (const char *text : {"Output/Directory=results",
-                           "Output/Test mode=true",
-                           "Output/Write particles=false",
-                           "Background grid/Upper corner=0.5, 1.5",
-                           "Background grid/Cells=20, 60",
-                           "Material points/Points per cell=3",
-                           "Time stepping/End time=2",
-                           "Time stepping/Stop at times="})
-    overrides.push_back(GelMPM::ParameterOverride::parse(text));
-
   // The run's own progress output is not part of what this test compares.
-  std::ostringstream log;
-  auto *const        cout_buffer = std::cout.rdbuf(log.rdbuf());
-  const int          status      = GelMPM::run_scene_file<2>(scene, overrides);
-  std::cout.rdbuf(cout_buffer);
-  std::cout << std::boolalpha << "run completed: " << (status == 0) << std::endl;
+  const auto run =
+    GelMPMTests::run_scene(std::string(SOURCE_DIR) + "/../../prm/constrained_swelling.prm",
+                           "results",
+                           {"Background grid/Upper corner=0.5, 1.5",
+                            "Background grid/Cells=20, 60",
+                            "Material points/Points per cell=3",
+                            "Time stepping/End time=2",
+                            "Time stepping/Stop at times="});
+  std::cout << std::boolalpha << "run completed: " << (run.status == 0) << std::endl;
 
-  auto                          mpm = GelMPM::read_statistics("results/statistics.csv");
+  auto                          mpm = run.statistics;
   GelMPM::ConstrainedSwelling1D reference(GelMPM::ConstrainedSwelling1D::Parameters{});
   const double                  equilibrium = reference.stretch_at(0.) - 1.;
   const auto                   &t           = mpm["t_over_tau_d"];

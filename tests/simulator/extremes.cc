@@ -8,10 +8,6 @@
 //    stable and the displacement conditions hold to 1e-12; with gamma_u = 100 the symmetric
 //    variant is not coercive and the inertia says so (more negative eigenvalues than mu unknowns);
 //    the skew-symmetric variant converges with gamma_u = 1 and holds the conditions to 1e-8.
-#include <gelmpm/core/parameters.h>
-#include <gelmpm/io/statistics_file.h>
-#include <gelmpm/simulator/simulator.h>
-
 #include <deal.II/base/mpi.h>
 
 #include <cmath>
@@ -21,6 +17,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "../scene_run.h"
 
 namespace
 {
@@ -32,20 +30,11 @@ namespace
       const std::string              &directory,
       const std::vector<std::string> &overrides)
   {
-    std::vector<GelMPM::ParameterOverride> parsed;
-    for (const auto &text : std::vector<std::string>{"Output/Directory=" + directory,
-                                                     "Output/Test mode=true",
-                                                     "Output/Write particles=false"})
-      parsed.push_back(GelMPM::ParameterOverride::parse(text));
-    for (const auto &text : overrides)
-      parsed.push_back(GelMPM::ParameterOverride::parse(text));
-    std::ostringstream log;
-    auto *const        cout_buffer = std::cout.rdbuf(log.rdbuf());
-    const int          status =
-      GelMPM::run_scene_file<2>(std::string(SOURCE_DIR) + "/../../prm/" + scene, parsed);
-    std::cout.rdbuf(cout_buffer);
-    std::cout << std::boolalpha << directory << ": run completed: " << (status == 0) << std::endl;
-    return GelMPM::read_statistics(directory + "/statistics.csv");
+    const auto result =
+      GelMPMTests::run_scene(std::string(SOURCE_DIR) + "/../../prm/" + scene, directory, overrides);
+    std::cout << std::boolalpha << directory << ": run completed: " << (result.status == 0)
+              << std::endl;
+    return result.statistics;
   }
 
   /** Whether every converged step had the signature (n_dofs_u, n_dofs_mu, 0). */

@@ -18,10 +18,6 @@
 //    this scene) that the weak equilibrium on the B-spline space does not see; it changes little
 //    with more points per cell or a finer grid (doc/method.md, "Residual strain after large
 //    swelling").
-#include <gelmpm/core/parameters.h>
-#include <gelmpm/io/statistics_file.h>
-#include <gelmpm/simulator/simulator.h>
-
 #include <deal.II/base/mpi.h>
 
 #include <cmath>
@@ -31,6 +27,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "../scene_run.h"
 
 namespace
 {
@@ -63,17 +61,11 @@ namespace
   std::map<std::string, std::vector<double>>
   run(const std::string &directory, const std::vector<std::string> &overrides)
   {
-    const std::string scene = std::string(SOURCE_DIR) + "/free_swelling_scene.prm";
-    std::vector<GelMPM::ParameterOverride> parsed = {
-      GelMPM::ParameterOverride::parse("Output/Directory=" + directory)};
-    for (const auto &text : overrides)
-      parsed.push_back(GelMPM::ParameterOverride::parse(text));
-    std::ostringstream log;
-    auto *const        cout_buffer = std::cout.rdbuf(log.rdbuf());
-    const int          status      = GelMPM::run_scene_file<2>(scene, parsed);
-    std::cout.rdbuf(cout_buffer);
-    std::cout << std::boolalpha << "run completed: " << (status == 0) << std::endl;
-    return GelMPM::read_statistics(directory + "/statistics.csv");
+    const auto run = GelMPMTests::run_scene(std::string(SOURCE_DIR) + "/free_swelling_scene.prm",
+                                            directory,
+                                            overrides);
+    std::cout << std::boolalpha << "run completed: " << (run.status == 0) << std::endl;
+    return run.statistics;
   }
 } // namespace
 

@@ -6,10 +6,6 @@
 // - Q2-Q2 and Q3-Q2 (maximally smooth, one grid): beta_h drops by more than 20% per halving of h
 //   (measured 0.70 and 0.63; 0.70 and 0.55 on the next halving);
 // - on the finer grid the SD pair's beta_h exceeds Q2-Q2's by more than a factor 10.
-#include <gelmpm/core/parameters.h>
-#include <gelmpm/io/statistics_file.h>
-#include <gelmpm/simulator/simulator.h>
-
 #include <deal.II/base/mpi.h>
 
 #include <iostream>
@@ -18,31 +14,26 @@
 #include <string>
 #include <vector>
 
+#include "../scene_run.h"
+
 namespace
 {
   /** beta_h of the pair set by @p pair on a grid of @p cells x @p cells over 1.5H x 1.5H. */
   double
   inf_sup_constant(const std::vector<std::string> &pair, const unsigned int cells)
   {
-    const std::string        scene = std::string(SOURCE_DIR) + "/../../prm/flat_punch.prm";
-    std::vector<std::string> texts = {"Output/Directory=results",
-                                      "Output/Test mode=true",
-                                      "Output/Write particles=false",
-                                      "Background grid/Cells=" + std::to_string(cells) + ", " +
-                                        std::to_string(cells),
-                                      "Material points/Points per cell=3",
-                                      "Boundary conditions/punch/Displacement=free",
-                                      "Time stepping/End time=3.125e-7",
-                                      "Stability/Inf-sup constant=true"};
-    texts.insert(texts.end(), pair.begin(), pair.end());
-    std::vector<GelMPM::ParameterOverride> overrides;
-    for (const auto &text : texts)
-      overrides.push_back(GelMPM::ParameterOverride::parse(text));
-    std::ostringstream log;
-    auto *const        cout_buffer = std::cout.rdbuf(log.rdbuf());
-    GelMPM::run_scene_file<2>(scene, overrides);
-    std::cout.rdbuf(cout_buffer);
-    return GelMPM::read_statistics("results/statistics.csv").at("inf_sup").back();
+    std::vector<std::string> overrides = {"Background grid/Cells=" + std::to_string(cells) + ", " +
+                                            std::to_string(cells),
+                                          "Material points/Points per cell=3",
+                                          "Boundary conditions/punch/Displacement=free",
+                                          "Time stepping/End time=3.125e-7",
+                                          "Stability/Inf-sup constant=true"};
+    overrides.insert(overrides.end(), pair.begin(), pair.end());
+    return GelMPMTests::run_scene(std::string(SOURCE_DIR) + "/../../prm/flat_punch.prm",
+                                  "results",
+                                  overrides)
+      .statistics.at("inf_sup")
+      .back();
   }
 } // namespace
 

@@ -1,0 +1,61 @@
+// Shared by the tests that run a whole scene in-process: the scene is read with overrides (the
+// output directory and test mode first), its own progress output is captured rather than compared,
+// and its statistics.csv is read back.
+#ifndef gelmpm_tests_scene_run_h
+#define gelmpm_tests_scene_run_h
+
+#include <gelmpm/core/parameters.h>
+#include <gelmpm/io/statistics_file.h>
+#include <gelmpm/simulator/simulator.h>
+
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace GelMPMTests
+{
+  /** What a scene run left: its exit status and the columns of its statistics.csv. */
+  struct SceneRun
+  {
+    int                                        status = 1;
+    std::map<std::string, std::vector<double>> statistics;
+  };
+
+  /**
+   * Run the 2D scene @p scene_file into @p directory (test mode, no particle output) with the
+   * further @p overrides ("Section/Entry=value"). The scene's log is discarded.
+   */
+  inline SceneRun
+  run_scene(const std::string              &scene_file,
+            const std::string              &directory,
+            const std::vector<std::string> &overrides)
+  {
+    std::vector<GelMPM::ParameterOverride> parsed;
+    for (const auto &text : std::vector<std::string>{"Output/Directory=" + directory,
+                                                     "Output/Test mode=true",
+                                                     "Output/Write particles=false"})
+      parsed.push_back(GelMPM::ParameterOverride::parse(text));
+    for (const auto &text : overrides)
+      parsed.push_back(GelMPM::ParameterOverride::parse(text));
+
+    std::ostringstream log;
+    auto *const        cout_buffer = std::cout.rdbuf(log.rdbuf());
+    SceneRun           run;
+    try
+      {
+        run.status = GelMPM::run_scene_file<2>(scene_file, parsed);
+      }
+    catch (...)
+      {
+        std::cout.rdbuf(cout_buffer);
+        throw;
+      }
+    std::cout.rdbuf(cout_buffer);
+    run.statistics = GelMPM::read_statistics(directory + "/statistics.csv");
+    return run;
+  }
+} // namespace GelMPMTests
+
+#endif
