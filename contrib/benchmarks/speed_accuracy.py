@@ -53,7 +53,8 @@ Finished runs are cached in runs/<run>/r<k>/result.json: rerunning the command o
 missing (e.g. more --repeats, or other --sweeps); --rerun ignores the cache.
 
 Other options: --sweeps grid,points (a subset), --repeats N, --output DIR, --estimate (print the
-run list and the estimate, run nothing), --paper-seconds S (the estimate's calibration; default
+run list and the estimate, run nothing), --tabulate-only (tables and plots of the cached runs
+only, e.g. after an interrupted sweep), --paper-seconds S (the estimate's calibration; default
 from a cached paper-setting run, else 60). Environment: GELMPM_BUILD_DIR (default build/); copy
 the binaries elsewhere first if they may be rebuilt during the sweep.
 Needs /usr/bin/python3 with numpy, matplotlib and VTK (Debian python3-numpy, python3-matplotlib,
@@ -435,6 +436,11 @@ def main():
                         help="Output/Write particles = false (no mu errors)")
     parser.add_argument("--rerun", action="store_true", help="ignore cached results")
     parser.add_argument("--estimate", action="store_true", help="print the plan, run nothing")
+    parser.add_argument("--levels", help="only these level labels (comma-separated, e.g. x2,x4,8x8); "
+                        "the paper setting is always included")
+    parser.add_argument("--tabulate-only", action="store_true",
+                        help="run nothing: tables and plots of the cached runs (levels without "
+                             "a cached run are left out)")
     parser.add_argument("--paper-seconds", type=float,
                         help="wall time of one paper-setting run for the estimate")
     arguments = parser.parse_args()
@@ -453,6 +459,10 @@ def main():
     os.makedirs(out, exist_ok=True)
 
     all_levels = sweep_levels(arguments.quick)
+    if arguments.levels:
+        wanted = set(arguments.levels.split(","))
+        all_levels = {sweep: [level for level in levels if level[0] in wanted or not level[2]]
+                      for sweep, levels in all_levels.items()}
     sweeps = [s for s in arguments.sweeps.split(",") if s]
     for sweep in sweeps:
         if sweep not in all_levels:
@@ -474,6 +484,8 @@ def main():
         known = [r["wall"] for r in known if r and r["status"] == 0]
         paper_seconds = statistics.median(known) if known else 60.0
     todo = [(key, k) for key in runs for k in range(repeats) if cached(key, k) is None]
+    if arguments.tabulate_only:
+        todo = []
     estimate = sum(relative_cost(runs[key][2], end_time) for key, _ in todo) * paper_seconds + 20
     mode = "quick" if arguments.quick else "full"
     print("speed_accuracy.py: %s mode, sweeps %s, %d distinct runs x %d repeat(s)%s, end time %g tau_d"
@@ -509,6 +521,8 @@ def main():
         results[key] = []
         for k in range(repeats):
             result = cached(key, k)
+            if result is None and arguments.tabulate_only:
+                continue
             if result is None:
                 done += 1
                 guess = relative_cost(overrides, end_time) * paper_seconds
@@ -538,6 +552,8 @@ def main():
         sweep_rows = []
         for label, x, overrides in all_levels[sweep]:
             key = run_key(sweep, label, overrides)
+            if not results.get(key):
+                continue
             row = {"sweep": sweep, "level": label, "x": x, "run": key,
                    "paper_setting": not overrides,
                    "overrides": "; ".join("%s=%s" % kv for kv in overrides.items()),
