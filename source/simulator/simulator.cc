@@ -402,6 +402,8 @@ namespace GelMPM
       if (grid_output || mode_output)
         grid_volume_points = GridOutput<dim>::count_volume_points(particles, spaces->u_space());
       system->setup(particles);
+      // The grid reset gives the tangent a new sparsity pattern.
+      linear_solver.new_pattern();
     }
     dealii::Vector<double> solution;
     for (unsigned int attempt = 1;; ++attempt)

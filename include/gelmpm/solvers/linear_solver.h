@@ -5,6 +5,9 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <Amesos_BaseSolver.h>
+#include <Epetra_LinearProblem.h>
+#include <memory>
 #include <string>
 
 namespace GelMPM
@@ -12,9 +15,12 @@ namespace GelMPM
   /**
    * @brief The "Linear solver" section and the direct solve of the Newton system.
    *
-   * A sparse direct solver from Trilinos' Amesos (KLU by default, MUMPS on request). A fresh
-   * solver object is made for every factorisation: Amesos_Mumps behind
-   * TrilinosWrappers::SolverDirect fails when re-initialised with a new matrix.
+   * A sparse direct solver from Trilinos' Amesos (KLU by default, MUMPS on request), used
+   * directly rather than through TrilinosWrappers::SolverDirect so that the symbolic
+   * factorisation (ordering and structure analysis) is kept while the sparsity pattern does not
+   * change: the Newton iterations and the retried attempts of a time step share one pattern, and
+   * only refactorise numerically. The caller says when the pattern changes (new_pattern(), once
+   * per time step after the grid reset); a different matrix object also starts afresh.
    */
   class LinearSolver
   {
@@ -25,11 +31,23 @@ namespace GelMPM
     void
     parse_parameters(dealii::ParameterHandler &prm);
 
-    /** Solve K x = b. Throws std::runtime_error when the factorisation fails. */
+    /** The sparsity pattern of the next matrix differs: forget the symbolic factorisation. */
+    void
+    new_pattern() const;
+
+    /**
+     * Solve K x = b, reusing the symbolic factorisation of the previous call unless new_pattern()
+     * was called or @p K is another matrix object. Throws std::runtime_error when the
+     * factorisation fails.
+     */
     void
     solve(const dealii::TrilinosWrappers::SparseMatrix &K,
           dealii::Vector<double>                       &x,
           const dealii::Vector<double>                 &b) const;
+
+    /** How many symbolic factorisations solve() has made (for tests and performance notes). */
+    unsigned int
+    n_symbolic_factorisations() const;
 
     /** The Amesos solver name, e.g. "Amesos_Klu". */
     const std::string &
@@ -37,6 +55,10 @@ namespace GelMPM
 
   private:
     std::string solver_type = "Amesos_Klu";
+    // The kept factorisation: a cache, so solve() stays const for its callers.
+    mutable std::unique_ptr<Epetra_LinearProblem> problem;
+    mutable std::unique_ptr<Amesos_BaseSolver>    factorisation;
+    mutable unsigned int                          symbolic_count = 0;
   };
 } // namespace GelMPM
 
