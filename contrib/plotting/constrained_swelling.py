@@ -41,7 +41,6 @@ import math
 import os
 import re
 import sys
-import xml.etree.ElementTree as ElementTree
 
 import numpy as np
 
@@ -50,56 +49,19 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-try:
-    from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-except ImportError:  # older VTK layout
-    try:
-        from vtk import vtkXMLUnstructuredGridReader
-        from vtk.util.numpy_support import vtk_to_numpy
-    except ImportError:
-        sys.exit("constrained_swelling.py: needs VTK's Python module (Debian: python3-vtk9); "
-                 "run it with /usr/bin/python3")
+from gelmpm_files import read_csv, read_pvd, read_vtu  # noqa: E402
 
 
 # ------------------------------------------------------------------------------------------------
 # Input
 
-def read_csv(file_name):
-    """Columns of a CSV file with a header row, as a dict of float arrays (empty cells: NaN)."""
-    if not os.path.isfile(file_name):
-        sys.exit(f"constrained_swelling.py: missing {file_name}")
-    data = np.genfromtxt(file_name, delimiter=",", names=True, dtype=float)
-    return {name: np.atleast_1d(data[name]) for name in data.dtype.names}
-
-
-def read_pvd(directory):
-    """(time, path) of every data set of particles.pvd in the MPM output directory."""
-    pvd = os.path.join(directory, "particles.pvd")
-    if not os.path.isfile(pvd):
-        sys.exit(f"constrained_swelling.py: missing {pvd} (run with Output/Write particles = true)")
-    series = []
-    for data_set in ElementTree.parse(pvd).getroot().iter("DataSet"):
-        series.append((float(data_set.get("timestep")),
-                       os.path.join(directory, data_set.get("file"))))
-    return series
-
-
 def read_points(vtu):
     """Point fields of one particles-NNNNN.vtu: Y (initial height), mu_over_kT, kind."""
-    reader = vtkXMLUnstructuredGridReader()
-    reader.SetFileName(vtu)
-    reader.Update()
-    grid = reader.GetOutput()
-    if grid.GetNumberOfPoints() == 0:
-        sys.exit(f"constrained_swelling.py: no points in {vtu}")
-    fields = grid.GetPointData()
-    position = vtk_to_numpy(grid.GetPoints().GetData()).astype(float)
-    displacement = vtk_to_numpy(fields.GetArray("displacement")).astype(float)
+    position, fields = read_vtu(vtu)
     return {
-        "Y": position[:, 1] - displacement[:, 1],
-        "mu": vtk_to_numpy(fields.GetArray("mu_over_kT")).astype(float),
-        "kind": vtk_to_numpy(fields.GetArray("kind")).astype(int),
+        "Y": position[:, 1] - fields["displacement"][:, 1].astype(float),
+        "mu": fields["mu_over_kT"].astype(float),
+        "kind": fields["kind"].astype(int),
     }
 
 

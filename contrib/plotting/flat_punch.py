@@ -71,7 +71,6 @@ import csv
 import os
 import re
 import sys
-import xml.etree.ElementTree as ElementTree
 
 import numpy as np
 
@@ -81,16 +80,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.colors import LogNorm  # noqa: E402
 
-try:
-    from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-except ImportError:  # older VTK layout
-    try:
-        from vtk import vtkXMLUnstructuredGridReader
-        from vtk.util.numpy_support import vtk_to_numpy
-    except ImportError:
-        sys.exit("flat_punch.py: needs VTK's Python module (Debian: python3-vtk9); "
-                 "run it with /usr/bin/python3")
+from gelmpm_files import read_csv, read_pvd, read_vtu  # noqa: E402
 
 
 # (directory name under --study, label)
@@ -120,22 +110,6 @@ def fail(message):
     sys.exit(2)
 
 
-def read_csv(file_name):
-    """Columns of a CSV file with a header row, as a dict of float arrays (empty cells: NaN)."""
-    data = np.genfromtxt(file_name, delimiter=",", names=True, dtype=float)
-    return {name: np.atleast_1d(data[name]) for name in data.dtype.names}
-
-
-def read_pvd(directory):
-    """(time, path) of every data set of particles.pvd, by time."""
-    pvd = os.path.join(directory, "particles.pvd")
-    series = []
-    for data_set in ElementTree.parse(pvd).getroot().iter("DataSet"):
-        series.append((float(data_set.get("timestep")),
-                       os.path.join(directory, data_set.get("file"))))
-    return sorted(series)
-
-
 def read_pieces(directory):
     """The names of 'Boundary conditions/Pieces' from parameters.prm (or original.prm)."""
     for name in ("parameters.prm", "original.prm"):
@@ -150,21 +124,13 @@ def read_pieces(directory):
 
 def read_points(vtu):
     """Point fields of one particles-NNNNN.vtu."""
-    reader = vtkXMLUnstructuredGridReader()
-    reader.SetFileName(vtu)
-    reader.Update()
-    grid = reader.GetOutput()
-    if grid.GetNumberOfPoints() == 0:
-        fail(f"no points in {vtu}")
-    fields = grid.GetPointData()
+    position, fields = read_vtu(vtu)
 
     def field(name):
-        array = fields.GetArray(name)
-        if array is None:
+        if name not in fields:
             fail(f"{vtu} has no field {name}")
-        return vtk_to_numpy(array).astype(float)
+        return fields[name].astype(float)
 
-    position = vtk_to_numpy(grid.GetPoints().GetData()).astype(float)
     displacement = field("displacement")
     return {
         "x": position[:, 0],

@@ -31,7 +31,6 @@ import argparse
 import os
 import re
 import sys
-import xml.etree.ElementTree as ElementTree
 
 import numpy as np
 
@@ -42,16 +41,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.colors import ListedColormap  # noqa: E402
 from matplotlib.patches import Patch, Rectangle  # noqa: E402
 
-try:
-    from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-except ImportError:  # older VTK layout
-    try:
-        from vtk import vtkXMLUnstructuredGridReader
-        from vtk.util.numpy_support import vtk_to_numpy
-    except ImportError:
-        sys.exit("material_points.py: needs VTK's Python module (Debian: python3-vtk9); "
-                 "run it with /usr/bin/python3")
+from gelmpm_files import read_pvd, read_vtu as read_vtu_file  # noqa: E402
 
 KIND_NAMES = ["interior", "boundary", "outer"]
 KIND_COLOURS = ["#cfe3f7", "#4a90d9", "#ffffff"]  # paper Fig. 4b: light blue, blue, white
@@ -63,29 +53,15 @@ POINT_KIND_NAMES = ["volume", "Dirichlet-Dirichlet", "Dirichlet-Neumann", "Neuma
 # Input
 
 def first_data_set(directory, series):
-    """Path of the first (t = 0) data set of <series>.pvd in the output directory."""
-    pvd = os.path.join(directory, series + ".pvd")
-    if not os.path.isfile(pvd):
-        hint = " (run with --set \"Output/Write grid=true\")" if series == "grid" else ""
-        sys.exit(f"material_points.py: missing {pvd}{hint}")
-    data_sets = ElementTree.parse(pvd).getroot().iter("DataSet")
-    first = min(data_sets, key=lambda d: float(d.get("timestep")))
-    return os.path.join(directory, first.get("file")), float(first.get("timestep"))
+    """Path and time of the first (t = 0) data set of <series>.pvd in the output directory."""
+    time, path = read_pvd(directory, series)[0]
+    return path, time
 
 
 def read_vtu(file_name):
-    """(points, point arrays, cells as lists of point ids) of a .vtu file."""
-    reader = vtkXMLUnstructuredGridReader()
-    reader.SetFileName(file_name)
-    reader.Update()
-    grid = reader.GetOutput()
-    points = vtk_to_numpy(grid.GetPoints().GetData())[:, :2]
-    data = grid.GetPointData()
-    arrays = {data.GetArrayName(i): vtk_to_numpy(data.GetArray(i))
-              for i in range(data.GetNumberOfArrays())}
-    cells = [[grid.GetCell(k).GetPointId(v) for v in range(grid.GetCell(k).GetNumberOfPoints())]
-             for k in range(grid.GetNumberOfCells())]
-    return points, arrays, np.array(cells)
+    """(points in the plane, point arrays, cells as lists of point ids) of a .vtu file."""
+    points, arrays, cells = read_vtu_file(file_name, with_cells=True)
+    return points[:, :2], arrays, cells
 
 
 def parameter(directory, name, default):
