@@ -18,6 +18,7 @@ jobs="${GELMPM_JOBS:-$(nproc)}"
 packages=(
   libdeal.ii-dev # deal.II 9.4 with Trilinos (Amesos, Epetra), MUMPS, ARPACK, Boost, TBB, MPI
   libvtk9-dev    # tests read written .vtu files back the way ParaView does
+  libopenblas0-pthread # optimised BLAS behind MUMPS and LAPACK (replaces the reference BLAS)
   numdiff        # ctest compares outputs with tolerances
   cmake          # build system
   g++            # compiler

@@ -66,6 +66,17 @@ namespace GelMPM
                               const LinearSolver                      &linear_solver,
                               const std::function<void(const Step &)> &on_step)
   {
+    // The solver's factorisation refers to this system's matrix: release it when the run ends.
+    struct ReleaseFactorisation
+    {
+      const LinearSolver &solver;
+      ~ReleaseFactorisation()
+      {
+        solver.new_pattern();
+      }
+    } release{linear_solver};
+    linear_solver.new_pattern();
+
     const double tau_d  = std::pow(time_stepping.characteristic_length, 2) / material.diffusivity();
     const double volume = system_->volume();
     const double scale_u  = material.shear_modulus() * std::pow(volume, 1. / 2.);

@@ -78,6 +78,14 @@ namespace GelMPM
 
 
   template <int dim>
+  Simulator<dim>::~Simulator()
+  {
+    // The direct solver's factorisation refers to the tangent of the system: release it first.
+    linear_solver.new_pattern();
+  }
+
+
+  template <int dim>
   void
   Simulator<dim>::print_header()
   {
@@ -401,9 +409,10 @@ namespace GelMPM
       dealii::TimerOutput::Scope scope(timer, "setup");
       if (grid_output || mode_output)
         grid_volume_points = GridOutput<dim>::count_volume_points(particles, spaces->u_space());
-      system->setup(particles);
-      // The grid reset gives the tangent a new sparsity pattern.
+      // The grid reset gives the tangent a new sparsity pattern; the factorisation of the old
+      // one goes first, while the matrix it refers to still exists.
       linear_solver.new_pattern();
+      system->setup(particles);
     }
     dealii::Vector<double> solution;
     for (unsigned int attempt = 1;; ++attempt)

@@ -12,11 +12,13 @@ namespace GelMPM
   LinearSolver::declare_parameters(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection("Linear solver");
-    prm.declare_entry(
-      "Solver",
-      "KLU",
-      dealii::Patterns::Selection("KLU|MUMPS"),
-      "Sparse direct solver for the Newton system (Trilinos Amesos): KLU or MUMPS.");
+    prm.declare_entry("Solver",
+                      "MUMPS",
+                      dealii::Patterns::Selection("KLU|MUMPS"),
+                      "Sparse direct solver for the Newton system (Trilinos Amesos): MUMPS "
+                      "(multifrontal, fast with an optimised BLAS such as OpenBLAS; the "
+                      "default) or KLU (no BLAS; slower on the wide stencils of B-splines, "
+                      "doc/performance.md).");
     prm.leave_subsection();
   }
 

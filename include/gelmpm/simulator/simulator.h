@@ -64,6 +64,9 @@ namespace GelMPM
               const SceneStructure     &structure,
               const std::string        &scene_file);
 
+    /** Releases the direct solver before the system whose matrix it factorised. */
+    ~Simulator();
+
     /** Run the scene. Returns 0 on success, 1 if the run stopped early (no convergence). */
     int
     run();

@@ -15,7 +15,7 @@ namespace GelMPM
   /**
    * @brief The "Linear solver" section and the direct solve of the Newton system.
    *
-   * A sparse direct solver from Trilinos' Amesos (KLU by default, MUMPS on request), used
+   * A sparse direct solver from Trilinos' Amesos (MUMPS by default, KLU on request), used
    * directly rather than through TrilinosWrappers::SolverDirect so that the symbolic
    * factorisation (ordering and structure analysis) is kept while the sparsity pattern does not
    * change: the Newton iterations and the retried attempts of a time step share one pattern, and
@@ -31,7 +31,11 @@ namespace GelMPM
     void
     parse_parameters(dealii::ParameterHandler &prm);
 
-    /** The sparsity pattern of the next matrix differs: forget the symbolic factorisation. */
+    /**
+     * The sparsity pattern of the next matrix differs: forget the symbolic factorisation. Call it
+     * before the matrix last solved with is destroyed or re-initialised (MUMPS refers to it when
+     * its factorisation is released), and before the solver's owner destroys that matrix.
+     */
     void
     new_pattern() const;
 
@@ -54,7 +58,7 @@ namespace GelMPM
     name() const;
 
   private:
-    std::string solver_type = "Amesos_Klu";
+    std::string solver_type = "Amesos_Mumps";
     // The kept factorisation: a cache, so solve() stays const for its callers.
     mutable std::unique_ptr<Epetra_LinearProblem> problem;
     mutable std::unique_ptr<Amesos_BaseSolver>    factorisation;
