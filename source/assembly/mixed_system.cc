@@ -1,5 +1,6 @@
 #include <gelmpm/assembly/mixed_system.h>
 
+#include <deal.II/base/parallel.h>
 #include <deal.II/base/work_stream.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
@@ -227,32 +228,38 @@ namespace GelMPM
     u_gradients.resize(n_u_shapes);
     mu_values.resize(n_mu_shapes);
     mu_gradients.resize(n_mu_shapes);
-    {
-      std::vector<double>         values, scratch_values;
-      std::vector<Tensor<1, dim>> gradients, scratch_gradients;
-      for (const auto &r : points)
-        {
-          const Block &b = blocks[r.block];
-          for (const auto *space : {&spaces_.u(), &spaces_.mu()})
-            {
-              const bool         is_u = (space == &spaces_.u());
-              const unsigned int cell = is_u ? b.u_cell : b.mu_cell;
-              const unsigned int n    = space->cell_dofs(cell).size();
-              values.resize(n);
-              gradients.resize(n);
-              scratch_values.resize(space->space().functions_per_cell());
-              scratch_gradients.resize(space->space().functions_per_cell());
-              space->evaluate(r.x, cell, values, gradients, scratch_values, scratch_gradients);
-              const unsigned int offset = is_u ? r.u_offset : r.mu_offset;
-              std::copy(values.begin(),
-                        values.end(),
-                        (is_u ? u_values : mu_values).begin() + offset);
-              std::copy(gradients.begin(),
-                        gradients.end(),
-                        (is_u ? u_gradients : mu_gradients).begin() + offset);
-            }
-        }
-    }
+    // Every point writes its own ranges of the arrays: evaluate them in parallel.
+    dealii::parallel::apply_to_subranges(
+      0u,
+      static_cast<unsigned int>(points.size()),
+      [this](const unsigned int begin, const unsigned int end) {
+        std::vector<double>         values, scratch_values;
+        std::vector<Tensor<1, dim>> gradients, scratch_gradients;
+        for (unsigned int p = begin; p < end; ++p)
+          {
+            const PointRecord &r = points[p];
+            const Block       &b = blocks[r.block];
+            for (const auto *space : {&spaces_.u(), &spaces_.mu()})
+              {
+                const bool         is_u = (space == &spaces_.u());
+                const unsigned int cell = is_u ? b.u_cell : b.mu_cell;
+                const unsigned int n    = space->cell_dofs(cell).size();
+                values.resize(n);
+                gradients.resize(n);
+                scratch_values.resize(space->space().functions_per_cell());
+                scratch_gradients.resize(space->space().functions_per_cell());
+                space->evaluate(r.x, cell, values, gradients, scratch_values, scratch_gradients);
+                const unsigned int offset = is_u ? r.u_offset : r.mu_offset;
+                std::copy(values.begin(),
+                          values.end(),
+                          (is_u ? u_values : mu_values).begin() + offset);
+                std::copy(gradients.begin(),
+                          gradients.end(),
+                          (is_u ? u_gradients : mu_gradients).begin() + offset);
+              }
+          }
+      },
+      256);
 
     // Sparsity: every unknown of a cell with points couples with every other one of that cell.
     const unsigned int                           n_u = spaces_.n_u_dofs();
