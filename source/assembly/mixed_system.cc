@@ -458,8 +458,10 @@ namespace GelMPM
         for (unsigned int J = 0; J < dim; ++J)
           for (unsigned int k = 0; k < dim; ++k)
             s.A_dot_G[c][i][J][k] = state.A_n[i][J][k] * s.G[c];
+    // K_uu is symmetric (A has the major symmetry A_iJkL = A_kLiJ): compute one triangle of
+    // function pairs and mirror it.
     for (unsigned int a = 0; a < s.n_u; ++a)
-      for (unsigned int c = 0; c < s.n_u; ++c)
+      for (unsigned int c = 0; c <= a; ++c)
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int k = 0; k < dim; ++k)
             {
@@ -467,6 +469,8 @@ namespace GelMPM
               for (unsigned int J = 0; J < dim; ++J)
                 value += s.G[a][J] * s.A_dot_G[c][i][J][k];
               K(dim * a + i, dim * c + k) += V * value;
+              if (c != a)
+                K(dim * c + k, dim * a + i) += V * value;
             }
     for (unsigned int a = 0; a < s.n_u; ++a)
       {
