@@ -12,9 +12,10 @@ namespace GelMPM
   condition_number_estimate(const dealii::TrilinosWrappers::SparseMatrix &K)
   {
     if (K.m() > 10000)
-      throw std::runtime_error("the condition number is estimated with a dense matrix; " +
+      throw std::runtime_error("'Stability/Condition number' uses a dense matrix; " +
                                std::to_string(K.m()) +
-                               " unknowns are too many (at most 10000): use a coarser grid");
+                               " unknowns are too many (at most 10000): use a coarser grid or "
+                               "set it to false");
     dealii::LAPACKFullMatrix<double> dense(K.m(), K.n());
     for (unsigned int row = 0; row < K.m(); ++row)
       for (auto entry = K.begin(row); entry != K.end(row); ++entry)

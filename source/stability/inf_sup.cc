@@ -41,10 +41,10 @@ namespace GelMPM
   {
     const unsigned int n_mu = K.m() - n_u;
     if (n_u > 8000)
-      throw std::runtime_error("the inf-sup constant is computed with dense matrices; " +
+      throw std::runtime_error("'Stability/Inf-sup constant' uses dense matrices; " +
                                std::to_string(n_u) +
                                " displacement unknowns are too many (at most 8000): use a "
-                               "coarser grid for this analysis");
+                               "coarser grid for this analysis or set it to false");
     if (mass_mu.m() != n_mu || mass_mu.n() != n_mu)
       throw std::logic_error("mass matrix does not match the chemical-potential block");
 
