@@ -9,7 +9,7 @@ reference of each run, and writes the tables and plots (doc/performance.md):
   /usr/bin/python3 contrib/benchmarks/speed_accuracy.py --quick    # < 10 min, see below
 
 Each sweep varies one choice around the paper's setting (Q2-Q2SD on 20 x 160 u cells over
-0.5 x 4 h_0, 6 x 6 points per cell, Table 1 penalties, the step caps of eq. (64), KLU, t to 1713):
+0.5 x 4 h_0, 6 x 6 points per cell, Table 1 penalties, the step caps of eq. (64), MUMPS (the default), t to 1713):
   grid       u cells 10 x 80, 20 x 160, 40 x 320 (mu grid: the coarse one, half of it); the body
              0.2 x 1 h_0 stays fixed, its edges lie on cell faces of both grids at every level.
              On 10 x 80 the body is 2 mu cells wide, which the extended B-splines refuse (the run
@@ -18,7 +18,7 @@ Each sweep varies one choice around the paper's setting (Q2-Q2SD on 20 x 160 u c
   points     material points per cell and direction 2, 3, 4, 6, 8
   step_caps  the caps of 'Time stepping/Step caps' times 0.25, 0.5, 1, 2, 4
   penalty    Nitsche gamma_u 1e3, 1e4 and gamma_mu 25, 250 (all four pairs)
-  solver     'Linear solver/Solver' KLU, MUMPS
+  solver     'Linear solver/Solver' MUMPS (the default), KLU
 The paper's setting is one level of every sweep; it is run once and shared by all sweeps.
 
 Per run (one set of parameters): the whole gelmpm process is run --repeats times under
@@ -36,9 +36,10 @@ since mu_error needs them; --no-particles skips them (mu_error then empty). The 
 of repeats after the first are deleted after the errors are taken.
 
 --quick: fewer levels (grid 10x80, 20x160; degree 2, 3; points 2, 4, 6; caps x0.5, x1, x2;
-penalty gamma_u 1e4 and gamma_mu 250 singly; KLU, MUMPS), 1 repeat, and end time 4.453 tau_d
-(the sixth profile time) instead of 1713, so there is no eq_error; dh_error then covers
-0.01 <= t <= 4.453 only. Errors of quick runs are therefore not comparable with full runs.
+penalty gamma_u 1e4 and gamma_mu 250 singly; MUMPS, KLU), 3 repeats as in full mode, and end time
+0.4531 tau_d (the fourth profile time, about 70 of the 953 steps) instead of 1713, so there is no
+eq_error; dh_error then covers 0.01 <= t <= 0.4531 only, where the start-up under the top
+dominates it. Errors of quick runs are therefore not comparable with full runs.
 
 Results (default output/speed_accuracy; output/speed_accuracy_quick with --quick):
   <sweep>.csv, all.csv        one row per (sweep, level); all.csv is every sweep
@@ -55,7 +56,7 @@ missing (e.g. more --repeats, or other --sweeps); --rerun ignores the cache.
 Other options: --sweeps grid,points (a subset), --repeats N, --output DIR, --estimate (print the
 run list and the estimate, run nothing), --tabulate-only (tables and plots of the cached runs
 only, e.g. after an interrupted sweep), --paper-seconds S (the estimate's calibration; default
-from a cached paper-setting run, else 60). Environment: GELMPM_BUILD_DIR (default build/); copy
+from a cached paper-setting run, else 45). Environment: GELMPM_BUILD_DIR (default build/); copy
 the binaries elsewhere first if they may be rebuilt during the sweep.
 Needs /usr/bin/python3 with numpy, matplotlib and VTK (Debian python3-numpy, python3-matplotlib,
 python3-vtk9).
@@ -86,7 +87,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 SCENE = os.path.join(TOP, "prm", "constrained_swelling.prm")
 PAPER_CAPS = [(5, 0.0125), (20, 0.0625), (40, 0.125), (100, 0.625)]
 PROFILE_TIMES = [0.001197, 0.008589, 0.1281, 0.4531, 1.953, 4.453, 16.06, 1713]
-QUICK_END = 4.453
+QUICK_END = 0.4531
 PAPER_CELLS = (20, 160)
 DOMAIN = (0.5, 4.0)
 BODY = (0.2, 1.0)
@@ -125,7 +126,7 @@ def sweep_levels(quick):
                      dict(([("Nitsche/Displacement penalty", "%g" % gu)] if gu != 1e3 else [])
                           + ([("Nitsche/Chemical potential penalty", "%g" % gm)] if gm != 25 else [])))
                     for gu, gm in penalties],
-        "solver": [(s, s, {} if s == "KLU" else {"Linear solver/Solver": s}) for s in ["KLU", "MUMPS"]],
+        "solver": [(s, s, {} if s == "MUMPS" else {"Linear solver/Solver": s}) for s in ["MUMPS", "KLU"]],
     }
     return levels
 
@@ -148,10 +149,10 @@ def relative_cost(overrides, end_time):
     per_step = (0.6 * cell_ratio * (n / 6.0) ** 2 * ((p + 1) / 3.0) ** 4
                 + 0.4 * cell_ratio ** 1.2 * ((p + 1) / 3.0) ** 2)
     steps = scale ** -0.95
-    if overrides.get("Linear solver/Solver") == "MUMPS":
-        per_step *= 1.15
+    if overrides.get("Linear solver/Solver") == "KLU":
+        per_step *= 1.4
     if end_time < 1000:
-        steps *= 0.4
+        steps *= 0.08
     return per_step * steps
 
 
@@ -428,8 +429,8 @@ def main():
         description="Speed-accuracy benchmark of paper §4.1 (see the top of this file).",
         formatter_class=argparse.ArgumentDefaultsHelpFormatter)
     parser.add_argument("--quick", action="store_true",
-                        help="fewer levels, 1 repeat, end time %g tau_d (< 10 min)" % QUICK_END)
-    parser.add_argument("--repeats", type=int, help="runs of each process (default 3, quick 1)")
+                        help="fewer levels, end time %g tau_d (< 10 min)" % QUICK_END)
+    parser.add_argument("--repeats", type=int, help="runs of each process (default 3)")
     parser.add_argument("--sweeps", default="grid,degree,points,step_caps,penalty,solver")
     parser.add_argument("--output", help="default output/speed_accuracy[_quick]")
     parser.add_argument("--no-particles", action="store_true",
@@ -444,7 +445,7 @@ def main():
     parser.add_argument("--paper-seconds", type=float,
                         help="wall time of one paper-setting run for the estimate")
     arguments = parser.parse_args()
-    repeats = arguments.repeats or (1 if arguments.quick else 3)
+    repeats = arguments.repeats or 3
     end_time = QUICK_END if arguments.quick else 1713.0
     out = os.path.abspath(arguments.output or os.path.join(
         TOP, "output", "speed_accuracy_quick" if arguments.quick else "speed_accuracy"))
@@ -482,7 +483,7 @@ def main():
     if paper_seconds is None:
         known = [cached("paper", k) for k in range(repeats)]
         known = [r["wall"] for r in known if r and r["status"] == 0]
-        paper_seconds = statistics.median(known) if known else 60.0
+        paper_seconds = statistics.median(known) if known else 45.0
     todo = [(key, k) for key in runs for k in range(repeats) if cached(key, k) is None]
     if arguments.tabulate_only:
         todo = []
@@ -490,7 +491,7 @@ def main():
     mode = "quick" if arguments.quick else "full"
     print("speed_accuracy.py: %s mode, sweeps %s, %d distinct runs x %d repeat(s)%s, end time %g tau_d"
           % (mode, ",".join(sweeps), len(runs), repeats,
-             " (quick mode: 1 repeat, fewer levels, shortened end time)" if arguments.quick else "",
+             " (quick mode: fewer levels, shortened end time)" if arguments.quick else "",
              end_time))
     print("  binary %s; results in %s" % (gelmpm, out))
     print("  %d of %d process runs to do (the rest cached); estimated %.0f min (a paper-setting run "

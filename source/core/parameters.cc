@@ -234,4 +234,14 @@ namespace GelMPM
       }
     return values;
   }
+
+
+  std::string
+  entry_value(const double x)
+  {
+    std::ostringstream text;
+    text.precision(17);
+    text << x;
+    return text.str();
+  }
 } // namespace GelMPM

@@ -1,6 +1,5 @@
 #include <gelmpm/fem/fem_constrained_swelling.h>
 
-#include <deal.II/base/timer.h>
 #include <deal.II/grid/grid_generator.h>
 
 #include <cmath>
@@ -66,90 +65,26 @@ namespace GelMPM
                               const LinearSolver                      &linear_solver,
                               const std::function<void(const Step &)> &on_step)
   {
-    // The solver's factorisation refers to this system's matrix: release it when the run ends.
-    struct ReleaseFactorisation
-    {
-      const LinearSolver &solver;
-      ~ReleaseFactorisation()
-      {
-        solver.new_pattern();
-      }
-    } release{linear_solver};
-    linear_solver.new_pattern();
-
-    const double tau_d  = std::pow(time_stepping.characteristic_length, 2) / material.diffusivity();
-    const double volume = system_->volume();
-    const double scale_u  = material.shear_modulus() * std::pow(volume, 1. / 2.);
-    const double scale_mu = material.kT_over_nu() * volume;
-    dealii::TimerOutput timer(std::cout,
-                              dealii::TimerOutput::never,
-                              dealii::TimerOutput::wall_times);
-
-    double                 time = 0., dt = time_stepping.initial_step;
-    unsigned int           step = 0;
-    dealii::Vector<double> solution;
-    newton_iterations = 0;
-    failure_.clear();
-    while (time < time_stepping.end_time * (1. - 1e-12))
-      {
-        if (step >= time_stepping.maximum_steps)
-          {
-            failure_ = "stopped after the maximum number of steps (" +
-                       std::to_string(time_stepping.maximum_steps) + ")";
-            return false;
-          }
-        for (unsigned int attempt = 1;; ++attempt)
-          {
-            const double step_dt = time_stepping.next_step(time, dt);
-            system_->initial_guess(solution);
-            const NewtonReport report = solve_newton(*system_,
-                                                     solution,
-                                                     step_dt * tau_d,
-                                                     newton,
-                                                     linear_solver,
-                                                     scale_u,
-                                                     scale_mu,
-                                                     timer);
-            if (!report.converged)
-              {
-                dt = step_dt * time_stepping.cut_factor;
-                if (dt < time_stepping.minimum_step)
-                  {
-                    std::ostringstream message;
-                    message << "the step at t/tau_d = " << time << " failed (" << report.failure
-                            << ") and would fall below the minimum step";
-                    failure_ = message.str();
-                    return false;
-                  }
-                continue;
-              }
-            system_->update(solution);
-            const bool shortened = step_dt < std::min(dt, time_stepping.cap(time)) * (1. - 1e-12);
-            time += step_dt;
-            ++step;
-            newton_iterations += report.iterations;
-
-            Step record;
-            record.number            = step;
-            record.t_over_tau_d      = time;
-            record.dt_over_tau_d     = step_dt;
-            record.newton_iterations = report.iterations;
-            record.attempts          = attempt;
-            record.residual_u        = report.residual_u;
-            record.residual_mu       = report.residual_mu;
-            record.delta_h_over_h0 =
-              system_->mean_boundary_displacement(top, 1) / parameters.height;
-            if (on_step)
-              on_step(record);
-
-            if (!shortened)
-              dt = step_dt;
-            if (report.iterations < time_stepping.growth_below)
-              dt *= time_stepping.growth_factor;
-            break;
-          }
-      }
-    return true;
+    // The boundary data of §4.1 do not change in time: nothing to prescribe per step.
+    const FemRunResult result =
+      run_fem_time_loop<2>(*system_,
+                           material,
+                           time_stepping,
+                           newton,
+                           linear_solver,
+                           {},
+                           [&](const FemStep &step) {
+                             if (!on_step)
+                               return;
+                             Step record;
+                             static_cast<FemStep &>(record) = step;
+                             record.delta_h_over_h0 =
+                               system_->mean_boundary_displacement(top, 1) / parameters.height;
+                             on_step(record);
+                           });
+    failure_          = result.failure;
+    newton_iterations = result.newton_iterations;
+    return result.completed;
   }
 
 

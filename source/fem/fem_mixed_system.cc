@@ -2,6 +2,7 @@
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/dofs/dof_renumbering.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
@@ -11,6 +12,8 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <algorithm>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -54,6 +57,21 @@ namespace GelMPM
                                       std::to_string(dim) + "D");
         mask[c] = true;
       }
+  }
+
+
+  template <int dim>
+  void
+  FemMixedSystem<dim>::set_displacement_increment(const dealii::types::boundary_id id,
+                                                  const unsigned int               component,
+                                                  const double                     delta)
+  {
+    const auto entry = displacement_increments.find({id, component});
+    if (entry == displacement_increments.end())
+      throw std::invalid_argument("FemMixedSystem: displacement component " +
+                                  std::to_string(component) + " of boundary " + std::to_string(id) +
+                                  " is not held (constrain_displacement before setup)");
+    entry->second.second = delta;
   }
 
 
@@ -126,6 +144,23 @@ namespace GelMPM
     zero_constraints.close();
     constraints.close();
 
+    displacement_increments.clear();
+    for (const auto &c : displacement_constraints)
+      for (unsigned int component = 0; component < dim; ++component)
+        if (c.second[component])
+          {
+            std::vector<bool> mask(dim + 1, false);
+            mask[component] = true;
+            const dealii::IndexSet dofs =
+              dealii::DoFTools::extract_boundary_dofs(dof_handler_,
+                                                      dealii::ComponentMask(mask),
+                                                      {c.first});
+            std::vector<dealii::types::global_dof_index> indices;
+            for (const auto i : dofs)
+              indices.push_back(i);
+            displacement_increments[{c.first, component}] = {indices, 0.};
+          }
+
     dealii::DynamicSparsityPattern dsp(dof_handler_.n_dofs());
     dealii::DoFTools::make_sparsity_pattern(dof_handler_, dsp, zero_constraints, false);
     dealii::SparsityPattern pattern;
@@ -147,6 +182,9 @@ namespace GelMPM
     for (unsigned int i = n_u_dofs_; i < solution.size(); ++i)
       solution(i) = state_(i);
     constraints.distribute(solution);
+    for (const auto &entry : displacement_increments)
+      for (const auto i : entry.second.first)
+        solution(i) = entry.second.second;
   }
 
 
@@ -373,6 +411,73 @@ namespace GelMPM
     if (area == 0.)
       throw std::invalid_argument("FemMixedSystem: no boundary with id " + std::to_string(id));
     return integral / area;
+  }
+
+
+  template <int dim>
+  typename FemMixedSystem<dim>::DeformationSummary
+  FemMixedSystem<dim>::deformation_summary() const
+  {
+    const dealii::QGauss<dim>                quadrature(fe.degree + 1);
+    dealii::FEValues<dim>                    fe_values(fe,
+                                    quadrature,
+                                    dealii::update_gradients | dealii::update_JxW_values);
+    const dealii::FEValuesExtractors::Vector u_extractor(0);
+    std::vector<Tensor<2, dim>>              grad_u(quadrature.size());
+    DeformationSummary                       summary;
+    summary.min_det_F         = std::numeric_limits<double>::max();
+    summary.max_stretch_ratio = 1.;
+    for (const auto &cell : dof_handler_.active_cell_iterators())
+      {
+        fe_values.reinit(cell);
+        fe_values[u_extractor].get_function_gradients(state_, grad_u);
+        for (unsigned int q = 0; q < quadrature.size(); ++q)
+          {
+            const Tensor<2, dim> F     = dealii::unit_symmetric_tensor<dim>() + grad_u[q];
+            const double         det_F = dealii::determinant(F);
+            summary.deformed_volume += det_F * fe_values.JxW(q);
+            summary.min_det_F  = std::min(summary.min_det_F, det_F);
+            const auto squares = dealii::eigenvalues(dealii::symmetrize(dealii::transpose(F) * F));
+            // Eigenvalues of C = F^T F, largest first; an inverted or collapsed point has an
+            // unbounded distortion.
+            summary.max_stretch_ratio =
+              squares[dim - 1] > 0.
+                ? std::max(summary.max_stretch_ratio, std::sqrt(squares[0] / squares[dim - 1]))
+                : std::numeric_limits<double>::infinity();
+          }
+      }
+    return summary;
+  }
+
+
+  template <int dim>
+  std::vector<typename FemMixedSystem<dim>::BoundarySample>
+  FemMixedSystem<dim>::boundary_samples(const dealii::types::boundary_id id,
+                                        const unsigned int               per_face) const
+  {
+    const dealii::QIterated<dim - 1> quadrature(dealii::QTrapezoid<1>(), std::max(per_face, 1u));
+    dealii::FEFaceValues<dim>        fe_face_values(fe,
+                                             quadrature,
+                                             dealii::update_values |
+                                               dealii::update_quadrature_points);
+    const dealii::FEValuesExtractors::Vector u_extractor(0);
+    const dealii::FEValuesExtractors::Scalar mu_extractor(dim);
+    std::vector<Tensor<1, dim>>              u(quadrature.size());
+    std::vector<double>                      mu(quadrature.size());
+    std::vector<BoundarySample>              samples;
+    for (const auto &cell : dof_handler_.active_cell_iterators())
+      for (const auto face : cell->face_indices())
+        if (cell->face(face)->at_boundary() && cell->face(face)->boundary_id() == id)
+          {
+            fe_face_values.reinit(cell, face);
+            fe_face_values[u_extractor].get_function_values(state_, u);
+            fe_face_values[mu_extractor].get_function_values(state_, mu);
+            for (unsigned int q = 0; q < quadrature.size(); ++q)
+              samples.push_back({fe_face_values.quadrature_point(q), u[q], mu[q]});
+          }
+    if (samples.empty())
+      throw std::invalid_argument("FemMixedSystem: no boundary with id " + std::to_string(id));
+    return samples;
   }
 
 

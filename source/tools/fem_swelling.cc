@@ -2,11 +2,11 @@
 // finite-element peer of the MPM (FemMixedSystem: Taylor-Hood on a conforming mesh of the initial
 // configuration, same equations, material, Newton test and time stepping; doc/fem_peer.md).
 // Writes statistics.csv (one row per converged step) and prints the wall time.
+#include <gelmpm/core/parameters.h>
 #include <gelmpm/fem/fem_constrained_swelling.h>
 #include <gelmpm/io/statistics_file.h>
 
 #include <deal.II/base/mpi.h>
-#include <deal.II/base/parameter_handler.h>
 
 #include <boost/program_options.hpp>
 #include <chrono>
@@ -86,25 +86,15 @@ main(int argc, char **argv)
 
       dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
 
-      // The time stepping and Newton settings through their own parameter sections, so that
-      // they are checked exactly as for gelmpm.
-      dealii::ParameterHandler prm;
-      GelMPM::TimeStepping::declare_parameters(prm);
-      GelMPM::NewtonSettings::declare_parameters(prm);
-      prm.enter_subsection("Time stepping");
-      prm.set("Initial step", initial_step);
-      prm.set("End time", end_time);
-      prm.set("Step caps", caps);
-      prm.set("Stop at times", stops);
-      prm.leave_subsection();
-      prm.enter_subsection("Newton");
-      prm.set("Tolerance", tolerance);
-      prm.set("Maximum iterations", std::to_string(max_iterations));
-      prm.leave_subsection();
-      GelMPM::TimeStepping time_stepping;
-      time_stepping.parse_parameters(prm);
-      GelMPM::NewtonSettings newton;
-      newton.parse_parameters(prm);
+      const auto settings =
+        GelMPM::fem_run_settings({{"Initial step", GelMPM::entry_value(initial_step)},
+                                  {"End time", GelMPM::entry_value(end_time)},
+                                  {"Step caps", caps},
+                                  {"Stop at times", stops}},
+                                 {{"Tolerance", GelMPM::entry_value(tolerance)},
+                                  {"Maximum iterations", std::to_string(max_iterations)}});
+      const auto                &time_stepping = settings.time_stepping;
+      const auto                &newton        = settings.newton;
       const GelMPM::LinearSolver linear_solver;
 
       const auto                      start = std::chrono::steady_clock::now();

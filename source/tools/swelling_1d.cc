@@ -4,7 +4,6 @@
 #include <gelmpm/reference/constrained_swelling_1d.h>
 
 #include <boost/program_options.hpp>
-
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -43,29 +42,37 @@ main(int argc, char **argv)
   unsigned int                              n_samples;
   po::options_description                   options(
     "gelmpm-swelling-1d: finite-difference reference for constrained swelling (paper §4.1).\n"
-    "Lengths in h_0 (initial thickness), times in tau_d = h_0^2/D, mu in k_BT.\nOptions");
-  options.add_options()("help", "this text")(
-    "cells", po::value(&parameters.n_cells)->default_value(800), "finite-difference cells")(
+                      "Lengths in h_0 (initial thickness), times in tau_d = h_0^2/D, mu in k_BT.\nOptions");
+  options.add_options()("help", "this text")("cells",
+                                             po::value(&parameters.n_cells)->default_value(800),
+                                             "finite-difference cells")(
     "grading",
     po::value(&parameters.grading)->default_value(2.),
     "node grading towards the top, Y_i = 1 - (1 - i/n)^g")(
-    "first-step", po::value(&parameters.first_step)->default_value(1e-9), "first time step")(
-    "growth",
-    po::value(&parameters.growth)->default_value(1.01),
-    "growth factor of consecutive time steps")(
-    "chi", po::value(&parameters.chi)->default_value(0.1), "Flory-Huggins chi")(
-    "N-nu", po::value(&parameters.N_nu)->default_value(7.299e-3), "N nu")(
-    "lambda-0",
-    po::value(&parameters.lambda_0)->default_value(1.2801),
-    "initial isotropic stretch from the dry state")(
-    "mu-top", po::value(&parameters.mu_top)->default_value(0.), "mu/k_BT on the top for t > 0")(
+    "first-step",
+    po::value(&parameters.first_step)->default_value(1e-9),
+    "first time step")("growth",
+                       po::value(&parameters.growth)->default_value(1.01),
+                       "growth factor of consecutive time steps")(
+    "chi",
+    po::value(&parameters.chi)->default_value(0.1),
+    "Flory-Huggins chi")("N-nu",
+                         po::value(&parameters.N_nu)->default_value(7.299e-3),
+                         "N nu")("lambda-0",
+                                 po::value(&parameters.lambda_0)->default_value(1.2801),
+                                 "initial isotropic stretch from the dry state")(
+    "mu-top",
+    po::value(&parameters.mu_top)->default_value(0.),
+    "mu/k_BT on the top for t > 0")(
     "times",
     po::value(&times_text)->default_value("0.001197,0.008589,0.1281,0.4531,1.953,4.453,16.06,1713"),
     "comma-separated times of the profiles; the last one ends the run")(
     "samples",
     po::value(&n_samples)->default_value(400),
     "log-spaced times of the thickness curve, from 1e-6 to the end")(
-    "output", po::value(&directory)->default_value("output/swelling_1d"), "output directory");
+    "output",
+    po::value(&directory)->default_value("output/swelling_1d"),
+    "output directory");
 
   try
     {
@@ -78,7 +85,7 @@ main(int argc, char **argv)
         }
       po::notify(vm);
       const std::vector<double> profile_times = parse_times(times_text);
-      const double end = *std::max_element(profile_times.begin(), profile_times.end());
+      const double              end = *std::max_element(profile_times.begin(), profile_times.end());
 
       std::set<double> times(profile_times.begin(), profile_times.end());
       for (unsigned int k = 0; k < n_samples; ++k)
@@ -110,8 +117,9 @@ main(int argc, char **argv)
             }
         }
       const double lambda_eq = reference.stretch_at(parameters.mu_top);
-      std::cout << "gelmpm-swelling-1d: " << reference.n_steps() << " steps; equilibrium Delta h/h_0 = "
-                << std::setprecision(8) << lambda_eq - 1. << " (P_22 = 0 at mu = mu_top)\n"
+      std::cout << "gelmpm-swelling-1d: " << reference.n_steps()
+                << " steps; equilibrium Delta h/h_0 = " << std::setprecision(8) << lambda_eq - 1.
+                << " (P_22 = 0 at mu = mu_top)\n"
                 << "  results: " << directory << "/reference_thickness.csv, " << directory
                 << "/reference_profiles.csv" << std::endl;
     }

@@ -9,6 +9,7 @@
 //   swelling relaxes slowly), Delta h/h_0 equals lambda(mu = 0) - 1 of
 //   ConstrainedSwelling1D::stretch_at(0) to 1e-8 relative (a homogeneous state is exact in the FE
 //   space).
+#include <gelmpm/core/parameters.h>
 #include <gelmpm/fem/fem_constrained_swelling.h>
 #include <gelmpm/reference/constrained_swelling_1d.h>
 
@@ -37,18 +38,12 @@ namespace
       const std::string                        &caps)
   {
     const GelMPM::FloryRehnerGel<2> material;
-    dealii::ParameterHandler        prm;
-    GelMPM::TimeStepping::declare_parameters(prm);
-    GelMPM::NewtonSettings::declare_parameters(prm);
-    prm.enter_subsection("Time stepping");
-    prm.set("Initial step", "8.75e-5");
-    prm.set("End time", end_time);
-    prm.set("Step caps", caps);
-    prm.leave_subsection();
-    GelMPM::TimeStepping time_stepping;
-    time_stepping.parse_parameters(prm);
-    GelMPM::NewtonSettings newton;
-    newton.parse_parameters(prm);
+    const auto  settings      = GelMPM::fem_run_settings({{"Initial step", "8.75e-5"},
+                                                          {"End time", GelMPM::entry_value(end_time)},
+                                                          {"Step caps", caps}},
+                                                   {});
+    const auto &time_stepping = settings.time_stepping;
+    const auto &newton        = settings.newton;
 
     FemConstrainedSwelling swelling(material, parameters);
     Run                    result;

@@ -116,6 +116,10 @@ namespace GelMPM
                   const std::string              &entry,
                   const std::string              &entry_path,
                   const unsigned int              n);
+
+  /** @p x as the text of a parameter entry, with all its digits (round-trips exactly). */
+  std::string
+  entry_value(const double x);
 } // namespace GelMPM
 
 #endif

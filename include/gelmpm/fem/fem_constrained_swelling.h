@@ -2,6 +2,7 @@
 #define gelmpm_fem_fem_constrained_swelling_h
 
 #include <gelmpm/fem/fem_mixed_system.h>
+#include <gelmpm/fem/fem_time_loop.h>
 #include <gelmpm/material/flory_rehner_gel.h>
 #include <gelmpm/solvers/linear_solver.h>
 #include <gelmpm/solvers/newton.h>
@@ -20,10 +21,7 @@ namespace GelMPM
    * mesh, fixed bottom (u = 0), rollers on the sides (u_x = 0), on the top mu = mu_top for t > 0
    * and u_x = 0 (the tangential constraint of §4.1); traction free and impermeable elsewhere.
    *
-   * The time loop is the material point simulator's: a failed Newton solve (solve_newton, same
-   * convergence test and residual scales G |Omega_0|^((dim-1)/dim) and (k_BT/nu) |Omega_0|)
-   * retries with the step times the cut factor; convergence in fewer than 'growth below'
-   * iterations grows the next step; TimeStepping's caps and stop times bound and place the steps.
+   * The time loop is the material point simulator's (run_fem_time_loop).
    */
   class FemConstrainedSwelling
   {
@@ -42,17 +40,11 @@ namespace GelMPM
         FemMixedSystem<2>::Formulation::previously_converged_lagrangian;
     };
 
-    /** What a converged step did. */
-    struct Step
+    /** What a converged step did: the loop's record and the thickness change. */
+    struct Step : FemStep
     {
-      unsigned int number;
-      double       t_over_tau_d;
-      double       dt_over_tau_d;
-      unsigned int newton_iterations;
-      unsigned int attempts;
-      double       residual_u, residual_mu; // scaled, as NewtonReport
       /** Mean top displacement over the initial thickness. */
-      double delta_h_over_h0;
+      double delta_h_over_h0 = 0.;
     };
 
     /** Builds the mesh and the system; throws std::invalid_argument on invalid parameters. */

@@ -3,6 +3,7 @@
 
 #include <gelmpm/material/flory_rehner_gel.h>
 
+#include <deal.II/base/point.h>
 #include <deal.II/base/types.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
@@ -12,6 +13,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <map>
+#include <utility>
 #include <vector>
 
 namespace GelMPM
@@ -76,6 +78,17 @@ namespace GelMPM
     constrain_displacement(const dealii::types::boundary_id id,
                            const std::vector<unsigned int> &components);
 
+    /**
+     * For the coming step, move the held displacement component @p component of boundary @p id
+     * by @p delta (u_{n+1} = u_n + delta there); the component must have been held with
+     * constrain_displacement(). Holds until changed; 0 after setup(). Used for prescribed
+     * motions such as a punch: call it before initial_guess() of every step.
+     */
+    void
+    set_displacement_increment(const dealii::types::boundary_id id,
+                               const unsigned int               component,
+                               const double                     delta);
+
     /** Prescribe mu/k_BT = @p mu_bar on boundary @p id for t > 0. */
     void
     prescribe_chemical_potential(const dealii::types::boundary_id id, const double mu_bar);
@@ -128,6 +141,36 @@ namespace GelMPM
     mean_boundary_displacement(const dealii::types::boundary_id id,
                                const unsigned int               component) const;
 
+    /** The converged deformation F_n = I + grad_0 u_n over the quadrature points. */
+    struct DeformationSummary
+    {
+      /** Smallest det F_n (volume ratio to Omega_0); <= 0 means an inverted cell. */
+      double min_det_F = 0.;
+      /** Largest ratio of the principal stretches of F_n, lambda_max/lambda_min: the distortion of
+       * the mesh's cells relative to their shape in Omega_0 (1: undistorted). */
+      double max_stretch_ratio = 0.;
+      /** int det F_n dV_0: the volume of Omega_n. */
+      double deformed_volume = 0.;
+    };
+
+    DeformationSummary
+    deformation_summary() const;
+
+    /** The converged fields at one point of a boundary. */
+    struct BoundarySample
+    {
+      dealii::Point<dim>     X;  // position in Omega_0
+      dealii::Tensor<1, dim> u;  // u_n
+      double                 mu; // mu_n / k_BT
+    };
+
+    /**
+     * The converged fields at @p per_face + 1 equally spaced points of every face of boundary
+     * @p id (points shared by two faces appear twice), in cell order.
+     */
+    std::vector<BoundarySample>
+    boundary_samples(const dealii::types::boundary_id id, const unsigned int per_face) const;
+
     /** |Omega_0|. */
     double
     volume() const;
@@ -155,6 +198,10 @@ namespace GelMPM
 
     std::map<dealii::types::boundary_id, std::vector<bool>> displacement_constraints;
     std::map<dealii::types::boundary_id, double>            mu_constraints;
+    /** Per (boundary, component) held: its DoFs and the increment of the coming step. */
+    std::map<std::pair<dealii::types::boundary_id, unsigned int>,
+             std::pair<std::vector<dealii::types::global_dof_index>, double>>
+      displacement_increments;
 
     /** Homogeneous constraints of the Newton increments; the prescribed values for the guess. */
     dealii::AffineConstraints<double> zero_constraints, constraints;
