@@ -316,17 +316,19 @@ def write_tables(path, rows, sweeps, header):
     for sweep in sweeps:
         lines += ["### %s" % sweep, "",
                   "| level | wall median [s] (min–max, n) | peak RSS [MB] | steps | Newton its | "
-                  "points | µs/point/assembly | Δh error | eq. error | μ error (t ≥ 0.128) | "
-                  "μ error (t = 0.0012) | load (1 min) |",
-                  "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+                  "points | µs/point/assembly | solve share | Δh error | eq. error | "
+                  "μ error (t ≥ 0.128) | μ error (t = 0.0012) | load (1 min) |",
+                  "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
         for row in [r for r in rows if r["sweep"] == sweep]:
             status = "" if row["status"] == "ok" else " **failed: %s**" % row["status"]
-            lines.append("| %s%s%s | %.1f (%.1f–%.1f, %d) | %.0f | %d | %d | %d | %s | %s | %s | %s | %s | %s |" % (
+            share = row["t_solve_s"] / row["timer_total_s"] if row["timer_total_s"] else float("nan")
+            lines.append("| %s%s%s | %.1f (%.1f–%.1f, %d) | %.0f | %d | %d | %d | %s | %s | %s | %s | %s | %s | %s |" % (
                 row["level"], " (paper)" if row["paper_setting"] else "", status,
                 row["wall_median_s"], row["wall_min_s"], row["wall_max_s"], row["repeats"],
                 row["max_rss_mb"], row["steps"], row["newton_iterations"],
                 row["volume_points"] + row["surface_points"],
                 "—" if math.isnan(row["us_per_point_assembly"]) else "%.2f" % row["us_per_point_assembly"],
+                "—" if math.isnan(share) else "%.0f %%" % (100 * share),
                 pct(row["dh_error"]), pct(row["eq_error"], 4), sci(row["mu_error"]),
                 sci(row["mu_error_first"]), row["loadavg_1min"]))
         lines.append("")
@@ -567,8 +569,8 @@ def main():
     header = ("%s mode, end time %g tau_d, %d repeat(s) per run; errors against gelmpm-swelling-1d"
               % (mode, end_time, repeats))
     write_tables(os.path.join(out, "tables.md"), rows, sweeps, header)
-    title = "§4.1 speed–accuracy (%s mode%s, 2-core machine shared with other jobs)" % (
-        mode, ", end time %g τ_d" % end_time if arguments.quick else "")
+    title = "§4.1 speed–accuracy (%s mode%s, median of %d runs, 2-core machine)" % (
+        mode, ", end time %g τ_d" % end_time if arguments.quick else "", repeats)
     plot_pareto(os.path.join(out, "pareto.png"), rows, title)
     plot_sweeps(os.path.join(out, "sweeps.png"), rows, sweeps, title)
     print(open(os.path.join(out, "tables.md")).read())
