@@ -16,6 +16,7 @@ Pareto front marked). Prints an estimate before it starts (about 5 minutes on a 
 finite-element reference in contrib/benchmarks/fem_peer_flat_punch.py (doc/fem_peer.md).
 """
 import argparse
+import csv
 import os
 import statistics
 import subprocess
@@ -129,11 +130,11 @@ def main():
               f" {peak_kb / 1024.:.0f} MB)  oscillation at t_inc "
               f"{row['oscillation_t_inc']:.3f}, at {args.end_time}: {row['oscillation_end']:.3f}")
 
-    columns = list(rows[0].keys())
-    with open(os.path.join(args.output, "flat_punch_sweep.csv"), "w") as f:
-        f.write(",".join(columns) + "\n")
-        for row in rows:
-            f.write(",".join(str(row[c]) for c in columns) + "\n")
+    # The configuration names hold commas: the csv module quotes them.
+    with open(os.path.join(args.output, "flat_punch_sweep.csv"), "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+        writer.writeheader()
+        writer.writerows(rows)
 
     points = [(r["wall_seconds"], r["oscillation_t_inc"]) for r in rows]
     front = pareto(points)
