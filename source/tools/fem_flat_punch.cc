@@ -65,8 +65,9 @@ main(int argc, char **argv)
      "the punch moves linearly over this time (tau_d)")
     ("ramp-step", po::value(&ramp_step)->default_value(3.125e-7),
      "the fixed time step during the ramp (tau_d); adaptive afterwards")
-    ("stop-times", po::value(&stops)->default_value("3.125e-6, 0.1"),
-     "comma-separated times (tau_d) the stepping lands on; the top surface is written there")
+    ("stop-times", po::value(&stops)->default_value(""),
+     "comma-separated times (tau_d) the stepping lands on; the top surface is written there "
+     "(default: the end of the ramp and 0.1, as the scene)")
     ("end-time", po::value(&end_time)->default_value(2300.), "end of the run (tau_d)")
     ("tolerance", po::value(&tolerance)->default_value(1e-10),
      "Newton tolerance (as 'Newton/Tolerance' of gelmpm)")
@@ -91,6 +92,9 @@ main(int argc, char **argv)
 
       dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
 
+      // Like the scene, land on the end of the ramp (whatever --ramp-time is) and on 0.1 tau_d.
+      if (!vm.count("stop-times") || vm["stop-times"].defaulted())
+        stops = GelMPM::entry_value(parameters.ramp_time) + ", 0.1";
       // The scene's 'Step caps = t_inc: dt_ramp': a fixed step during the ramp.
       const auto settings =
         GelMPM::fem_run_settings({{"Initial step", GelMPM::entry_value(ramp_step)},
