@@ -384,10 +384,12 @@ namespace GelMPM
     if (with_matrix && scratch.A_dot_G.size() < n_u)
       scratch.A_dot_G.resize(n_u);
 
+    unsigned int failed_point = block.first;
     try
       {
         for (unsigned int p = block.first; p < block.end; ++p)
           {
+            failed_point             = p;
             const PointRecord &point = points[p];
             if (!point.assembled)
               continue;
@@ -420,8 +422,31 @@ namespace GelMPM
     catch (const NonPhysicalState &e)
       {
         copy.failed  = true;
-        copy.failure = e.what();
+        copy.failure = describe_failure(e, points[failed_point], scratch, block.u_cell);
       }
+  }
+
+
+  template <int dim>
+  std::string
+  MixedSystem<dim>::describe_failure(const NonPhysicalState &error,
+                                     const PointRecord      &point,
+                                     const ScratchData      &scratch,
+                                     const unsigned int      u_cell) const
+  {
+    static const char *kinds[] = {"volume point",
+                                  "surface point (u and mu prescribed)",
+                                  "surface point (u prescribed, flux)",
+                                  "surface point (traction, mu prescribed)",
+                                  "surface point (traction, flux)"};
+    std::ostringstream message;
+    message << error.what() << " at the " << kinds[static_cast<unsigned int>(point.kind)];
+    if (point.piece >= 0)
+      message << " of piece '" << boundary_conditions.piece(point.piece).name << "'";
+    message << " at x = " << format_point(Point<dim>(point.x + scratch.du_at_point))
+            << " (x_n = " << format_point(point.x) << ", initially "
+            << format_point(Point<dim>(point.x - point.u_n)) << "), background cell " << u_cell;
+    return message.str();
   }
 
 

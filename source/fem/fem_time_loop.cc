@@ -39,7 +39,8 @@ namespace GelMPM
                     const NewtonSettings                       &newton,
                     const LinearSolver                         &linear_solver,
                     const std::function<void(double, double)>  &prescribe,
-                    const std::function<void(const FemStep &)> &on_step)
+                    const std::function<void(const FemStep &)> &on_step,
+                    const FemSignatureControl                  &signature)
   {
     // The solver's factorisation refers to this system's matrix: release it when the run ends.
     struct ReleaseFactorisation
@@ -61,12 +62,13 @@ namespace GelMPM
                               dealii::TimerOutput::wall_times);
 
     FemRunResult           result;
-    double                 time = 0., dt = time_stepping.initial_step;
-    unsigned int           step = 0;
+    StepControl            control(time_stepping,
+                        signature.bisection_tolerance,
+                        signature.unstable_step);
     dealii::Vector<double> solution;
-    while (time < time_stepping.end_time * (1. - 1e-12))
+    while (!control.finished())
       {
-        if (step >= time_stepping.maximum_steps)
+        if (control.out_of_steps())
           {
             result.failure = "stopped after the maximum number of steps (" +
                              std::to_string(time_stepping.maximum_steps) + ")";
@@ -74,9 +76,10 @@ namespace GelMPM
           }
         for (unsigned int attempt = 1;; ++attempt)
           {
-            const double step_dt = time_stepping.next_step(time, dt);
+            const double t_begin = control.time();
+            const double step_dt = control.attempt();
             if (prescribe)
-              prescribe(time, time + step_dt);
+              prescribe(t_begin, t_begin + step_dt);
             system.initial_guess(solution);
             const NewtonReport report = solve_newton(system,
                                                      solution,
@@ -88,27 +91,32 @@ namespace GelMPM
                                                      timer);
             if (!report.converged)
               {
-                dt = step_dt * time_stepping.cut_factor;
-                if (dt < time_stepping.minimum_step)
+                if (!control.cut_step())
                   {
                     std::ostringstream message;
-                    message << "the step at t/tau_d = " << time << " failed (" << report.failure
+                    message << "the step at t/tau_d = " << t_begin << " failed (" << report.failure
                             << ") and would fall below the minimum step";
                     result.failure = message.str();
                     return result;
                   }
                 continue;
               }
+            if (signature.stable)
+              {
+                const auto verdict = control.judge_signature(signature.stable());
+                if (verdict == StepControl::Verdict::retake)
+                  continue;
+                if (verdict == StepControl::Verdict::onset)
+                  result.onsets.push_back(control.bracket());
+              }
             system.update(solution);
-            const bool shortened = step_dt < std::min(dt, time_stepping.cap(time)) * (1. - 1e-12);
-            time += step_dt;
-            ++step;
-            result.t_over_tau_d = time;
+            control.accept(report.iterations);
+            result.t_over_tau_d = control.time();
             result.newton_iterations += report.iterations;
 
             FemStep record;
-            record.number            = step;
-            record.t_over_tau_d      = time;
+            record.number            = control.step();
+            record.t_over_tau_d      = control.time();
             record.dt_over_tau_d     = step_dt;
             record.newton_iterations = report.iterations;
             record.attempts          = attempt;
@@ -116,11 +124,6 @@ namespace GelMPM
             record.residual_mu       = report.residual_mu;
             if (on_step)
               on_step(record);
-
-            if (!shortened)
-              dt = step_dt;
-            if (report.iterations < time_stepping.growth_below)
-              dt *= time_stepping.growth_factor;
             break;
           }
       }
@@ -136,7 +139,8 @@ namespace GelMPM
                        const NewtonSettings &,
                        const LinearSolver &,
                        const std::function<void(double, double)> &,
-                       const std::function<void(const FemStep &)> &);
+                       const std::function<void(const FemStep &)> &,
+                       const FemSignatureControl &);
   template FemRunResult
   run_fem_time_loop<3>(FemMixedSystem<3> &,
                        const FloryRehnerGel<3> &,
@@ -144,5 +148,6 @@ namespace GelMPM
                        const NewtonSettings &,
                        const LinearSolver &,
                        const std::function<void(double, double)> &,
-                       const std::function<void(const FemStep &)> &);
+                       const std::function<void(const FemStep &)> &,
+                       const FemSignatureControl &);
 } // namespace GelMPM

@@ -28,6 +28,15 @@ namespace GelMPM
                       "1",
                       dealii::Patterns::Integer(0, 2),
                       "Coordinate direction of the thickness (0: x, 1: y, 2: z).");
+    prm.declare_entry("Centre offset pieces",
+                      "",
+                      dealii::Patterns::Anything(),
+                      "Two boundary piece names 'first, second' (e.g. 'bottom, top' of a column): "
+                      "adds the columns centre_offset_x, centre_offset_y (and centre_offset_z in "
+                      "3D), the vector from the mean position of the first piece's surface points "
+                      "to that of the second's minus its initial value, and centre_distance, its "
+                      "length (paper Fig. 10a: the sideways separation of the ends of a buckling "
+                      "column). Empty: off.");
     prm.declare_entry("Volume ratio range",
                       "false",
                       dealii::Patterns::Bool(),
@@ -62,6 +71,8 @@ namespace GelMPM
   {
     prm.enter_subsection("Observables");
     const auto names    = dealii::Utilities::split_string_list(prm.get("Thickness pieces"), ',');
+    const auto offset_names =
+      dealii::Utilities::split_string_list(prm.get("Centre offset pieces"), ',');
     thickness_direction = prm.get_integer("Thickness direction");
     volume_ratio_range  = prm.get_bool("Volume ratio range");
     mu_oscillation      = prm.get_bool("Chemical potential oscillation");
@@ -72,22 +83,32 @@ namespace GelMPM
             "Observables/Thickness direction",
             "exceeds the dimension",
             "give a direction below " + std::to_string(dim));
-    thickness_first = thickness_second = -1;
+    thickness_pieces = piece_pair(names, pieces, "Observables/Thickness pieces", "top, bottom");
+    offset_pieces = piece_pair(offset_names, pieces, "Observables/Centre offset pieces", "bottom, top");
+  }
+
+
+  template <int dim>
+  std::array<int, 2>
+  Observables<dim>::piece_pair(const std::vector<std::string> &names,
+                               const std::vector<std::string> &pieces,
+                               const std::string              &entry,
+                               const std::string              &example)
+  {
+    std::array<int, 2> pair = {{-1, -1}};
     if (names.empty())
-      return;
-    require(names.size() == 2,
-            "Observables/Thickness pieces",
-            "must name exactly two pieces",
-            "write 'top, bottom'");
+      return pair;
+    require(names.size() == 2, entry, "must name exactly two pieces", "write '" + example + "'");
     for (unsigned int k = 0; k < 2; ++k)
       {
         const auto it = std::find(pieces.begin(), pieces.end(), names[k]);
         require(it != pieces.end(),
-                "Observables/Thickness pieces",
+                entry,
                 "names the piece '" + names[k] + "' that is not in 'Boundary conditions/Pieces'",
                 "use one of the declared pieces");
-        (k == 0 ? thickness_first : thickness_second) = it - pieces.begin();
+        pair[k] = it - pieces.begin();
       }
+    return pair;
   }
 
 
@@ -96,8 +117,14 @@ namespace GelMPM
   Observables<dim>::columns() const
   {
     std::vector<std::string> c;
-    if (thickness_first >= 0)
+    if (thickness_pieces[0] >= 0)
       c.push_back("delta_h_over_h0");
+    if (offset_pieces[0] >= 0)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          c.push_back(std::string("centre_offset_") + "xyz"[d]);
+        c.push_back("centre_distance");
+      }
     if (volume_ratio_range)
       for (const char *name : {"J_min", "J_mean", "J_max"})
         c.push_back(name);
@@ -117,8 +144,21 @@ namespace GelMPM
                              const std::function<std::pair<double, double>()> &dirichlet_errors,
                              StatisticsFile                                   &statistics) const
   {
-    if (thickness_first >= 0)
-      statistics.set("delta_h_over_h0", thickness_change(particles));
+    if (thickness_pieces[0] >= 0)
+      {
+        const auto   means = piece_means(particles, thickness_pieces);
+        const double h     = means[0][thickness_direction] - means[1][thickness_direction];
+        const double h_0   = means[2][thickness_direction] - means[3][thickness_direction];
+        statistics.set("delta_h_over_h0", h / h_0 - 1.);
+      }
+    if (offset_pieces[0] >= 0)
+      {
+        const auto                   means  = piece_means(particles, offset_pieces);
+        const dealii::Tensor<1, dim> offset = (means[1] - means[0]) - (means[3] - means[2]);
+        for (unsigned int d = 0; d < dim; ++d)
+          statistics.set(std::string("centre_offset_") + "xyz"[d], offset[d]);
+        statistics.set("centre_distance", offset.norm());
+      }
     if (volume_ratio_range)
       {
         const auto J = volume_ratio_statistics(particles, material);
@@ -138,28 +178,31 @@ namespace GelMPM
 
 
   template <int dim>
-  double
-  Observables<dim>::thickness_change(const dealii::Particles::ParticleHandler<dim> &particles) const
+  std::array<dealii::Point<dim>, 4>
+  Observables<dim>::piece_means(const dealii::Particles::ParticleHandler<dim> &particles,
+                                const std::array<int, 2>                      &pair) const
   {
-    using Layout              = PropertyLayout<dim>;
-    const unsigned int d      = thickness_direction;
-    double             sum[2] = {0., 0.}, sum_0[2] = {0., 0.};
-    unsigned int       count[2] = {0, 0};
+    using Layout = PropertyLayout<dim>;
+    std::array<dealii::Point<dim>, 4> sum;
+    std::array<unsigned int, 2>       count = {{0, 0}};
     for (const auto &particle : particles)
       {
         const auto props = particle.get_properties();
         const int  piece = static_cast<int>(std::lround(props[Layout::piece]));
         for (unsigned int k = 0; k < 2; ++k)
-          if (piece == (k == 0 ? thickness_first : thickness_second))
+          if (piece == pair[k])
             {
-              sum[k] += particle.get_location()[d];
-              sum_0[k] += props[Layout::position_0 + d];
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  sum[k][d] += particle.get_location()[d];
+                  sum[2 + k][d] += props[Layout::position_0 + d];
+                }
               ++count[k];
             }
       }
-    const double h   = sum[0] / count[0] - sum[1] / count[1];
-    const double h_0 = sum_0[0] / count[0] - sum_0[1] / count[1];
-    return h / h_0 - 1.;
+    for (unsigned int k = 0; k < 4; ++k)
+      sum[k] /= count[k % 2];
+    return sum;
   }
 
 

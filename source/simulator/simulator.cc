@@ -64,6 +64,10 @@ namespace GelMPM
             "Stability/Inertia",
             "needs a symmetric tangent, but 'Nitsche/Variant = skew-symmetric'",
             "use the symmetric Nitsche variant or switch the stability analysis off");
+    require(stability.perturbation_direction.size() >= dim,
+            "Stability/Perturbation direction",
+            "has fewer components than the scene's dimension " + std::to_string(dim),
+            "give one component per coordinate direction");
     // Checks that need more than one section: build the spaces once (odd cell counts with
     // subdivision are reported here, before anything is written).
     // The material points too: a body outside the grid or a piece that selects nothing is
@@ -243,64 +247,61 @@ namespace GelMPM
 
 
   template <int dim>
-  double
-  Simulator<dim>::bisection_step() const
+  StepControl::Verdict
+  Simulator<dim>::judge_signature(const StabilityReport &result)
   {
-    const double remaining = bisection.unstable_time - time;
-    // Half the bracket while it is wider than the tolerance; then the step onto its unstable end.
-    return (remaining > stability.bisection_tolerance) ? 0.5 * remaining : remaining;
+    if (!stability.inertia)
+      return StepControl::Verdict::accept;
+    const bool stable = result.inertia.n_positive == spaces->n_u_dofs() &&
+                        result.inertia.n_negative == spaces->n_mu_dofs() &&
+                        result.inertia.n_zero == 0;
+    const double t_end   = control->time() + control->attempt_size();
+    const auto   verdict = control->judge_signature(stable);
+    switch (verdict)
+      {
+        case StepControl::Verdict::retake:
+          if (!announced_bracketing)
+            pcout << "    the signature leaves (n_u, n_mu, 0) between t = " << control->time()
+                  << " and " << t_end << "; bisecting to 'Stability/Bisection tolerance' = "
+                  << stability.bisection_tolerance << std::endl;
+          announced_bracketing = true;
+          return verdict;
+        case StepControl::Verdict::step_dependent:
+          pcout << "    with shorter steps the state at t = " << t_end
+                << " is stable: the loss of stability depends on the step size; bracketing ended"
+                << std::endl;
+          break;
+        case StepControl::Verdict::regained:
+          pcout << "    the signature is (n_u, n_mu, 0) again at t/tau_d = " << t_end
+                << ": stable" << std::endl;
+          break;
+        case StepControl::Verdict::onset:
+          report_onset(result);
+          break;
+        case StepControl::Verdict::accept:
+          break;
+      }
+    announced_bracketing = control->bracketing();
+    if (stable)
+      {
+        last_stable_inertia = result.inertia;
+        last_eigenvalue     = result.eigenvalues.empty() ? 0. : result.eigenvalues[0];
+      }
+    return verdict;
   }
 
 
   template <int dim>
-  bool
-  Simulator<dim>::narrow_instability_bracket(const StabilityReport &result, const double step_dt)
+  void
+  Simulator<dim>::report_onset(const StabilityReport &result)
   {
-    if (!stability.inertia)
-      return false;
-    const bool stable = result.inertia.n_positive == spaces->n_u_dofs() &&
-                        result.inertia.n_negative == spaces->n_mu_dofs() &&
-                        result.inertia.n_zero == 0;
-    const bool was_stable = last_stable;
-    if (stable && bisection.active && time + step_dt >= bisection.unstable_time * (1. - 1e-12))
-      {
-        // The step onto the unstable end of the bracket is stable when taken shorter: the
-        // signature depends on the step through K_mumu (~ dt), so the bracket closes here.
-        bisection.active = false;
-        pcout << "    with shorter steps the state at t = " << time + step_dt
-              << " is stable: the loss of stability depends on the step size; bracketing ended"
-              << std::endl;
-      }
-    if (stable || !was_stable)
-      {
-        last_stable         = stable;
-        last_stable_inertia = result.inertia;
-        last_eigenvalue     = result.eigenvalues.empty() ? 0. : result.eigenvalues[0];
-        return false;
-      }
-
-    // The signature left (n_u, n_mu, 0) within this step: the critical time lies in
-    // (time, time + step_dt]. Retake the step from the last stable state until the bracket is
-    // narrower than the tolerance, then accept the unstable step and report the bracket.
-    const double unstable_time = time + step_dt;
-    if (stability.bisection_tolerance > 0. && step_dt > stability.bisection_tolerance)
-      {
-        if (!bisection.active)
-          pcout << "    the signature leaves (n_u, n_mu, 0) between t = " << time << " and "
-                << unstable_time << "; bisecting to 'Stability/Bisection tolerance' = "
-                << stability.bisection_tolerance << std::endl;
-        bisection.active        = true;
-        bisection.unstable_time = unstable_time;
-        return true;
-      }
-    bisection.active = false;
-    last_stable      = false;
-    pcout << "    loss of stability between t/tau_d = " << time << " (stable) and " << unstable_time
-          << ": signature (" << result.inertia.n_positive << ", " << result.inertia.n_negative
-          << ", " << result.inertia.n_zero << "), expected (" << spaces->n_u_dofs() << ", "
-          << spaces->n_mu_dofs() << ", 0)" << std::endl;
-    stability_file.set("t_stable", time);
-    stability_file.set("t_unstable", unstable_time);
+    const auto &bracket = control->bracket();
+    pcout << "    loss of stability between t/tau_d = " << bracket.t_stable << " (stable) and "
+          << bracket.t_unstable << ": signature (" << result.inertia.n_positive << ", "
+          << result.inertia.n_negative << ", " << result.inertia.n_zero << "), expected ("
+          << spaces->n_u_dofs() << ", " << spaces->n_mu_dofs() << ", 0)" << std::endl;
+    stability_file.set("t_stable", bracket.t_stable);
+    stability_file.set("t_unstable", bracket.t_unstable);
     stability_file.set("n_neg_stable", last_stable_inertia.n_negative);
     stability_file.set("n_neg_unstable", result.inertia.n_negative);
     stability_file.set("n_zero_unstable", result.inertia.n_zero);
@@ -312,7 +313,38 @@ namespace GelMPM
         stability_file.set("eig_1_unstable", result.eigenvalues[0]);
       }
     stability_file.write_row();
-    return false;
+  }
+
+
+  template <int dim>
+  void
+  Simulator<dim>::perturb_along_mode(const dealii::Vector<double> &mode,
+                                     dealii::Vector<double>       &solution) const
+  {
+    // The eigenvector's sign and size are arbitrary: scale it to a largest control-point
+    // displacement of 'Perturbation amplitude', signed so that the control point that moves
+    // most along 'Perturbation direction' moves forwards.
+    double       largest = 0., along = 0.;
+    const auto  &d       = stability.perturbation_direction;
+    for (unsigned int i = 0; i + dim <= mode.size(); i += dim)
+      {
+        double norm2 = 0., projection = 0.;
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            norm2 += mode(i + c) * mode(i + c);
+            projection += mode(i + c) * d[c];
+          }
+        largest = std::max(largest, std::sqrt(norm2));
+        if (std::abs(projection) > std::abs(along))
+          along = projection;
+      }
+    if (!(largest > 0.))
+      return;
+    const double scale = stability.perturbation_amplitude / largest * (along < 0. ? -1. : 1.);
+    for (unsigned int i = 0; i < mode.size(); ++i)
+      solution(i) += scale * mode(i);
+    pcout << "    perturbed along the critical mode: largest control-point displacement "
+          << stability.perturbation_amplitude << std::endl;
   }
 
 
@@ -403,7 +435,7 @@ namespace GelMPM
 
   template <int dim>
   bool
-  Simulator<dim>::advance(double &dt)
+  Simulator<dim>::advance()
   {
     {
       dealii::TimerOutput::Scope scope(timer, "setup");
@@ -417,9 +449,9 @@ namespace GelMPM
     dealii::Vector<double> solution;
     for (unsigned int attempt = 1;; ++attempt)
       {
-        const double step_dt =
-          bisection.active ? bisection_step() : time_stepping.next_step(time, dt);
-        system->set_boundary_values(time + step_dt);
+        const double t_begin = control->time();
+        const double step_dt = control->attempt();
+        system->set_boundary_values(t_begin + step_dt);
         initial_guess(solution);
         const NewtonReport report = solve_newton(*system,
                                                  solution,
@@ -431,28 +463,25 @@ namespace GelMPM
                                                  timer);
         if (!report.converged)
           {
-            pcout << "    step " << step + 1 << " at t = " << time << " with dt = " << step_dt
-                  << " failed (" << report.failure << ")";
-            if (bisection.active)
-              {
-                // Newton fails inside the bracket: give the bisection up, cut steps as usual.
-                bisection.active = false;
-                pcout << "; bracketing of the loss of stability abandoned";
-              }
-            dt = step_dt * time_stepping.cut_factor;
-            if (dt < time_stepping.minimum_step)
+            pcout << "    step " << control->step() + 1 << " at t = " << t_begin
+                  << " with dt = " << step_dt << " failed (" << report.failure << ")";
+            if (control->bracketing())
+              pcout << "; bracketing of the loss of stability abandoned";
+            announced_bracketing = false;
+            if (!control->cut_step())
               {
                 pcout << "; the step would fall below 'Time stepping/Minimum step' = "
                       << time_stepping.minimum_step << std::endl;
                 return false;
               }
-            pcout << "; retrying with dt = " << dt << std::endl;
+            pcout << "; retrying with dt = " << control->proposed_step() << std::endl;
             continue;
           }
 
+        bool perturb = false;
+        StabilityReport result;
         if (stability.enabled())
           {
-            StabilityReport result;
             {
               // The last assembly of Newton was at the converged state.
               dealii::TimerOutput::Scope scope(timer, "stability");
@@ -460,12 +489,19 @@ namespace GelMPM
                 return system->mu_mass_matrix();
               });
             }
-            if (narrow_instability_bracket(result, step_dt))
+            const auto verdict = judge_signature(result);
+            if (verdict == StepControl::Verdict::retake)
               continue;
             record_stability(result);
             if (mode_output && result.mode.size() == spaces->n_u_dofs())
               record_mode(result.mode);
+            // Leave the unstable branch at the bracketed critical time (doc/method.md).
+            perturb = verdict == StepControl::Verdict::onset &&
+                      stability.perturbation_amplitude > 0. &&
+                      result.mode.size() == spaces->n_u_dofs();
           }
+        if (perturb)
+          perturb_along_mode(result.mode, solution);
         {
           dealii::TimerOutput::Scope scope(timer, "update");
           const auto                 n_before = particles.n_global_particles();
@@ -474,42 +510,34 @@ namespace GelMPM
           if (particles.n_global_particles() != n_before)
             throw std::runtime_error(std::to_string(n_before - particles.n_global_particles()) +
                                      " material point(s) left the background grid at t = " +
-                                     std::to_string(time + step_dt) +
+                                     std::to_string(t_begin + step_dt) +
                                      " tau_d; enlarge the grid ('Background grid/Upper corner')");
           store_mu_coefficients(solution);
           if (grid_output)
             grid_output->record(spaces->u(), spaces->mu(), grid_volume_points, solution);
         }
-        const bool shortened = step_dt < std::min(dt, time_stepping.cap(time)) * (1. - 1e-12);
-        time += step_dt;
-        ++step;
+        control->accept(report.iterations);
+        time = control->time();
+        step = control->step();
         statistics.set("dt", step_dt);
         record_statistics(report, attempt, &solution);
 
         pcout << "  step " << std::setw(5) << step << "  t/tau_d = " << std::setw(11)
               << std::setprecision(5) << time << "  dt = " << std::setw(10) << step_dt
-              << "  Newton " << std::setw(2) << report.iterations << "  |R_u| "
-              << std::setprecision(2) << report.residual_u << "  |R_mu| " << report.residual_mu
-              << std::setprecision(6) << std::endl;
+              << "  Newton " << std::setw(2) << report.iterations;
+        if (report.damped_iterations > 0)
+          pcout << " (" << report.damped_iterations << " damped)";
+        pcout << "  |R_u| " << std::setprecision(2) << report.residual_u << "  |R_mu| "
+              << report.residual_mu << std::setprecision(6) << std::endl;
 
-        const bool at_stop = std::any_of(time_stepping.stop_times.begin(),
-                                         time_stepping.stop_times.end(),
-                                         [&](const double s) {
-                                           return std::abs(s - time) <= 1e-10 * s;
-                                         });
         const bool interval_due =
           (output_settings.interval_steps > 0 && step % output_settings.interval_steps == 0) ||
           (output_settings.interval_time > 0. && time >= next_output_time * (1. - 1e-12));
         if (output_settings.interval_time > 0.)
           while (next_output_time <= time * (1. + 1e-12))
             next_output_time += output_settings.interval_time;
-        if (at_stop || interval_due || time >= time_stepping.end_time * (1. - 1e-12))
+        if (control->at_stop_time() || interval_due || control->finished())
           write_output();
-
-        if (!shortened)
-          dt = step_dt;
-        if (report.iterations < time_stepping.growth_below)
-          dt *= time_stepping.growth_factor;
         return true;
       }
   }
@@ -537,23 +565,25 @@ namespace GelMPM
         std::make_unique<GridOutput<dim>>(output_settings.directory, triangulation, "mode");
     open_statistics();
     next_output_time = output_settings.interval_time;
+    control          = std::make_unique<StepControl>(time_stepping,
+                                            stability.bisection_tolerance,
+                                            stability.unstable_step);
 
     statistics.set("dt", 0.);
     record_statistics(NewtonReport(), 0, nullptr);
     write_output();
 
-    double dt     = time_stepping.initial_step;
-    int    status = 0;
-    while (time < time_stepping.end_time * (1. - 1e-12))
+    int status = 0;
+    while (!control->finished())
       {
-        if (step >= time_stepping.maximum_steps)
+        if (control->out_of_steps())
           {
             pcout << "gelmpm: stopped after 'Time stepping/Maximum steps' = "
                   << time_stepping.maximum_steps << " steps at t/tau_d = " << time << std::endl;
             status = 1;
             break;
           }
-        if (!advance(dt))
+        if (!advance())
           {
             pcout << "gelmpm: the run cannot converge beyond t/tau_d = " << time
                   << "; results up to there are in " << output_settings.directory << std::endl;

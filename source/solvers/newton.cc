@@ -20,6 +20,18 @@ namespace GelMPM
                       "Both residual blocks must fall below this, relative to their natural "
                       "scales: G |Omega_0|^((dim-1)/dim) for the displacement block and "
                       "(k_BT/nu) |Omega_0| for the chemical-potential block.");
+    prm.declare_entry("Line search",
+                      "true",
+                      dealii::Patterns::Bool(),
+                      "Damp every Newton update by backtracking (1, 1/2, 1/4, ...) until the trial "
+                      "state is physical at every point (J > 1) and the scaled residual norm "
+                      "decreases (Armijo's rule). false: full Newton updates, and a trial state "
+                      "with J <= 1 fails the attempt.");
+    prm.declare_entry("Smallest damping",
+                      "0.015625",
+                      dealii::Patterns::Double(0., 1.),
+                      "With 'Line search': the smallest damping factor tried; below it the "
+                      "attempt fails and the step is cut.");
     prm.leave_subsection();
   }
 
@@ -30,7 +42,13 @@ namespace GelMPM
     prm.enter_subsection("Newton");
     maximum_iterations = prm.get_integer("Maximum iterations");
     tolerance          = prm.get_double("Tolerance");
+    line_search        = prm.get_bool("Line search");
+    smallest_damping   = prm.get_double("Smallest damping");
     prm.leave_subsection();
+    require(smallest_damping > 0. && smallest_damping <= 1.,
+            "Newton/Smallest damping",
+            "must lie in (0, 1]",
+            "use e.g. 0.015625 (1/64)");
     require(tolerance > 0. && tolerance < 1.,
             "Newton/Tolerance",
             "must lie strictly between 0 and 1",

@@ -4,6 +4,8 @@
 #include <gelmpm/stability/schur_eigenvalues.h>
 #include <gelmpm/stability/stability_analysis.h>
 
+#include <deal.II/base/utilities.h>
+
 namespace GelMPM
 {
   void
@@ -48,6 +50,30 @@ namespace GelMPM
                       "field on the background grid (mode-NNNNN.vtu, mode.pvd; field "
                       "displacement_increment, scaled to a largest coefficient of 1): the shape in "
                       "which the gel is about to lose, or has lost, stability.");
+    prm.declare_entry("Step while unstable",
+                      "0",
+                      dealii::Patterns::Double(0.),
+                      "With 'Inertia': while the signature of the accepted state is not (n_dofs_u, "
+                      "n_dofs_mu, 0), no step is longer than this (tau_d). Backward Euler damps a "
+                      "mode that grows at rate sigma once sigma dt > 2, so long steps keep a run on "
+                      "an unstable branch; choose it so that sigma dt stays below about 1 "
+                      "(doc/method.md, 'Going through an instability'). 0: no such cap.");
+    prm.declare_entry("Perturbation amplitude",
+                      "0",
+                      dealii::Patterns::Double(0.),
+                      "With 'Inertia' and 'Schur eigenvalues' >= 1: when a loss of stability has "
+                      "been bracketed, the displacement of the unstable state is perturbed along "
+                      "the critical mode (the eigenvector of the smallest Schur eigenvalue), scaled "
+                      "so that its largest control-point displacement is this amplitude (in the "
+                      "scene's length unit), so that the run leaves the unstable branch at the "
+                      "critical time in a chosen direction. 0: no perturbation (the run relies on "
+                      "round-off to leave a symmetric branch, late and in a random direction).");
+    prm.declare_entry("Perturbation direction",
+                      "1, 0, 0",
+                      dealii::Patterns::List(dealii::Patterns::Double(), 2, 3),
+                      "The sign of the perturbation: the control point that the critical mode moves "
+                      "most along this direction moves forwards (e.g. '1, 0' sways a column "
+                      "towards +x). One component per dimension; a third one is ignored in 2D.");
     prm.declare_entry("Condition number",
                       "false",
                       dealii::Patterns::Bool(),
@@ -68,7 +94,28 @@ namespace GelMPM
     condition           = prm.get_bool("Condition number");
     bisection_tolerance = prm.get_double("Bisection tolerance");
     write_mode          = prm.get_bool("Write mode");
+    unstable_step       = prm.get_double("Step while unstable");
+    perturbation_amplitude = prm.get_double("Perturbation amplitude");
+    perturbation_direction.clear();
+    for (const auto &item : dealii::Utilities::split_string_list(prm.get("Perturbation direction")))
+      perturbation_direction.push_back(dealii::Utilities::string_to_double(item));
     prm.leave_subsection();
+    require(unstable_step == 0. || inertia,
+            "Stability/Step while unstable",
+            "needs the signature of the tangent, but 'Stability/Inertia = false'",
+            "set 'Inertia = true' or the step to 0");
+    require(perturbation_amplitude == 0. || (inertia && n_eigenvalues > 0),
+            "Stability/Perturbation amplitude",
+            "needs the signature and the critical mode, but 'Inertia' is false or 'Schur "
+            "eigenvalues' is 0",
+            "set 'Inertia = true' and 'Schur eigenvalues' to at least 1, or the amplitude to 0");
+    double direction_norm = 0.;
+    for (const double d : perturbation_direction)
+      direction_norm += d * d;
+    require(perturbation_amplitude == 0. || direction_norm > 0.,
+            "Stability/Perturbation direction",
+            "is the zero vector",
+            "give the direction the gel is to leave the unstable branch in, e.g. '1, 0'");
     require(bisection_tolerance == 0. || inertia,
             "Stability/Bisection tolerance",
             "needs the signature of the tangent, but 'Stability/Inertia = false'",
@@ -84,6 +131,13 @@ namespace GelMPM
   StabilitySettings::enabled() const
   {
     return inertia || n_eigenvalues > 0 || inf_sup || condition;
+  }
+
+
+  bool
+  StabilitySettings::needs_mode() const
+  {
+    return write_mode || perturbation_amplitude > 0.;
   }
 
 
@@ -120,7 +174,7 @@ namespace GelMPM
             auto eigen         = smallest_schur_eigenvalues(factorization,
                                                     n_u,
                                                     settings.n_eigenvalues,
-                                                    settings.write_mode);
+                                                    settings.needs_mode());
             report.eigenvalues = std::move(eigen.values);
             if (!eigen.vectors.empty())
               report.mode = std::move(eigen.vectors[0]);

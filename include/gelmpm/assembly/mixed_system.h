@@ -14,6 +14,7 @@
 #include <deal.II/lac/vector.h>
 #include <deal.II/particles/particle_handler.h>
 
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -190,6 +191,13 @@ namespace GelMPM
                     dealii::Tensor<1, dim>       &du,
                     dealii::Tensor<2, dim>       &delta_F,
                     double                       &mu) const;
+
+    /** The message of a non-physical state at @p point: where, what kind, which piece and cell. */
+    std::string
+    describe_failure(const NonPhysicalState &error,
+                     const PointRecord      &point,
+                     const ScratchData      &scratch,
+                     const unsigned int      u_cell) const;
 
     void
     add_volume_point(const PointRecord &point,

@@ -5,11 +5,13 @@
 #include <gelmpm/material/flory_rehner_gel.h>
 #include <gelmpm/solvers/linear_solver.h>
 #include <gelmpm/solvers/newton.h>
+#include <gelmpm/solvers/step_control.h>
 #include <gelmpm/solvers/time_stepping.h>
 
 #include <functional>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace GelMPM
 {
@@ -34,6 +36,22 @@ namespace GelMPM
     /** Time reached (tau_d) and Newton iterations of the converged steps. */
     double       t_over_tau_d      = 0.;
     unsigned int newton_iterations = 0;
+    /** The bracketed losses of stability (with FemSignatureControl). */
+    std::vector<StepControl::Bracket> onsets;
+  };
+
+
+  /**
+   * Stability-aware stepping of a body-fitted run (StepControl): @p stable() tells whether the
+   * tangent of the converged attempt (the system's matrix() after Newton) has the signature
+   * (n_u, n_mu, 0); a loss of stability is bracketed to @p bisection_tolerance (tau_d; 0: not
+   * bracketed) and steps while unstable are at most @p unstable_step (0: no cap).
+   */
+  struct FemSignatureControl
+  {
+    std::function<bool()> stable;
+    double                bisection_tolerance = 0.;
+    double                unstable_step       = 0.;
   };
 
 
@@ -65,6 +83,10 @@ namespace GelMPM
    * stops the run below the minimum step; convergence in fewer than 'growth below' iterations
    * grows the next step; TimeStepping's caps and stop times bound and place the steps.
    *
+   * With @p signature, the signature of every converged attempt is judged before the step is
+   * accepted (a retake for the bisection restarts from the last converged state, since update()
+   * comes only after acceptance), and FemRunResult::onsets lists the brackets.
+   *
    * @p prescribe(t_begin, t_end) is called before every attempt of a step (times in tau_d) to set
    * the boundary data of that step on the system (e.g. FemMixedSystem::set_displacement_increment);
    * @p on_step after every converged step, after FemMixedSystem::update(). Time-dependent data
@@ -78,7 +100,8 @@ namespace GelMPM
                     const NewtonSettings                       &newton,
                     const LinearSolver                         &linear_solver,
                     const std::function<void(double, double)>  &prescribe,
-                    const std::function<void(const FemStep &)> &on_step);
+                    const std::function<void(const FemStep &)> &on_step,
+                    const FemSignatureControl &signature = FemSignatureControl());
 } // namespace GelMPM
 
 #endif

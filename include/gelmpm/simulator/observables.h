@@ -23,6 +23,9 @@ namespace GelMPM
    *   h(t) is the mean coordinate x_d of the surface points of the first piece minus that of the
    *   second, h_0 the same in the initial configuration, and the column is h/h_0 - 1 (paper §4.1:
    *   Delta h / h_0).
+   * - Centre offset (columns centre_offset_x, _y, (_z), centre_distance): with "Centre offset
+   *   pieces = bottom, top", the vector between the mean positions of the two pieces' surface
+   *   points minus its initial value, and its length (paper §4.3, Fig. 10a).
    * - Volume ratio range (columns J_min, J_mean, J_max): the extremes and the V_0-weighted mean of
    *   J (dry state to current) over the volume points; the spread measures how far a state is
    *   from homogeneous (patch tests).
@@ -59,9 +62,16 @@ namespace GelMPM
              StatisticsFile                                   &statistics) const;
 
   private:
-    /** h/h_0 - 1 between the thickness pieces. */
-    double
-    thickness_change(const dealii::Particles::ParticleHandler<dim> &particles) const;
+    /** The indices of the two pieces named in @p names (entry @p entry); {-1, -1} if empty. */
+    static std::array<int, 2>
+    piece_pair(const std::vector<std::string> &names,
+               const std::vector<std::string> &pieces,
+               const std::string              &entry,
+               const std::string              &example);
+    /** Mean current positions of the surface points of the two pieces, then their initial ones. */
+    std::array<dealii::Point<dim>, 4>
+    piece_means(const dealii::Particles::ParticleHandler<dim> &particles,
+                const std::array<int, 2>                      &pair) const;
     /** (min, V_0-weighted mean, max) of J over the volume points. */
     std::array<double, 3>
     volume_ratio_statistics(const dealii::Particles::ParticleHandler<dim> &particles,
@@ -70,8 +80,8 @@ namespace GelMPM
     double
     chemical_potential_oscillation(const dealii::Particles::ParticleHandler<dim> &particles) const;
 
-    int          thickness_first     = -1;
-    int          thickness_second    = -1;
+    std::array<int, 2> thickness_pieces = {{-1, -1}};
+    std::array<int, 2> offset_pieces    = {{-1, -1}};
     unsigned int thickness_direction = 1;
     bool         volume_ratio_range  = false;
     bool         mu_oscillation      = false;

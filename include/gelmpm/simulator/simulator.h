@@ -18,6 +18,7 @@
 #include <gelmpm/simulator/scene_structure.h>
 #include <gelmpm/solvers/linear_solver.h>
 #include <gelmpm/solvers/newton.h>
+#include <gelmpm/solvers/step_control.h>
 #include <gelmpm/solvers/time_stepping.h>
 #include <gelmpm/stability/stability_analysis.h>
 
@@ -80,10 +81,9 @@ namespace GelMPM
     create_material_points();
     void
     open_statistics();
-    /** Take one converged step from time t; returns false if the step size fell below the minimum.
-     */
+    /** Take one converged step; returns false if the step size fell below the minimum. */
     bool
-    advance(double &dt);
+    advance();
     /** One row of statistics.csv; @p solution is the converged step's (nullptr initially). */
     void
     record_statistics(const NewtonReport           &report,
@@ -93,19 +93,23 @@ namespace GelMPM
     void
     record_stability(const StabilityReport &result);
     /**
-     * After a converged step with the stability analysis: if the signature left (n_u, n_mu, 0)
-     * within the step and 'Stability/Bisection tolerance' asks for it, returns true to retake the
-     * step shorter (bisection of the critical time); when the bracket is tight, reports it in the
-     * log and in stability.csv and returns false.
+     * Hand the signature of a converged attempt to the step control (bracketing of a loss of
+     * stability, steps while unstable) and log what it decided.
      */
-    bool
-    narrow_instability_bracket(const StabilityReport &result, const double step_dt);
+    StepControl::Verdict
+    judge_signature(const StabilityReport &result);
+    /** A bracketed loss of stability: to the log and to stability.csv. */
+    void
+    report_onset(const StabilityReport &result);
+    /**
+     * Add 'Stability/Perturbation amplitude' times the critical @p mode (displacement unknowns,
+     * scaled and signed by 'Perturbation direction') to the converged @p solution.
+     */
+    void
+    perturb_along_mode(const dealii::Vector<double> &mode, dealii::Vector<double> &solution) const;
     /** Keep the critical @p mode of the converged step for the next output (mode.pvd). */
     void
     record_mode(const dealii::Vector<double> &mode);
-    /** The next step while a critical time is being bracketed. */
-    double
-    bisection_step() const;
     void
     write_output();
     /** Record the initial grid for GridOutput: cells classified from the points, du = 0, mu_0. */
@@ -150,14 +154,9 @@ namespace GelMPM
     std::vector<unsigned int>               grid_volume_points;    // per cell, start of the step
     StatisticsFile                          statistics;
     StatisticsFile                          stability_file; // stability.csv, with the inertia
-    /** The bracket of a loss of stability while it is being narrowed. */
-    struct
-    {
-      bool   active        = false;
-      double unstable_time = 0.;
-    } bisection;
-    bool                last_stable = true; // signature of the last accepted step
-    Inertia             last_stable_inertia;
+    std::unique_ptr<StepControl> control;
+    bool                         announced_bracketing = false;
+    Inertia                      last_stable_inertia;
     double              last_eigenvalue = 0.;
     std::vector<double> mu_coefficients; // per mu control point
     std::vector<bool>   mu_known;        // coefficient holds a current value

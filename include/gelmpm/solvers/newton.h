@@ -29,6 +29,10 @@ namespace GelMPM
   {
     unsigned int maximum_iterations = 15;
     double       tolerance          = 1e-10;
+    /** Damp the Newton update (backtracking line search, see solve_newton()). */
+    bool line_search = true;
+    /** The smallest damping factor tried before the iteration counts as failed. */
+    double smallest_damping = 1. / 64.;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
@@ -45,6 +49,8 @@ namespace GelMPM
     unsigned int iterations  = 0;
     double       residual_u  = 0.; // scaled, see NewtonSettings
     double       residual_mu = 0.;
+    /** Iterations whose update the line search shortened. */
+    unsigned int damped_iterations = 0;
     std::string  failure;
   };
 
@@ -53,6 +59,14 @@ namespace GelMPM
    * Solve one step of @p system by Newton's method, starting from @p solution (updated in
    * place). @p scale_u and @p scale_mu are the residual scales of NewtonSettings. Failures
    * (non-physical state, failing factorisation, too many iterations) are reported, not thrown.
+   *
+   * With NewtonSettings::line_search, every update is damped by backtracking: the trial state
+   * x - alpha dx is tried for alpha = 1, 1/2, 1/4, ... down to 'smallest damping', and taken as
+   * soon as (a) every point of it is physical (J > 1: the assembly does not throw
+   * NonPhysicalState, a fraction-to-the-boundary rule) and (b) it decreases the merit function
+   * f = |R_u|^2 + |R_mu|^2 (scaled blocks) by Armijo's rule f(alpha) <= (1 - 1e-4 alpha) f(0).
+   * Near the solution alpha = 1 passes and the iteration is Newton's, quadratically convergent.
+   * Without the line search a non-physical trial state ends the attempt.
    *
    * @p System is any discretisation of the mixed u–mu step with
    *   void assemble(const dealii::Vector<double> &solution, double dt, bool with_matrix)
@@ -73,22 +87,32 @@ namespace GelMPM
                const double            scale_mu,
                dealii::TimerOutput    &timer)
   {
-    NewtonReport           report;
-    dealii::Vector<double> increment(solution.size());
+    NewtonReport report;
+    // Assemble at x; false (with the reason in report.failure) if x is not physical.
+    const auto assemble_at = [&](const dealii::Vector<double> &x) {
+      try
+        {
+          dealii::TimerOutput::Scope scope(timer, "assembly");
+          system.assemble(x, dt, true);
+        }
+      catch (const NonPhysicalState &e)
+        {
+          report.failure = e.what();
+          return false;
+        }
+      report.residual_u  = system.residual_norm_u() / scale_u;
+      report.residual_mu = system.residual_norm_mu() / scale_mu;
+      return true;
+    };
+    const auto merit = [&]() {
+      return report.residual_u * report.residual_u + report.residual_mu * report.residual_mu;
+    };
+
+    if (!assemble_at(solution))
+      return report;
+    dealii::Vector<double> increment(solution.size()), trial(solution.size());
     for (unsigned int k = 0;; ++k)
       {
-        try
-          {
-            dealii::TimerOutput::Scope scope(timer, "assembly");
-            system.assemble(solution, dt, true);
-          }
-        catch (const NonPhysicalState &e)
-          {
-            report.failure = e.what();
-            return report;
-          }
-        report.residual_u  = system.residual_norm_u() / scale_u;
-        report.residual_mu = system.residual_norm_mu() / scale_mu;
         if (!std::isfinite(report.residual_u) || !std::isfinite(report.residual_mu))
           {
             report.failure = "the residual is not finite";
@@ -97,6 +121,7 @@ namespace GelMPM
         if (report.residual_u <= settings.tolerance && report.residual_mu <= settings.tolerance)
           {
             report.converged = true;
+            report.failure.clear();
             return report;
           }
         if (k == settings.maximum_iterations)
@@ -114,8 +139,41 @@ namespace GelMPM
             report.failure = e.what();
             return report;
           }
-        solution -= increment;
         report.iterations = k + 1;
+
+        const double merit_0 = merit();
+        double       alpha   = 1.;
+        for (;;)
+          {
+            trial = solution;
+            trial.add(-alpha, increment);
+            const bool physical = assemble_at(trial);
+            if (!settings.line_search)
+              {
+                if (!physical)
+                  {
+                    report.failure = "Newton iteration " + std::to_string(k + 1) + ": " +
+                                     report.failure;
+                    return report;
+                  }
+                break;
+              }
+            if (physical && merit() <= (1. - 1e-4 * alpha) * merit_0)
+              break;
+            const std::string why = physical ? "the residual does not decrease" : report.failure;
+            alpha *= 0.5;
+            if (alpha < settings.smallest_damping)
+              {
+                report.failure = "Newton iteration " + std::to_string(k + 1) +
+                                 ": no damped update down to 'Newton/Smallest damping' = " +
+                                 std::to_string(settings.smallest_damping) + " is acceptable (" +
+                                 why + ")";
+                return report;
+              }
+          }
+        if (alpha < 1.)
+          ++report.damped_iterations;
+        solution.swap(trial);
       }
   }
 } // namespace GelMPM

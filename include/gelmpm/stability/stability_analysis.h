@@ -28,6 +28,8 @@ namespace GelMPM
    * - Bisection tolerance: with the inertia, the width to which the time where the signature
    *   leaves (n_u, n_mu, 0) is bracketed by retaking the step (Simulator; stability.csv).
    * - Write mode: the eigenvector of the smallest Schur eigenvalue on the background grid.
+   * - Step while unstable, Perturbation amplitude and direction: how a run goes through a loss
+   *   of stability (StepControl; Simulator; doc/method.md, "Going through an instability").
    * - Condition number: LAPACK's 1-norm estimate for the tangent (column condition_number);
    *   dense, for small discretisations.
    */
@@ -41,6 +43,13 @@ namespace GelMPM
     double bisection_tolerance = 0.;
     /** Write the critical mode (eigenvector of the smallest Schur eigenvalue) for ParaView. */
     bool write_mode = false;
+    /** Largest step (tau_d) while the signature is not (n_u, n_mu, 0); 0: no such cap. */
+    double unstable_step = 0.;
+    /** Largest control-point displacement of the perturbation along the critical mode at a
+     * bracketed loss of stability (scene length unit); 0: no perturbation. */
+    double perturbation_amplitude = 0.;
+    /** The perturbation is signed so that it moves forwards along this direction. */
+    std::vector<double> perturbation_direction;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
@@ -51,6 +60,10 @@ namespace GelMPM
     /** Whether anything is to be computed. */
     bool
     enabled() const;
+
+    /** Whether the eigenvector of the smallest Schur eigenvalue is needed. */
+    bool
+    needs_mode() const;
 
     /** The statistics columns it fills. */
     std::vector<std::string>

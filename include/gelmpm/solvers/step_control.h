@@ -1,0 +1,165 @@
+#ifndef gelmpm_solvers_step_control_h
+#define gelmpm_solvers_step_control_h
+
+#include <gelmpm/solvers/time_stepping.h>
+
+namespace GelMPM
+{
+  /**
+   * @brief The time, the step size and every rule that chooses it, as one object that a time
+   * loop drives: the material point Simulator and the body-fitted run_fem_time_loop() both use
+   * it, so that the two models step identically.
+   *
+   * The rules (paper §4, §4.3):
+   * - Newton: a failed attempt is retried with the step times 'Cut factor' (cut_step());
+   *   convergence in fewer than 'Growth below iterations' iterations grows the next step by
+   *   'Growth factor' (accept());
+   * - caps: the piecewise 'Step caps' bound the step, and steps are shortened to land on the
+   *   'Stop at times' and the end time (TimeStepping::next_step());
+   * - signature ("adaptive time-stepping based on monitoring the signature", §4.3), when the loop
+   *   reports it through judge_signature():
+   *   - bracketing: when the signature leaves (n_u, n_mu, 0) within a step, the step is retaken
+   *     from the last stable state with halved remaining intervals until the critical time is
+   *     known to the bisection tolerance;
+   *   - while the accepted state is unstable, the step is at most 'unstable step': backward
+   *     Euler multiplies a mode growing at rate sigma by 1/(1 - sigma dt) per step, which damps
+   *     it once sigma dt > 2, so long steps would converge to the unstable symmetric state
+   *     (doc/method.md, "Going through an instability").
+   *
+   * Usage, per step:
+   * @code
+   *   while (!control.finished())
+   *     for (;;) {
+   *       const double dt = control.attempt();      // size of this attempt
+   *       ... solve from the last converged state to control.time() + dt ...
+   *       if (!converged) { if (!control.cut_step()) stop; continue; }
+   *       if (stability && control.judge_signature(stable) == StepControl::Verdict::retake)
+   *         continue;
+   *       control.accept(newton_iterations);
+   *       break;
+   *     }
+   * @endcode
+   */
+  class StepControl
+  {
+  public:
+    /** What judge_signature() decided about a converged attempt. */
+    enum class Verdict
+    {
+      /** Accept the attempt; nothing changed in the signature. */
+      accept,
+      /** The signature left (n_u, n_mu, 0) within a step longer than the bisection tolerance:
+       * retake the step (shorter) from the last stable state. */
+      retake,
+      /** The attempt is the unstable end of a closed bracket of a loss of stability: accept it;
+       * bracket() gives the bracket. */
+      onset,
+      /** The attempt onto the unstable end of a bracket was stable when taken shorter: the
+       * signature depends on the step size (K_mumu ~ dt); bracketing ended, accept. */
+      step_dependent,
+      /** The signature is back at (n_u, n_mu, 0) after an unstable stretch: accept. */
+      regained
+    };
+
+    /** A loss of stability: the last stable and the first unstable time. */
+    struct Bracket
+    {
+      double t_stable   = 0.;
+      double t_unstable = 0.;
+    };
+
+    /**
+     * @p settings: caps, stops, growth and cuts; @p bisection_tolerance (tau_d; 0: no
+     * bisection) and @p unstable_step (largest step while unstable, tau_d; 0: no such cap) for
+     * the signature rules.
+     */
+    explicit StepControl(const TimeStepping &settings,
+                         const double        bisection_tolerance = 0.,
+                         const double        unstable_step       = 0.);
+
+    /** Time of the last accepted state (tau_d). */
+    double
+    time() const;
+
+    /** Number of accepted steps. */
+    unsigned int
+    step() const;
+
+    /** Whether the end time is reached. */
+    bool
+    finished() const;
+
+    /** Whether 'Maximum steps' steps have been taken. */
+    bool
+    out_of_steps() const;
+
+    /** The size of the next attempt from time(), remembered for the calls that follow. */
+    double
+    attempt();
+
+    /** The size of the current attempt (the last attempt() returned). */
+    double
+    attempt_size() const;
+
+    /**
+     * The current attempt failed: the next one is shorter by the cut factor, and bracketing is
+     * given up. Returns false if that would fall below the minimum step (the run must stop).
+     */
+    bool
+    cut_step();
+
+    /**
+     * The current attempt converged to a state whose signature is (n_u, n_mu, 0) if @p stable:
+     * the signature rules above.
+     */
+    Verdict
+    judge_signature(const bool stable);
+
+    /**
+     * Accept the current attempt, converged in @p newton_iterations iterations: advance the time,
+     * and choose the next step.
+     */
+    void
+    accept(const unsigned int newton_iterations);
+
+    /** Whether the last accepted step landed on one of the 'Stop at times'. */
+    bool
+    at_stop_time() const;
+
+    /** Whether the last judged state was stable (true before any judgement). */
+    bool
+    stable() const;
+
+    /** Whether a critical time is being bracketed. */
+    bool
+    bracketing() const;
+
+    /** The bracket of the last loss of stability (valid after a Verdict::onset). */
+    const Bracket &
+    bracket() const;
+
+    /** The step the controller proposes next, before caps and stops. */
+    double
+    proposed_step() const;
+
+    const TimeStepping &
+    settings() const;
+
+  private:
+    TimeStepping settings_;
+    double       bisection_tolerance;
+    double       unstable_step;
+
+    double       time_     = 0.;
+    unsigned int step_     = 0;
+    double       proposed  = 0.; // the controller's step (Newton growth and cuts)
+    double       current   = 0.; // the current attempt
+    double       attempt_limit = 0.; // what bounded it before stop times (infinite when bisecting)
+    bool         stable_   = true;
+    bool         bisecting = false;
+    double       unstable_time = 0.;
+    Bracket      bracket_;
+  };
+} // namespace GelMPM
+
+#endif

@@ -1,0 +1,173 @@
+#include <gelmpm/solvers/step_control.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace GelMPM
+{
+  StepControl::StepControl(const TimeStepping &settings,
+                           const double        bisection_tolerance,
+                           const double        unstable_step)
+    : settings_(settings)
+    , bisection_tolerance(bisection_tolerance)
+    , unstable_step(unstable_step)
+    , proposed(settings.initial_step)
+  {}
+
+
+  double
+  StepControl::time() const
+  {
+    return time_;
+  }
+
+
+  unsigned int
+  StepControl::step() const
+  {
+    return step_;
+  }
+
+
+  bool
+  StepControl::finished() const
+  {
+    return time_ >= settings_.end_time * (1. - 1e-12);
+  }
+
+
+  bool
+  StepControl::out_of_steps() const
+  {
+    return step_ >= settings_.maximum_steps;
+  }
+
+
+  double
+  StepControl::attempt()
+  {
+    if (bisecting)
+      {
+        // Half the bracket while it is wider than the tolerance; then the step onto its unstable
+        // end. Such a step is shortened on purpose: it leaves the proposed step as it is.
+        const double remaining = unstable_time - time_;
+        current       = (remaining > bisection_tolerance) ? 0.5 * remaining : remaining;
+        attempt_limit = std::numeric_limits<double>::infinity();
+        return current;
+      }
+    double limit = std::min(proposed, settings_.cap(time_));
+    if (!stable_ && unstable_step > 0.)
+      limit = std::min(limit, unstable_step);
+    attempt_limit = limit;
+    current       = settings_.next_step(time_, limit);
+    return current;
+  }
+
+
+  double
+  StepControl::attempt_size() const
+  {
+    return current;
+  }
+
+
+  bool
+  StepControl::cut_step()
+  {
+    bisecting = false;
+    proposed  = current * settings_.cut_factor;
+    return proposed >= settings_.minimum_step;
+  }
+
+
+  StepControl::Verdict
+  StepControl::judge_signature(const bool stable)
+  {
+    if (stable && bisecting && time_ + current >= unstable_time * (1. - 1e-12))
+      {
+        bisecting = false;
+        stable_   = true;
+        return Verdict::step_dependent;
+      }
+    if (stable)
+      {
+        const bool was_stable = stable_;
+        stable_               = true;
+        return was_stable ? Verdict::accept : Verdict::regained;
+      }
+    if (!stable_)
+      return Verdict::accept;
+
+    // The signature left (n_u, n_mu, 0) within this attempt: the critical time lies in
+    // (time, time + current].
+    const double t_unstable = time_ + current;
+    if (bisection_tolerance > 0. && current > bisection_tolerance)
+      {
+        bisecting     = true;
+        unstable_time = t_unstable;
+        return Verdict::retake;
+      }
+    bisecting = false;
+    stable_   = false;
+    bracket_  = Bracket{time_, t_unstable};
+    return Verdict::onset;
+  }
+
+
+  void
+  StepControl::accept(const unsigned int newton_iterations)
+  {
+    // A step shortened by a stop time or by bisection leaves the proposed step as it was.
+    if (current >= attempt_limit * (1. - 1e-12))
+      proposed = current;
+    time_ += current;
+    ++step_;
+    if (newton_iterations < settings_.growth_below)
+      proposed *= settings_.growth_factor;
+  }
+
+
+  bool
+  StepControl::at_stop_time() const
+  {
+    return std::any_of(settings_.stop_times.begin(),
+                       settings_.stop_times.end(),
+                       [this](const double s) { return std::abs(s - time_) <= 1e-10 * s; });
+  }
+
+
+  bool
+  StepControl::stable() const
+  {
+    return stable_;
+  }
+
+
+  bool
+  StepControl::bracketing() const
+  {
+    return bisecting;
+  }
+
+
+  const StepControl::Bracket &
+  StepControl::bracket() const
+  {
+    return bracket_;
+  }
+
+
+  double
+  StepControl::proposed_step() const
+  {
+    return proposed;
+  }
+
+
+  const TimeStepping &
+  StepControl::settings() const
+  {
+    return settings_;
+  }
+} // namespace GelMPM
