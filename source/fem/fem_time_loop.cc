@@ -64,7 +64,8 @@ namespace GelMPM
     FemRunResult           result;
     StepControl            control(time_stepping,
                         signature.bisection_tolerance,
-                        signature.unstable_step);
+                        signature.unstable_step,
+                        signature.signature_control);
     dealii::Vector<double> solution;
     while (!control.finished())
       {
@@ -104,7 +105,8 @@ namespace GelMPM
             if (signature.stable)
               {
                 const auto verdict = control.judge_signature(signature.stable());
-                if (verdict == StepControl::Verdict::retake)
+                if (verdict == StepControl::Verdict::retake ||
+                    verdict == StepControl::Verdict::shorten)
                   continue;
                 if (verdict == StepControl::Verdict::onset)
                   result.onsets.push_back(control.bracket());

@@ -266,6 +266,12 @@ namespace GelMPM
                   << stability.bisection_tolerance << std::endl;
           announced_bracketing = true;
           return verdict;
+        case StepControl::Verdict::shorten:
+          pcout << "    the signature at t = " << t_end << " with dt = " << control->attempt_size()
+                << " is (" << result.inertia.n_positive << ", " << result.inertia.n_negative
+                << ", " << result.inertia.n_zero << "): a mode grows faster than 1/dt; retrying "
+                << "with dt = " << control->proposed_step() << std::endl;
+          return verdict;
         case StepControl::Verdict::step_dependent:
           pcout << "    with shorter steps the state at t = " << t_end
                 << " is stable: the loss of stability depends on the step size; bracketing ended"
@@ -424,11 +430,17 @@ namespace GelMPM
     solution.reinit(spaces->n_dofs());
     const auto        &mu  = spaces->mu();
     const unsigned int n_u = spaces->n_u_dofs();
+    // Control points that held no value in the last step (newly covered by material) start from
+    // the points' mu: a stale coefficient there puts a stress jump into the first residual, which
+    // short (undrained) steps cannot absorb.
+    const std::vector<double> from_points =
+      (system && step > 0) ? system->mu_from_points() : std::vector<double>();
     for (unsigned int i = 0; i < mu_coefficients.size(); ++i)
       {
         const unsigned int dof = mu.dof_of_control_point(i);
         if (dof != dealii::numbers::invalid_unsigned_int)
-          solution(n_u + dof) = mu_coefficients[i];
+          solution(n_u + dof) =
+            (mu_known[i] || from_points.empty()) ? mu_coefficients[i] : from_points[dof];
       }
   }
 
@@ -465,6 +477,14 @@ namespace GelMPM
           {
             pcout << "    step " << control->step() + 1 << " at t = " << t_begin
                   << " with dt = " << step_dt << " failed (" << report.failure << ")";
+            if (newton.log_failures)
+              {
+                pcout << "\n      Newton: scaled |R_u|, |R_mu| at the start of each iteration, "
+                         "damping taken:";
+                for (const auto &h : report.history)
+                  pcout << "\n        " << h[0] << "  " << h[1] << "  " << h[2];
+                pcout << "\n     ";
+              }
             if (control->bracketing())
               pcout << "; bracketing of the loss of stability abandoned";
             announced_bracketing = false;
@@ -490,7 +510,7 @@ namespace GelMPM
               });
             }
             const auto verdict = judge_signature(result);
-            if (verdict == StepControl::Verdict::retake)
+            if (verdict == StepControl::Verdict::retake || verdict == StepControl::Verdict::shorten)
               continue;
             record_stability(result);
             if (mode_output && result.mode.size() == spaces->n_u_dofs())
@@ -567,7 +587,8 @@ namespace GelMPM
     next_output_time = output_settings.interval_time;
     control          = std::make_unique<StepControl>(time_stepping,
                                             stability.bisection_tolerance,
-                                            stability.unstable_step);
+                                            stability.unstable_step,
+                                            stability.signature_control);
 
     statistics.set("dt", 0.);
     record_statistics(NewtonReport(), 0, nullptr);

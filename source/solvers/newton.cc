@@ -21,12 +21,18 @@ namespace GelMPM
                       "scales: G |Omega_0|^((dim-1)/dim) for the displacement block and "
                       "(k_BT/nu) |Omega_0| for the chemical-potential block.");
     prm.declare_entry("Line search",
-                      "true",
+                      "physical",
+                      dealii::Patterns::Selection("none|physical|merit"),
+                      "How Newton updates are damped, by backtracking (1, 1/2, 1/4, ...): "
+                      "'physical' until the trial state is physical at every point (J > 1, a "
+                      "fraction-to-the-boundary rule); 'merit' in addition until the scaled "
+                      "residual norm decreases (Armijo's rule); 'none': full updates, and a trial "
+                      "state with J <= 1 fails the attempt (doc/method.md, 'Newton').");
+    prm.declare_entry("Log failures",
+                      "false",
                       dealii::Patterns::Bool(),
-                      "Damp every Newton update by backtracking (1, 1/2, 1/4, ...) until the trial "
-                      "state is physical at every point (J > 1) and the scaled residual norm "
-                      "decreases (Armijo's rule). false: full Newton updates, and a trial state "
-                      "with J <= 1 fails the attempt.");
+                      "Print the scaled residuals and the damping of every iteration of a failed "
+                      "attempt to the log (diagnosis of a step that does not converge).");
     prm.declare_entry("Smallest damping",
                       "0.015625",
                       dealii::Patterns::Double(0., 1.),
@@ -42,8 +48,12 @@ namespace GelMPM
     prm.enter_subsection("Newton");
     maximum_iterations = prm.get_integer("Maximum iterations");
     tolerance          = prm.get_double("Tolerance");
-    line_search        = prm.get_bool("Line search");
+    const std::string search = prm.get("Line search");
+    line_search = (search == "none")     ? LineSearch::none :
+                  (search == "physical") ? LineSearch::physical :
+                                           LineSearch::merit;
     smallest_damping   = prm.get_double("Smallest damping");
+    log_failures       = prm.get_bool("Log failures");
     prm.leave_subsection();
     require(smallest_damping > 0. && smallest_damping <= 1.,
             "Newton/Smallest damping",

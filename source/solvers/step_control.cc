@@ -8,10 +8,12 @@ namespace GelMPM
 {
   StepControl::StepControl(const TimeStepping &settings,
                            const double        bisection_tolerance,
-                           const double        unstable_step)
+                           const double        unstable_step,
+                           const bool          signature_control)
     : settings_(settings)
     , bisection_tolerance(bisection_tolerance)
     , unstable_step(unstable_step)
+    , signature_control(signature_control)
     , proposed(settings.initial_step)
   {}
 
@@ -96,6 +98,11 @@ namespace GelMPM
         stable_               = true;
         return was_stable ? Verdict::accept : Verdict::regained;
       }
+    if (onset_seen && signature_control && current * settings_.cut_factor >= settings_.minimum_step)
+      {
+        proposed = current * settings_.cut_factor;
+        return Verdict::shorten;
+      }
     if (!stable_)
       return Verdict::accept;
 
@@ -110,7 +117,8 @@ namespace GelMPM
       }
     bisecting = false;
     stable_   = false;
-    bracket_  = Bracket{time_, t_unstable};
+    bracket_   = Bracket{time_, t_unstable};
+    onset_seen = true;
     return Verdict::onset;
   }
 

@@ -50,6 +50,16 @@ namespace GelMPM
                       "field on the background grid (mode-NNNNN.vtu, mode.pvd; field "
                       "displacement_increment, scaled to a largest coefficient of 1): the shape in "
                       "which the gel is about to lose, or has lost, stability.");
+    prm.declare_entry("Signature step control",
+                      "false",
+                      dealii::Patterns::Bool(),
+                      "With 'Inertia': after the first bracketed loss of stability, a converged "
+                      "attempt whose signature is not (n_dofs_u, n_dofs_mu, 0) is retaken with the "
+                      "step times 'Time stepping/Cut factor' (down to 'Minimum step'). The "
+                      "signature of the tangent at step dt counts the modes that grow faster than "
+                      "1/dt, so the steps follow the fastest growing mode and backward Euler "
+                      "resolves its growth instead of damping it (paper §4.3: 'adaptive "
+                      "time-stepping based on monitoring the signature'; doc/method.md).");
     prm.declare_entry("Step while unstable",
                       "0",
                       dealii::Patterns::Double(0.),
@@ -95,6 +105,7 @@ namespace GelMPM
     bisection_tolerance = prm.get_double("Bisection tolerance");
     write_mode          = prm.get_bool("Write mode");
     unstable_step       = prm.get_double("Step while unstable");
+    signature_control   = prm.get_bool("Signature step control");
     perturbation_amplitude = prm.get_double("Perturbation amplitude");
     perturbation_direction.clear();
     for (const auto &item : dealii::Utilities::split_string_list(prm.get("Perturbation direction")))
@@ -104,6 +115,10 @@ namespace GelMPM
             "Stability/Step while unstable",
             "needs the signature of the tangent, but 'Stability/Inertia = false'",
             "set 'Inertia = true' or the step to 0");
+    require(!signature_control || inertia,
+            "Stability/Signature step control",
+            "needs the signature of the tangent, but 'Stability/Inertia = false'",
+            "set 'Inertia = true' or 'Signature step control = false'");
     require(perturbation_amplitude == 0. || (inertia && n_eigenvalues > 0),
             "Stability/Perturbation amplitude",
             "needs the signature and the critical mode, but 'Inertia' is false or 'Schur "

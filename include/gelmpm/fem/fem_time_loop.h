@@ -52,6 +52,7 @@ namespace GelMPM
     std::function<bool()> stable;
     double                bisection_tolerance = 0.;
     double                unstable_step       = 0.;
+    bool                  signature_control   = false;
   };
 
 

@@ -9,9 +9,12 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/vector.h>
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
+#include <array>
 #include <string>
+#include <vector>
 
 namespace GelMPM
 {
@@ -29,8 +32,16 @@ namespace GelMPM
   {
     unsigned int maximum_iterations = 15;
     double       tolerance          = 1e-10;
-    /** Damp the Newton update (backtracking line search, see solve_newton()). */
-    bool line_search = true;
+    /** How the Newton update is damped (see solve_newton()). */
+    enum class LineSearch
+    {
+      none,     ///< full updates; a non-physical trial state fails the attempt
+      physical, ///< backtrack until every point of the trial state is physical (J > 1)
+      merit     ///< and until the scaled residual decreases (Armijo)
+    };
+    LineSearch line_search = LineSearch::physical;
+    /** Print the residual history of every failed attempt. */
+    bool log_failures = false;
     /** The smallest damping factor tried before the iteration counts as failed. */
     double smallest_damping = 1. / 64.;
 
@@ -51,6 +62,8 @@ namespace GelMPM
     double       residual_mu = 0.;
     /** Iterations whose update the line search shortened. */
     unsigned int damped_iterations = 0;
+    /** Per iteration: the scaled residuals (u, mu) at its start and the damping taken. */
+    std::vector<std::array<double, 3>> history;
     std::string  failure;
   };
 
@@ -60,13 +73,15 @@ namespace GelMPM
    * place). @p scale_u and @p scale_mu are the residual scales of NewtonSettings. Failures
    * (non-physical state, failing factorisation, too many iterations) are reported, not thrown.
    *
-   * With NewtonSettings::line_search, every update is damped by backtracking: the trial state
-   * x - alpha dx is tried for alpha = 1, 1/2, 1/4, ... down to 'smallest damping', and taken as
-   * soon as (a) every point of it is physical (J > 1: the assembly does not throw
-   * NonPhysicalState, a fraction-to-the-boundary rule) and (b) it decreases the merit function
-   * f = |R_u|^2 + |R_mu|^2 (scaled blocks) by Armijo's rule f(alpha) <= (1 - 1e-4 alpha) f(0).
-   * Near the solution alpha = 1 passes and the iteration is Newton's, quadratically convergent.
-   * Without the line search a non-physical trial state ends the attempt.
+   * With a line search, every update is damped by backtracking: the trial state x - alpha dx is
+   * tried for alpha = 1, 1/2, 1/4, ... down to 'smallest damping', and taken as soon as (a) every
+   * point of it is physical (J > 1: the assembly does not throw NonPhysicalState, a
+   * fraction-to-the-boundary rule) and, with LineSearch::merit, (b) it decreases the merit
+   * function f = |R_u|^2 + |R_mu|^2 (scaled blocks) by Armijo's rule
+   * f(alpha) <= (1 - 1e-4 alpha) f(0), or both scaled residuals of the trial state are within 1e3
+   * times the tolerance (where round-off, not the update, decides whether f still decreases).
+   * A physical full update is Newton's, quadratically convergent near the solution. Without a
+   * line search a non-physical trial state ends the attempt. doc/method.md compares the rules.
    *
    * @p System is any discretisation of the mixed u–mu step with
    *   void assemble(const dealii::Vector<double> &solution, double dt, bool with_matrix)
@@ -142,13 +157,14 @@ namespace GelMPM
         report.iterations = k + 1;
 
         const double merit_0 = merit();
+        const double r_u_0 = report.residual_u, r_mu_0 = report.residual_mu;
         double       alpha   = 1.;
         for (;;)
           {
             trial = solution;
             trial.add(-alpha, increment);
             const bool physical = assemble_at(trial);
-            if (!settings.line_search)
+            if (settings.line_search == NewtonSettings::LineSearch::none)
               {
                 if (!physical)
                   {
@@ -158,7 +174,12 @@ namespace GelMPM
                   }
                 break;
               }
-            if (physical && merit() <= (1. - 1e-4 * alpha) * merit_0)
+            // Near the solution round-off decides whether the residual still decreases: there
+            // any physical update is taken.
+            const bool near_solution = std::max(report.residual_u, report.residual_mu) <=
+                                       1e3 * settings.tolerance;
+            if (physical && (settings.line_search == NewtonSettings::LineSearch::physical ||
+                             near_solution || merit() <= (1. - 1e-4 * alpha) * merit_0))
               break;
             const std::string why = physical ? "the residual does not decrease" : report.failure;
             alpha *= 0.5;
@@ -171,6 +192,7 @@ namespace GelMPM
                 return report;
               }
           }
+        report.history.push_back({{r_u_0, r_mu_0, alpha}});
         if (alpha < 1.)
           ++report.damped_iterations;
         solution.swap(trial);

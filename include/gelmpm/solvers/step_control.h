@@ -21,6 +21,10 @@ namespace GelMPM
    *   - bracketing: when the signature leaves (n_u, n_mu, 0) within a step, the step is retaken
    *     from the last stable state with halved remaining intervals until the critical time is
    *     known to the bisection tolerance;
+   *   - with signature control, after the first bracketed loss of stability an unstable attempt
+   *     is retaken shorter (by the cut factor) until its signature is (n_u, n_mu, 0) again or
+   *     the minimum step is reached: the signature of K(dt) counts the modes that grow faster
+   *     than 1/dt (doc/method.md), so this keeps sigma dt < 1 for every mode;
    *   - while the accepted state is unstable, the step is at most 'unstable step': backward
    *     Euler multiplies a mode growing at rate sigma by 1/(1 - sigma dt) per step, which damps
    *     it once sigma dt > 2, so long steps would converge to the unstable symmetric state
@@ -58,7 +62,10 @@ namespace GelMPM
        * signature depends on the step size (K_mumu ~ dt); bracketing ended, accept. */
       step_dependent,
       /** The signature is back at (n_u, n_mu, 0) after an unstable stretch: accept. */
-      regained
+      regained,
+      /** After a bracketed loss of stability, with signature control: the attempt is unstable,
+       * i.e. some mode grows faster than 1/dt; retake it with the step times the cut factor. */
+      shorten
     };
 
     /** A loss of stability: the last stable and the first unstable time. */
@@ -75,7 +82,8 @@ namespace GelMPM
      */
     explicit StepControl(const TimeStepping &settings,
                          const double        bisection_tolerance = 0.,
-                         const double        unstable_step       = 0.);
+                         const double        unstable_step       = 0.,
+                         const bool          signature_control   = false);
 
     /** Time of the last accepted state (tau_d). */
     double
@@ -149,6 +157,8 @@ namespace GelMPM
     TimeStepping settings_;
     double       bisection_tolerance;
     double       unstable_step;
+    bool         signature_control;
+    bool         onset_seen = false;
 
     double       time_     = 0.;
     unsigned int step_     = 0;

@@ -43,6 +43,8 @@ namespace GelMPM
     double bisection_tolerance = 0.;
     /** Write the critical mode (eigenvector of the smallest Schur eigenvalue) for ParaView. */
     bool write_mode = false;
+    /** After a bracketed loss of stability, retake unstable attempts shorter (StepControl). */
+    bool signature_control = false;
     /** Largest step (tau_d) while the signature is not (n_u, n_mu, 0); 0: no such cap. */
     double unstable_step = 0.;
     /** Largest control-point displacement of the perturbation along the critical mode at a

@@ -1,0 +1,134 @@
+// StepControl, the step policy shared by the material point simulator and the body-fitted peer,
+// driven through scripted sequences of Newton outcomes and signatures; every decision is
+// checked against the rule it implements (include/gelmpm/solvers/step_control.h):
+// 1. growth by the growth factor after fast convergence, caps, landing on stop times and on the
+//    end time, a stop-time step leaving the proposed step unchanged;
+// 2. cuts after a failed attempt and the refusal below the minimum step;
+// 3. bisection of a loss of stability to the tolerance, the bracket, the step-dependent case;
+// 4. after an onset: the cap while unstable, and signature control (retake shorter while the
+//    signature is unstable), then regained stability.
+#include <gelmpm/solvers/step_control.h>
+
+#include <cmath>
+#include <iostream>
+
+using GelMPM::StepControl;
+using Verdict = StepControl::Verdict;
+
+namespace
+{
+  bool
+  close(const double a, const double b)
+  {
+    return std::abs(a - b) <= 1e-12 * std::max(1., std::abs(b));
+  }
+
+  GelMPM::TimeStepping
+  settings()
+  {
+    GelMPM::TimeStepping s;
+    s.initial_step  = 0.1;
+    s.end_time      = 1.;
+    s.minimum_step  = 1e-3;
+    s.growth_factor = 1.25;
+    s.growth_below  = 6;
+    s.cut_factor    = 0.5;
+    s.caps          = {{0.5, 0.15}};
+    s.stop_times    = {0.3};
+    return s;
+  }
+} // namespace
+
+int
+main()
+{
+  std::cout << std::boolalpha;
+  {
+    StepControl c(settings());
+    bool        ok = close(c.attempt(), 0.1);
+    c.accept(3); // fast: grows to 0.125
+    ok = ok && close(c.attempt(), 0.125) && close(c.time(), 0.1);
+    c.accept(8); // slow: stays
+    ok = ok && close(c.attempt(), 0.075); // lands on the stop time 0.3
+    c.accept(8);
+    ok = ok && c.at_stop_time() && close(c.proposed_step(), 0.125);
+    ok = ok && close(c.attempt(), 0.125);
+    c.accept(3);
+    ok = ok && close(c.attempt(), 0.15); // capped (0.15625 > 0.15) until t = 0.5
+    std::cout << "growth, stop times and caps: " << ok << std::endl;
+    c.accept(8);
+    ok = close(c.time(), 0.575) && close(c.attempt(), 0.15);
+    c.accept(3);
+    ok = ok && close(c.attempt(), 0.1875);
+    c.accept(3);
+    ok = ok && close(c.attempt(), 1. - 0.9125) && !c.finished();
+    c.accept(3);
+    std::cout << "end time reached exactly: " << (ok && c.finished() && close(c.time(), 1.))
+              << std::endl;
+  }
+  {
+    StepControl c(settings());
+    c.attempt();
+    bool ok = c.cut_step() && close(c.attempt(), 0.05);
+    for (unsigned int k = 0; k < 5; ++k)
+      ok = ok && c.cut_step() && (c.attempt() > 0.);
+    ok = ok && close(c.attempt_size(), 0.1 / 64.);
+    std::cout << "cuts halve the step: " << ok << std::endl;
+    std::cout << "a cut below the minimum step is refused: " << !c.cut_step() << std::endl;
+  }
+  {
+    GelMPM::TimeStepping s = settings();
+    s.caps.clear();
+    s.stop_times.clear();
+    StepControl c(s, 0.01);
+    c.attempt();
+    c.judge_signature(true);
+    c.accept(8); // t = 0.1, stable
+    c.attempt(); // to 0.2: unstable
+    bool ok = c.judge_signature(false) == Verdict::retake && c.bracketing();
+    // Bisection of (0.1, 0.2]: 0.15 stable, 0.175 unstable, 0.1625 stable, 0.16875 unstable by
+    // a step narrower than the tolerance: the bracket (0.1625, 0.16875], onset.
+    ok = ok && close(c.attempt(), 0.05) && c.judge_signature(true) == Verdict::accept;
+    c.accept(8);
+    ok = ok && close(c.attempt(), 0.025) && c.judge_signature(false) == Verdict::retake;
+    ok = ok && close(c.attempt(), 0.0125) && c.judge_signature(true) == Verdict::accept;
+    c.accept(8);
+    ok = ok && close(c.attempt(), 0.00625) && c.judge_signature(false) == Verdict::onset;
+    ok = ok && close(c.bracket().t_stable, 0.1625) && close(c.bracket().t_unstable, 0.16875);
+    c.accept(8);
+    std::cout << "a loss of stability is bracketed to the tolerance: " << ok << std::endl;
+    std::cout << "after the bracket the proposed step is the step before it: "
+              << close(c.proposed_step(), 0.1) << std::endl;
+  }
+  {
+    GelMPM::TimeStepping s = settings();
+    s.caps.clear();
+    s.stop_times.clear();
+    StepControl c(s, 0.06);
+    c.attempt();
+    c.judge_signature(false); // retake
+    c.attempt();              // 0.05
+    c.judge_signature(true);
+    c.accept(8);
+    c.attempt(); // 0.05 onto the unstable end, now stable
+    std::cout << "a stable state at the unstable end ends the bracketing: "
+              << (c.judge_signature(true) == Verdict::step_dependent && !c.bracketing())
+              << std::endl;
+  }
+  {
+    GelMPM::TimeStepping s = settings();
+    s.caps.clear();
+    s.stop_times.clear();
+    StepControl c(s, 0., 0.02, true);
+    c.attempt();
+    bool ok = c.judge_signature(false) == Verdict::onset; // no bisection: onset at once
+    c.accept(3);
+    ok = ok && close(c.attempt(), 0.02); // capped while unstable
+    ok = ok && c.judge_signature(false) == Verdict::shorten && close(c.proposed_step(), 0.01);
+    ok = ok && close(c.attempt(), 0.01) && c.judge_signature(false) == Verdict::shorten;
+    ok = ok && close(c.attempt(), 0.005) && c.judge_signature(true) == Verdict::regained;
+    c.accept(3);
+    ok = ok && c.stable() && close(c.attempt(), 0.00625);
+    std::cout << "after an onset unstable attempts are shortened until stable: " << ok << std::endl;
+  }
+}
