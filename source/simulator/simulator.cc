@@ -548,7 +548,10 @@ namespace GelMPM
         if (report.damped_iterations > 0)
           pcout << " (" << report.damped_iterations << " damped)";
         pcout << "  |R_u| " << std::setprecision(2) << report.residual_u << "  |R_mu| "
-              << report.residual_mu << std::setprecision(6) << std::endl;
+              << report.residual_mu;
+        if (newton.log_failures && !report.history.empty())
+          pcout << "  (first: " << report.history[0][0] << ", " << report.history[0][1] << ")";
+        pcout << std::setprecision(6) << std::endl;
 
         const bool interval_due =
           (output_settings.interval_steps > 0 && step % output_settings.interval_steps == 0) ||

@@ -32,7 +32,8 @@ namespace GelMPM
                       "false",
                       dealii::Patterns::Bool(),
                       "Print the scaled residuals and the damping of every iteration of a failed "
-                      "attempt to the log (diagnosis of a step that does not converge).");
+                      "attempt to the log, and the first residuals of every step (diagnosis of a "
+                      "step that does not converge).");
     prm.declare_entry("Smallest damping",
                       "0.015625",
                       dealii::Patterns::Double(0., 1.),
