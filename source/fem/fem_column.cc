@@ -101,6 +101,8 @@ namespace GelMPM
         record.boundary_mu             = boundary_chemical_potential(step.t_over_tau_d);
         // Judged on the converged attempt before update(): the tangent of this step's state.
         record.signature = signature_->last();
+        record.relative_volume_change =
+          system_->deformation_summary().deformed_volume / system_->volume() - 1.;
         on_step(record);
       },
       control);

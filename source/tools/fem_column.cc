@@ -110,26 +110,25 @@ main(int argc, char **argv)
                 << " mu), lambda_0 " << material.lambda_0() << ", mu_0 " << material.mu_0()
                 << ", to t/tau_d = " << end_time << std::endl;
 
-      unsigned int n_steps = 0;
-      const auto   result  = column.run(settings.time_stepping,
+      unsigned int n_steps    = 0;
+      const auto   print_step = [&](const GelMPM::FemColumn::Step &s) {
+        n_steps = s.number;
+        if (quiet)
+          return;
+        std::cout << "  step " << std::setw(4) << s.number << "  t/tau_d = " << std::setw(10)
+                  << std::setprecision(6) << s.t_over_tau_d << "  dt = " << std::setw(10)
+                  << s.dt_over_tau_d << "  Newton " << std::setw(2) << s.newton_iterations
+                  << "  attempts " << s.attempts << "  dV/V " << std::setw(10)
+                  << s.relative_volume_change << "  signature " << format(s.signature.measured)
+                  << " stable " << format(s.signature.expected)
+                  << (s.signature.stable() ? "" : "  UNSTABLE") << std::endl;
+      };
+      const auto   result = column.run(settings.time_stepping,
                                      settings.newton,
                                      GelMPM::LinearSolver(),
                                      bisection_tolerance,
                                      unstable_step,
-                                     [&](const GelMPM::FemColumn::Step &s) {
-                                       n_steps = s.number;
-                                       if (quiet)
-                                         return;
-                                       std::cout
-                                         << "  step " << std::setw(4) << s.number
-                                         << "  t/tau_d = " << std::setw(10) << std::setprecision(6)
-                                         << s.t_over_tau_d << "  dt = " << std::setw(10)
-                                         << s.dt_over_tau_d << "  Newton " << std::setw(2)
-                                         << s.newton_iterations << "  attempts " << s.attempts
-                                         << "  signature " << format(s.signature.measured)
-                                         << " stable " << format(s.signature.expected)
-                                         << (s.signature.stable() ? "" : "  UNSTABLE") << std::endl;
-                                     });
+                                     print_step);
       const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 

@@ -60,6 +60,9 @@ namespace GelMPM
       double boundary_mu = 0.;
       /** The signature of the tangent at the converged state of the step. */
       FemSignature signature;
+      /** Volume change int (det F_n - 1) dV_0 over |Omega_0|: the solvent taken up so far,
+       * which drives the axial compression. */
+      double relative_volume_change = 0.;
     };
 
     /** Boundary ids of the mesh. */
