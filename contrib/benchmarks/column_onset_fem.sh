@@ -21,8 +21,9 @@ if [[ ! -x "${tool}" ]]; then
   echo "no ${tool}: build it first (cmake --build build --target gelmpm-fem-column)" >&2
   exit 2
 fi
-# Measured on a 2-core machine: 2, 4, 8, 16 cells across take about 1, 3, 12 and 60 s.
-declare -A estimate=([1]=1 [2]=1 [4]=3 [8]=12 [16]=60 [32]=350)
+# Measured on the 2-core machine with other jobs running: 2, 4, 8, 16, 32 cells across took
+# about 3, 4, 22, 143 and (to the bracket only) 1155 s; idle, 8 cells take about 9 s.
+declare -A estimate=([1]=2 [2]=3 [4]=4 [8]=22 [16]=143 [32]=1800)
 total=0
 for n in "${levels[@]}"; do total=$((total + ${estimate[${n}]:-$((n * n / 4))})); done
 echo "column onset with the FE peer, n = ${levels[*]}: about ${total} s on a 2-core machine"
