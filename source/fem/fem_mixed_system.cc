@@ -7,6 +7,7 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
@@ -14,6 +15,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -77,10 +79,42 @@ namespace GelMPM
 
   template <int dim>
   void
+  FemMixedSystem<dim>::constrain_displacement_at_vertex(const dealii::Point<dim>        &vertex,
+                                                        const std::vector<unsigned int> &components)
+  {
+    std::vector<bool> mask(dim + 1, false);
+    for (const unsigned int c : components)
+      {
+        if (c >= dim)
+          throw std::invalid_argument("FemMixedSystem: displacement component " +
+                                      std::to_string(c) + " does not exist in " +
+                                      std::to_string(dim) + "D");
+        mask[c] = true;
+      }
+    vertex_constraints.emplace_back(vertex, mask);
+  }
+
+
+  template <int dim>
+  void
   FemMixedSystem<dim>::prescribe_chemical_potential(const dealii::types::boundary_id id,
                                                     const double                     mu_bar)
   {
     mu_constraints[id] = mu_bar;
+  }
+
+
+  template <int dim>
+  void
+  FemMixedSystem<dim>::set_chemical_potential(const dealii::types::boundary_id id,
+                                              const double                     mu_bar)
+  {
+    const auto entry = mu_constraints.find(id);
+    if (entry == mu_constraints.end())
+      throw std::invalid_argument("FemMixedSystem: boundary " + std::to_string(id) +
+                                  " has no prescribed chemical potential "
+                                  "(prescribe_chemical_potential before setup)");
+    entry->second = mu_bar;
   }
 
 
@@ -141,8 +175,51 @@ namespace GelMPM
           constraints,
           dealii::ComponentMask(mu_mask));
       }
+    // A held vertex may also lie on a held face: constrain each DoF once.
+    const double tolerance = 1e-10 * dealii::GridTools::minimal_cell_diameter(triangulation);
+    for (const auto &[vertex, mask] : vertex_constraints)
+      {
+        bool found = false;
+        for (const auto &cell : dof_handler_.active_cell_iterators())
+          for (const auto v : cell->vertex_indices())
+            if (cell->vertex(v).distance(vertex) < tolerance)
+              {
+                found = true;
+                // Vertex DoFs come first in a cell, fe.n_dofs_per_vertex() per vertex.
+                for (unsigned int k = 0; k < fe.n_dofs_per_vertex(); ++k)
+                  {
+                    const unsigned int c =
+                      fe.system_to_component_index(v * fe.n_dofs_per_vertex() + k).first;
+                    const auto i = cell->vertex_dof_index(v, k);
+                    if (mask[c] && !zero_constraints.is_constrained(i))
+                      {
+                        zero_constraints.add_line(i);
+                        constraints.add_line(i);
+                      }
+                  }
+              }
+        if (!found)
+          {
+            std::ostringstream message;
+            message << "FemMixedSystem: no mesh vertex at (" << vertex
+                    << ") for a displacement condition";
+            throw std::invalid_argument(message.str());
+          }
+      }
     zero_constraints.close();
     constraints.close();
+
+    mu_dofs.clear();
+    for (const auto &c : mu_constraints)
+      {
+        const dealii::IndexSet dofs =
+          dealii::DoFTools::extract_boundary_dofs(dof_handler_,
+                                                  dealii::ComponentMask(mu_mask),
+                                                  {c.first});
+        auto &indices = mu_dofs[c.first];
+        for (const auto i : dofs)
+          indices.push_back(i);
+      }
 
     displacement_increments.clear();
     for (const auto &c : displacement_constraints)
@@ -185,6 +262,11 @@ namespace GelMPM
     for (const auto &entry : displacement_increments)
       for (const auto i : entry.second.first)
         solution(i) = entry.second.second;
+    // The prescribed mu of the coming step (set_chemical_potential), which may differ from the
+    // value the constraints were built with.
+    for (const auto &[id, indices] : mu_dofs)
+      for (const auto i : indices)
+        solution(i) = mu_constraints.at(id);
   }
 
 
@@ -513,6 +595,14 @@ namespace GelMPM
   FemMixedSystem<dim>::n_mu_dofs() const
   {
     return dof_handler_.n_dofs() - n_u_dofs_;
+  }
+
+
+  template <int dim>
+  const dealii::AffineConstraints<double> &
+  FemMixedSystem<dim>::increment_constraints() const
+  {
+    return zero_constraints;
   }
 
 

@@ -49,9 +49,10 @@ namespace GelMPM
    * this can be checked (tests/fem/fem_formulations).
    *
    * Boundary conditions: displacement components held (du = 0 on them, so u = 0 relative to
-   * Omega_0) and prescribed mu on boundary ids of the triangulation; everything else is traction
-   * free and impermeable. Constrained rows of the residual are zero and of the tangent carry a
-   * diagonal entry, so Newton keeps the constrained values of the initial guess.
+   * Omega_0) on boundary ids of the triangulation or at single vertices, and prescribed mu on
+   * boundary ids (constant, or changed per step with set_chemical_potential()); everything else
+   * is traction free and impermeable. Constrained rows of the residual are zero and of the tangent
+   * carry a diagonal entry, so Newton keeps the constrained values of the initial guess.
    */
   template <int dim>
   class FemMixedSystem
@@ -89,9 +90,30 @@ namespace GelMPM
                                const unsigned int               component,
                                const double                     delta);
 
+    /**
+     * Hold the displacement components @p components (0..dim-1) at the mesh vertex @p vertex
+     * only (du = 0 there), e.g. a pin against rigid motion where no boundary face is short
+     * enough to carry it. setup() throws std::invalid_argument if no vertex lies within 1e-10
+     * times the smallest cell diameter of @p vertex.
+     */
+    void
+    constrain_displacement_at_vertex(const dealii::Point<dim>        &vertex,
+                                     const std::vector<unsigned int> &components);
+
     /** Prescribe mu/k_BT = @p mu_bar on boundary @p id for t > 0. */
     void
     prescribe_chemical_potential(const dealii::types::boundary_id id, const double mu_bar);
+
+    /**
+     * For the coming step, change the prescribed mu/k_BT on boundary @p id to @p mu_bar (a
+     * boundary of prescribe_chemical_potential()): the value mu_{n+1} takes there, for
+     * time-dependent data such as a ramp. Holds until changed. Like set_displacement_increment()
+     * it acts through initial_guess(), since the Newton increments are homogeneous on
+     * constrained rows: call it before initial_guess() of every step (run_fem_time_loop's
+     * prescribe callback). Throws std::invalid_argument for a boundary without prescribed mu.
+     */
+    void
+    set_chemical_potential(const dealii::types::boundary_id id, const double mu_bar);
 
     /**
      * Distribute the DoFs (displacement block first, then mu), build the constraints and the
@@ -182,6 +204,15 @@ namespace GelMPM
     unsigned int
     n_mu_dofs() const;
 
+    /**
+     * The homogeneous constraints of the Newton increments: the rows of matrix() that are
+     * constrained hold only a diagonal entry (AffineConstraints puts |K_ii| of the cell matrices
+     * there, positive whatever the block), which the signature of the tangent must account for
+     * (FemSignatureCheck).
+     */
+    const dealii::AffineConstraints<double> &
+    increment_constraints() const;
+
     /** The converged state: u_n (from Omega_0) then mu_n, in the DoF order of the system. */
     const dealii::Vector<double> &
     state() const;
@@ -198,6 +229,10 @@ namespace GelMPM
 
     std::map<dealii::types::boundary_id, std::vector<bool>> displacement_constraints;
     std::map<dealii::types::boundary_id, double>            mu_constraints;
+    /** Vertices with held displacement components (constrain_displacement_at_vertex). */
+    std::vector<std::pair<dealii::Point<dim>, std::vector<bool>>> vertex_constraints;
+    /** Per boundary with prescribed mu: its mu DoFs, set to mu_constraints in initial_guess(). */
+    std::map<dealii::types::boundary_id, std::vector<dealii::types::global_dof_index>> mu_dofs;
     /** Per (boundary, component) held: its DoFs and the increment of the coming step. */
     std::map<std::pair<dealii::types::boundary_id, unsigned int>,
              std::pair<std::vector<dealii::types::global_dof_index>, double>>
