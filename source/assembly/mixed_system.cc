@@ -823,6 +823,23 @@ namespace GelMPM
 
 
   template <int dim>
+  double
+  MixedSystem<dim>::largest_displacement_increment(const dealii::Vector<double> &solution) const
+  {
+    double largest = 0.;
+    for (const auto &r : points)
+      {
+        Tensor<1, dim> du;
+        Tensor<2, dim> delta_F;
+        double         mu;
+        fields_at_point(r, solution, du, delta_F, mu);
+        largest = std::max(largest, du.norm());
+      }
+    return largest;
+  }
+
+
+  template <int dim>
   dealii::FullMatrix<double>
   MixedSystem<dim>::mu_mass_matrix() const
   {

@@ -236,6 +236,8 @@ namespace GelMPM
         statistics.set("n_pos", result.inertia.n_positive);
         statistics.set("n_neg", result.inertia.n_negative);
         statistics.set("n_zero", result.inertia.n_zero);
+        if (stability.drained_onset)
+          statistics.set("n_neg_uu", result.drained_inertia.n_negative);
       }
     for (unsigned int k = 0; k < result.eigenvalues.size(); ++k)
       statistics.set("eig_" + std::to_string(k + 1), result.eigenvalues[k]);
@@ -252,16 +254,25 @@ namespace GelMPM
   {
     if (!stability.inertia)
       return StepControl::Verdict::accept;
-    const bool stable = result.inertia.n_positive == spaces->n_u_dofs() &&
-                        result.inertia.n_negative == spaces->n_mu_dofs() &&
-                        result.inertia.n_zero == 0;
+    const bool tangent_stable = result.inertia.n_positive == spaces->n_u_dofs() &&
+                                result.inertia.n_negative == spaces->n_mu_dofs() &&
+                                result.inertia.n_zero == 0;
+    // Until the first onset the drained criterion (K_uu positive definite: no mode grows) brackets
+    // it independently of the step; from then on the tangent's signature (no mode grows faster
+    // than 1/dt) controls the steps.
+    const bool use_drained = stability.drained_onset && !control->onset_seen();
+    const bool stable      = use_drained ? (result.drained_inertia.n_negative == 0 &&
+                                       result.drained_inertia.n_zero == 0) :
+                                           tangent_stable;
     const double t_end   = control->time() + control->attempt_size();
     const auto   verdict = control->judge_signature(stable);
     switch (verdict)
       {
         case StepControl::Verdict::retake:
           if (!announced_bracketing)
-            pcout << "    the signature leaves (n_u, n_mu, 0) between t = " << control->time()
+            pcout << "    the state loses stability ("
+                  << (use_drained ? "K_uu indefinite" : "signature not (n_u, n_mu, 0)")
+                  << ") between t = " << control->time()
                   << " and " << t_end << "; bisecting to 'Stability/Bisection tolerance' = "
                   << stability.bisection_tolerance << std::endl;
           announced_bracketing = true;
@@ -288,7 +299,7 @@ namespace GelMPM
           break;
       }
     announced_bracketing = control->bracketing();
-    if (stable)
+    if (tangent_stable)
       {
         last_stable_inertia = result.inertia;
         last_eigenvalue     = result.eigenvalues.empty() ? 0. : result.eigenvalues[0];
@@ -305,7 +316,11 @@ namespace GelMPM
     pcout << "    loss of stability between t/tau_d = " << bracket.t_stable << " (stable) and "
           << bracket.t_unstable << ": signature (" << result.inertia.n_positive << ", "
           << result.inertia.n_negative << ", " << result.inertia.n_zero << "), expected ("
-          << spaces->n_u_dofs() << ", " << spaces->n_mu_dofs() << ", 0)" << std::endl;
+          << spaces->n_u_dofs() << ", " << spaces->n_mu_dofs() << ", 0)";
+    if (stability.drained_onset)
+      pcout << "; K_uu has " << result.drained_inertia.n_negative
+            << " negative eigenvalue(s) (drained criterion)";
+    pcout << std::endl;
     stability_file.set("t_stable", bracket.t_stable);
     stability_file.set("t_unstable", bracket.t_unstable);
     stability_file.set("n_neg_stable", last_stable_inertia.n_negative);
@@ -465,14 +480,27 @@ namespace GelMPM
         const double step_dt = control->attempt();
         system->set_boundary_values(t_begin + step_dt);
         initial_guess(solution);
-        const NewtonReport report = solve_newton(*system,
-                                                 solution,
-                                                 step_dt * tau_d,
+        NewtonReport report = solve_newton(*system,
+                                           solution,
+                                           step_dt * tau_d,
                                                  newton,
                                                  linear_solver,
                                                  scale_u,
                                                  scale_mu,
                                                  timer);
+        if (report.converged && time_stepping.largest_increment > 0.)
+          {
+            const double moved = system->largest_displacement_increment(solution);
+            if (moved > time_stepping.largest_increment * spaces->h_u())
+              {
+                report.converged = false;
+                std::ostringstream why;
+                why << "a material point moves " << moved / spaces->h_u()
+                    << " cells, more than 'Time stepping/Largest increment' = "
+                    << time_stepping.largest_increment;
+                report.failure = why.str();
+              }
+          }
         if (!report.converged)
           {
             pcout << "    step " << control->step() + 1 << " at t = " << t_begin

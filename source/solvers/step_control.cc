@@ -98,7 +98,7 @@ namespace GelMPM
         stable_               = true;
         return was_stable ? Verdict::accept : Verdict::regained;
       }
-    if (onset_seen && signature_control && current * settings_.cut_factor >= settings_.minimum_step)
+    if (onset_seen_ && signature_control && current * settings_.cut_factor >= settings_.minimum_step)
       {
         proposed = current * settings_.cut_factor;
         return Verdict::shorten;
@@ -118,7 +118,7 @@ namespace GelMPM
     bisecting = false;
     stable_   = false;
     bracket_   = Bracket{time_, t_unstable};
-    onset_seen = true;
+    onset_seen_ = true;
     return Verdict::onset;
   }
 
@@ -126,12 +126,14 @@ namespace GelMPM
   void
   StepControl::accept(const unsigned int newton_iterations)
   {
-    // A step shortened by a stop time or by bisection leaves the proposed step as it was.
+    // A step shortened by a stop time or by bisection leaves the proposed step as it was; a
+    // bisection step does not grow it either (its size was forced, not chosen by Newton).
+    const bool bisection_step = std::isinf(attempt_limit);
     if (current >= attempt_limit * (1. - 1e-12))
       proposed = current;
     time_ += current;
     ++step_;
-    if (newton_iterations < settings_.growth_below)
+    if (newton_iterations < settings_.growth_below && !bisection_step)
       proposed *= settings_.growth_factor;
   }
 
@@ -149,6 +151,13 @@ namespace GelMPM
   StepControl::stable() const
   {
     return stable_;
+  }
+
+
+  bool
+  StepControl::onset_seen() const
+  {
+    return onset_seen_;
   }
 
 

@@ -43,6 +43,14 @@ namespace GelMPM
                       "1000000",
                       Patterns::Integer(1),
                       "Stop (cleanly, exit status 1) after this many steps.");
+    prm.declare_entry("Largest increment",
+                      "0",
+                      Patterns::Double(0.),
+                      "A converged step in which some material point moves farther than this, in "
+                      "cells of the displacement grid, is retaken with the step times 'Cut factor' "
+                      "(the material point method integrates on the points, so they should cross "
+                      "at most about one cell per step; near an instability it also keeps Newton "
+                      "on the branch it started from). 0: no limit.");
     prm.declare_entry("Step caps",
                       "",
                       Patterns::Anything(),
@@ -71,6 +79,7 @@ namespace GelMPM
     growth_below                = prm.get_integer("Growth below iterations");
     cut_factor                  = prm.get_double("Cut factor");
     maximum_steps               = prm.get_integer("Maximum steps");
+    largest_increment           = prm.get_double("Largest increment");
     const std::string caps_text = prm.get("Step caps");
     const std::string stops     = prm.get("Stop at times");
     prm.leave_subsection();

@@ -50,6 +50,16 @@ namespace GelMPM
                       "field on the background grid (mode-NNNNN.vtu, mode.pvd; field "
                       "displacement_increment, scaled to a largest coefficient of 1): the shape in "
                       "which the gel is about to lose, or has lost, stability.");
+    prm.declare_entry("Onset criterion",
+                      "tangent",
+                      dealii::Patterns::Selection("tangent|drained"),
+                      "With 'Inertia': what brackets a loss of stability. 'tangent': the signature "
+                      "of the tangent K(dt), which leaves (n_dofs_u, n_dofs_mu, 0) when some mode "
+                      "grows faster than 1/dt, so the time found depends on the step. 'drained': "
+                      "the inertia of its displacement block K_uu (mu held), which has a negative "
+                      "eigenvalue exactly when some mode grows at all (sigma > 0), independent of "
+                      "the step: one more LDL^T factorisation per step, column n_neg_uu "
+                      "(doc/method.md, 'Going through an instability').");
     prm.declare_entry("Signature step control",
                       "false",
                       dealii::Patterns::Bool(),
@@ -106,6 +116,7 @@ namespace GelMPM
     write_mode          = prm.get_bool("Write mode");
     unstable_step       = prm.get_double("Step while unstable");
     signature_control   = prm.get_bool("Signature step control");
+    drained_onset       = prm.get("Onset criterion") == "drained";
     perturbation_amplitude = prm.get_double("Perturbation amplitude");
     perturbation_direction.clear();
     for (const auto &item : dealii::Utilities::split_string_list(prm.get("Perturbation direction")))
@@ -115,6 +126,10 @@ namespace GelMPM
             "Stability/Step while unstable",
             "needs the signature of the tangent, but 'Stability/Inertia = false'",
             "set 'Inertia = true' or the step to 0");
+    require(!drained_onset || inertia,
+            "Stability/Onset criterion",
+            "'drained' needs the signature of the tangent, but 'Stability/Inertia = false'",
+            "set 'Inertia = true' or 'Onset criterion = tangent'");
     require(!signature_control || inertia,
             "Stability/Signature step control",
             "needs the signature of the tangent, but 'Stability/Inertia = false'",
@@ -162,6 +177,8 @@ namespace GelMPM
     std::vector<std::string> c;
     if (inertia)
       c = {"n_pos", "n_neg", "n_zero"};
+    if (drained_onset)
+      c.push_back("n_neg_uu");
     for (unsigned int k = 0; k < n_eigenvalues; ++k)
       c.push_back("eig_" + std::to_string(k + 1));
     if (inf_sup)
@@ -184,6 +201,12 @@ namespace GelMPM
         SymmetricFactorization factorization;
         factorization.factorize(K);
         report.inertia = factorization.inertia();
+        if (settings.drained_onset)
+          {
+            SymmetricFactorization displacement_block;
+            displacement_block.factorize(K, n_u);
+            report.drained_inertia = displacement_block.inertia();
+          }
         if (settings.n_eigenvalues > 0)
           {
             auto eigen         = smallest_schur_eigenvalues(factorization,

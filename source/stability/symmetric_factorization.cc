@@ -1,5 +1,7 @@
 #include <gelmpm/stability/symmetric_factorization.h>
 
+#include <algorithm>
+
 #include <deal.II/base/mpi.h>
 
 #include <dmumps_c.h>
@@ -71,13 +73,15 @@ namespace GelMPM
 
 
   void
-  SymmetricFactorization::factorize(const dealii::TrilinosWrappers::SparseMatrix &K)
+  SymmetricFactorization::factorize(const dealii::TrilinosWrappers::SparseMatrix &K,
+                                    const unsigned int                            leading)
   {
-    auto &d = *data;
+    const unsigned int n = std::min<unsigned int>(leading, K.m());
+    auto              &d = *data;
     d.rows.clear();
     d.columns.clear();
     d.values.clear();
-    for (unsigned int row = 0; row < K.m(); ++row)
+    for (unsigned int row = 0; row < n; ++row)
       for (auto entry = K.begin(row); entry != K.end(row); ++entry)
         if (entry->column() <= row && entry->value() != 0.)
           {
@@ -86,7 +90,7 @@ namespace GelMPM
             d.values.push_back(entry->value());
           }
     auto &m = d.mumps;
-    m.n     = K.m();
+    m.n     = n;
     m.nnz   = d.values.size();
     m.irn   = d.rows.data();
     m.jcn   = d.columns.data();

@@ -89,7 +89,8 @@ main()
     // Bisection of (0.1, 0.2]: 0.15 stable, 0.175 unstable, 0.1625 stable, 0.16875 unstable by
     // a step narrower than the tolerance: the bracket (0.1625, 0.16875], onset.
     ok = ok && close(c.attempt(), 0.05) && c.judge_signature(true) == Verdict::accept;
-    c.accept(8);
+    c.accept(3); // fast convergence, but a bisection step: the proposed step does not grow
+    ok = ok && close(c.proposed_step(), 0.1);
     ok = ok && close(c.attempt(), 0.025) && c.judge_signature(false) == Verdict::retake;
     ok = ok && close(c.attempt(), 0.0125) && c.judge_signature(true) == Verdict::accept;
     c.accept(8);

@@ -123,6 +123,10 @@ namespace GelMPM
     std::pair<double, double>
     dirichlet_errors(const dealii::Vector<double> &solution) const;
 
+    /** The largest displacement increment |du(x_p)| over all material points for @p solution. */
+    double
+    largest_displacement_increment(const dealii::Vector<double> &solution) const;
+
     /**
      * The mass matrix of the chemical-potential basis integrated on the volume points,
      * M_ij = sum_p V_p Ñ_i(x_p) Ñ_j(x_p), dense: for analyses of small discretisations (the

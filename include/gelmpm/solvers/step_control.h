@@ -138,6 +138,10 @@ namespace GelMPM
     bool
     stable() const;
 
+    /** Whether a loss of stability has been bracketed (Verdict::onset) in this run. */
+    bool
+    onset_seen() const;
+
     /** Whether a critical time is being bracketed. */
     bool
     bracketing() const;
@@ -158,7 +162,7 @@ namespace GelMPM
     double       bisection_tolerance;
     double       unstable_step;
     bool         signature_control;
-    bool         onset_seen = false;
+    bool         onset_seen_ = false;
 
     double       time_     = 0.;
     unsigned int step_     = 0;

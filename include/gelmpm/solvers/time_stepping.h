@@ -28,6 +28,8 @@ namespace GelMPM
     unsigned int                           growth_below          = 6;
     double                                 cut_factor            = 0.5;
     unsigned int                           maximum_steps         = 1000000;
+    /** Largest displacement of a material point in one step, in cells of the u grid; 0: off. */
+    double largest_increment = 0.;
     std::vector<std::pair<double, double>> caps; // (until time, largest step), sorted
     std::vector<double>                    stop_times;
 

@@ -43,6 +43,8 @@ namespace GelMPM
     double bisection_tolerance = 0.;
     /** Write the critical mode (eigenvector of the smallest Schur eigenvalue) for ParaView. */
     bool write_mode = false;
+    /** Bracket the onset with the inertia of K_uu (drained, dt-independent) instead of K's. */
+    bool drained_onset = false;
     /** After a bracketed loss of stability, retake unstable attempts shorter (StepControl). */
     bool signature_control = false;
     /** Largest step (tau_d) while the signature is not (n_u, n_mu, 0); 0: no such cap. */
@@ -77,6 +79,8 @@ namespace GelMPM
   struct StabilityReport
   {
     Inertia             inertia;
+    /** With 'Onset criterion = drained': the inertia of the displacement block K_uu. */
+    Inertia             drained_inertia;
     std::vector<double> eigenvalues;
     double              inf_sup = 0.;
     /** With 'Write mode': the eigenvector of eigenvalues[0] (displacement unknowns). */

@@ -4,6 +4,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <limits>
 #include <memory>
 
 namespace GelMPM
@@ -48,9 +49,14 @@ namespace GelMPM
     SymmetricFactorization &
     operator=(const SymmetricFactorization &) = delete;
 
-    /** Analyse and factorise @p K. Throws std::runtime_error when MUMPS reports an error. */
+    /**
+     * Analyse and factorise @p K, or only its leading @p leading x @p leading block (e.g. the
+     * displacement block K_uu of the u–mu tangent). Throws std::runtime_error when MUMPS reports
+     * an error.
+     */
     void
-    factorize(const dealii::TrilinosWrappers::SparseMatrix &K);
+    factorize(const dealii::TrilinosWrappers::SparseMatrix &K,
+              const unsigned int leading = std::numeric_limits<unsigned int>::max());
 
     /** The inertia of the matrix factorised last. */
     Inertia
