@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# Paper §4.3 (swell-induced buckling of a column): the perturbation-amplitude study on a coarse
+# grid and the onset against the MPM grid, then Fig. 9/10 with contrib/plotting/column_buckling.py
+# (doc/column_buckling.md). Prints the progress and the wall time of every run.
+#
+#   bash contrib/benchmarks/column_buckling.sh [--paper] [output directory]
+#        (default directory: output/column_buckling_study)
+#
+# Runs (overrides of prm/column_buckling.prm):
+#   amplitude_1e-4, amplitude_1e-3, amplitude_1e-2   h_u = H/8 (140 x 80 cells), 3 x 3 points,
+#                                                    perturbation 1e-4, 1e-3, 1e-2 H, to 0.6 tau_d
+#                                                    (about 1 minute each)
+#   onset_h0.1                                       h_u = 0.1H (180 x 100 cells on 18 x 10),
+#                                                    4 x 4 points, to 0.3 tau_d (about 3 minutes)
+#   with --paper: paper                              the scene as it is (h_u = 0.05H, 8 x 8 points,
+#                                                    204,800 points) to 0.5 tau_d (about 30 minutes)
+# Writes <run>/ and <run>.log per run, runs.csv (run, exit status, wall seconds) and the figures.
+# Needs the build (bash contrib/setup.sh --plotting). Environment: GELMPM_BUILD_DIR (default: build).
+set -euo pipefail
+
+top="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+build_dir="${GELMPM_BUILD_DIR:-${top}/build}"
+paper=0
+out=""
+for argument in "$@"; do
+  case "${argument}" in
+    --paper) paper=1 ;;
+    *) out="${argument}" ;;
+  esac
+done
+out="${out:-${top}/output/column_buckling_study}"
+mkdir -p "${out}"
+scene="${top}/prm/column_buckling.prm"
+echo "run,exit_status,wall_seconds" > "${out}/runs.csv"
+echo "column_buckling.sh: about $((3 + 3 + 30 * paper)) minutes on a 2-core machine; results in ${out}"
+
+run() {
+  local name="$1"
+  shift
+  local start status
+  start=$(date +%s%N)
+  set +e
+  "${build_dir}/gelmpm" "${scene}" --set "Output/Directory=${out}/${name}" "$@" > "${out}/${name}.log" 2>&1
+  status=$?
+  set -e
+  local wall
+  wall=$(awk -v a="${start}" -v b="$(date +%s%N)" 'BEGIN { printf "%.1f", (b - a) / 1e9 }')
+  echo "${name},${status},${wall}" >> "${out}/runs.csv"
+  echo "  ${name}: exit ${status}, ${wall} s; $(grep -m1 'loss of stability between' "${out}/${name}.log" || echo 'no onset bracketed')"
+}
+
+coarse=(--set "Background grid/Cells=140, 80" --set "Material points/Points per cell=3"
+        --set "Time stepping/Stop at times=0.2, 0.25, 0.3, 0.4" --set "Time stepping/End time=0.6")
+for amplitude in 1e-4 1e-3 1e-2; do
+  run "amplitude_${amplitude}" "${coarse[@]}" --set "Stability/Perturbation amplitude=${amplitude}"
+done
+run onset_h0.1 --set "Background grid/Upper corner=18, 10" --set "Background grid/Cells=180, 100" \
+  --set "Material points/Points per cell=4" --set "Time stepping/End time=0.3"
+runs=(--run "1e-3 H=${out}/amplitude_1e-3" --run "1e-4 H=${out}/amplitude_1e-4"
+      --run "1e-2 H=${out}/amplitude_1e-2")
+snapshots="${out}/amplitude_1e-3"
+if ((paper)); then
+  run paper --set "Time stepping/End time=0.5"
+  runs=(--run "paper grid=${out}/paper" "${runs[@]}")
+  snapshots="${out}/paper"
+fi
+/usr/bin/python3 "${top}/contrib/plotting/column_buckling.py" "${runs[@]}" \
+  --snapshots "${snapshots}" --output "${out}"
+echo "column_buckling.sh: figures in ${out}"
