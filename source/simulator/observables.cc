@@ -70,7 +70,7 @@ namespace GelMPM
                                      const std::vector<std::string> &pieces)
   {
     prm.enter_subsection("Observables");
-    const auto names    = dealii::Utilities::split_string_list(prm.get("Thickness pieces"), ',');
+    const auto names = dealii::Utilities::split_string_list(prm.get("Thickness pieces"), ',');
     const auto offset_names =
       dealii::Utilities::split_string_list(prm.get("Centre offset pieces"), ',');
     thickness_direction = prm.get_integer("Thickness direction");
@@ -84,7 +84,8 @@ namespace GelMPM
             "exceeds the dimension",
             "give a direction below " + std::to_string(dim));
     thickness_pieces = piece_pair(names, pieces, "Observables/Thickness pieces", "top, bottom");
-    offset_pieces = piece_pair(offset_names, pieces, "Observables/Centre offset pieces", "bottom, top");
+    offset_pieces =
+      piece_pair(offset_names, pieces, "Observables/Centre offset pieces", "bottom, top");
   }
 
 

@@ -261,9 +261,9 @@ namespace GelMPM
     // it independently of the step; from then on the tangent's signature (no mode grows faster
     // than 1/dt) controls the steps.
     const bool use_drained = stability.drained_onset && !control->onset_seen();
-    const bool stable      = use_drained ? (result.drained_inertia.n_negative == 0 &&
-                                       result.drained_inertia.n_zero == 0) :
-                                           tangent_stable;
+    const bool stable =
+      use_drained ? (result.drained_inertia.n_negative == 0 && result.drained_inertia.n_zero == 0)
+                  : tangent_stable;
     const double t_end   = control->time() + control->attempt_size();
     const auto   verdict = control->judge_signature(stable);
     switch (verdict)
@@ -272,15 +272,15 @@ namespace GelMPM
           if (!announced_bracketing)
             pcout << "    the state loses stability ("
                   << (use_drained ? "K_uu indefinite" : "signature not (n_u, n_mu, 0)")
-                  << ") between t = " << control->time()
-                  << " and " << t_end << "; bisecting to 'Stability/Bisection tolerance' = "
+                  << ") between t = " << control->time() << " and " << t_end
+                  << "; bisecting to 'Stability/Bisection tolerance' = "
                   << stability.bisection_tolerance << std::endl;
           announced_bracketing = true;
           return verdict;
         case StepControl::Verdict::shorten:
           pcout << "    the signature at t = " << t_end << " with dt = " << control->attempt_size()
-                << " is (" << result.inertia.n_positive << ", " << result.inertia.n_negative
-                << ", " << result.inertia.n_zero << "): a mode grows faster than 1/dt; retrying "
+                << " is (" << result.inertia.n_positive << ", " << result.inertia.n_negative << ", "
+                << result.inertia.n_zero << "): a mode grows faster than 1/dt; retrying "
                 << "with dt = " << control->proposed_step() << std::endl;
           return verdict;
         case StepControl::Verdict::step_dependent:
@@ -289,8 +289,8 @@ namespace GelMPM
                 << std::endl;
           break;
         case StepControl::Verdict::regained:
-          pcout << "    the signature is (n_u, n_mu, 0) again at t/tau_d = " << t_end
-                << ": stable" << std::endl;
+          pcout << "    the signature is (n_u, n_mu, 0) again at t/tau_d = " << t_end << ": stable"
+                << std::endl;
           break;
         case StepControl::Verdict::onset:
           report_onset(result);
@@ -345,8 +345,8 @@ namespace GelMPM
     // The eigenvector's sign and size are arbitrary: scale it to a largest control-point
     // displacement of 'Perturbation amplitude', signed so that the control point that moves
     // most along 'Perturbation direction' moves forwards.
-    double       largest = 0., along = 0.;
-    const auto  &d       = stability.perturbation_direction;
+    double      largest = 0., along = 0.;
+    const auto &d = stability.perturbation_direction;
     for (unsigned int i = 0; i + dim <= mode.size(); i += dim)
       {
         double norm2 = 0., projection = 0.;
@@ -483,11 +483,11 @@ namespace GelMPM
         NewtonReport report = solve_newton(*system,
                                            solution,
                                            step_dt * tau_d,
-                                                 newton,
-                                                 linear_solver,
-                                                 scale_u,
-                                                 scale_mu,
-                                                 timer);
+                                           newton,
+                                           linear_solver,
+                                           scale_u,
+                                           scale_mu,
+                                           timer);
         if (report.converged && time_stepping.largest_increment > 0.)
           {
             const double moved = system->largest_displacement_increment(solution);
@@ -526,7 +526,7 @@ namespace GelMPM
             continue;
           }
 
-        bool perturb = false;
+        bool            perturb = false;
         StabilityReport result;
         if (stability.enabled())
           {

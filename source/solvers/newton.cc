@@ -47,14 +47,14 @@ namespace GelMPM
   NewtonSettings::parse_parameters(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection("Newton");
-    maximum_iterations = prm.get_integer("Maximum iterations");
-    tolerance          = prm.get_double("Tolerance");
+    maximum_iterations       = prm.get_integer("Maximum iterations");
+    tolerance                = prm.get_double("Tolerance");
     const std::string search = prm.get("Line search");
-    line_search = (search == "none")     ? LineSearch::none :
-                  (search == "physical") ? LineSearch::physical :
-                                           LineSearch::merit;
-    smallest_damping   = prm.get_double("Smallest damping");
-    log_failures       = prm.get_bool("Log failures");
+    line_search              = (search == "none")       ? LineSearch::none
+                               : (search == "physical") ? LineSearch::physical
+                                                        : LineSearch::merit;
+    smallest_damping         = prm.get_double("Smallest damping");
+    log_failures             = prm.get_bool("Log failures");
     prm.leave_subsection();
     require(smallest_damping > 0. && smallest_damping <= 1.,
             "Newton/Smallest damping",

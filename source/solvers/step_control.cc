@@ -54,8 +54,8 @@ namespace GelMPM
         // Half the bracket while it is wider than the tolerance; then the step onto its unstable
         // end. Such a step is shortened on purpose: it leaves the proposed step as it is.
         const double remaining = unstable_time - time_;
-        current       = (remaining > bisection_tolerance) ? 0.5 * remaining : remaining;
-        attempt_limit = std::numeric_limits<double>::infinity();
+        current                = (remaining > bisection_tolerance) ? 0.5 * remaining : remaining;
+        attempt_limit          = std::numeric_limits<double>::infinity();
         return current;
       }
     double limit = std::min(proposed, settings_.cap(time_));
@@ -98,7 +98,8 @@ namespace GelMPM
         stable_               = true;
         return was_stable ? Verdict::accept : Verdict::regained;
       }
-    if (onset_seen_ && signature_control && current * settings_.cut_factor >= settings_.minimum_step)
+    if (onset_seen_ && signature_control &&
+        current * settings_.cut_factor >= settings_.minimum_step)
       {
         proposed = current * settings_.cut_factor;
         return Verdict::shorten;
@@ -115,9 +116,9 @@ namespace GelMPM
         unstable_time = t_unstable;
         return Verdict::retake;
       }
-    bisecting = false;
-    stable_   = false;
-    bracket_   = Bracket{time_, t_unstable};
+    bisecting   = false;
+    stable_     = false;
+    bracket_    = Bracket{time_, t_unstable};
     onset_seen_ = true;
     return Verdict::onset;
   }
@@ -143,7 +144,9 @@ namespace GelMPM
   {
     return std::any_of(settings_.stop_times.begin(),
                        settings_.stop_times.end(),
-                       [this](const double s) { return std::abs(s - time_) <= 1e-10 * s; });
+                       [this](const double s) {
+                         return std::abs(s - time_) <= 1e-10 * s;
+                       });
   }
 
 

@@ -70,30 +70,33 @@ namespace GelMPM
                       "1/dt, so the steps follow the fastest growing mode and backward Euler "
                       "resolves its growth instead of damping it (paper §4.3: 'adaptive "
                       "time-stepping based on monitoring the signature'; doc/method.md).");
-    prm.declare_entry("Step while unstable",
-                      "0",
-                      dealii::Patterns::Double(0.),
-                      "With 'Inertia': while the signature of the accepted state is not (n_dofs_u, "
-                      "n_dofs_mu, 0), no step is longer than this (tau_d). Backward Euler damps a "
-                      "mode that grows at rate sigma once sigma dt > 2, so long steps keep a run on "
-                      "an unstable branch; choose it so that sigma dt stays below about 1 "
-                      "(doc/method.md, 'Going through an instability'). 0: no such cap.");
-    prm.declare_entry("Perturbation amplitude",
-                      "0",
-                      dealii::Patterns::Double(0.),
-                      "With 'Inertia' and 'Schur eigenvalues' >= 1: when a loss of stability has "
-                      "been bracketed, the displacement of the unstable state is perturbed along "
-                      "the critical mode (the eigenvector of the smallest Schur eigenvalue), scaled "
-                      "so that its largest control-point displacement is this amplitude (in the "
-                      "scene's length unit), so that the run leaves the unstable branch at the "
-                      "critical time in a chosen direction. 0: no perturbation (the run relies on "
-                      "round-off to leave a symmetric branch, late and in a random direction).");
-    prm.declare_entry("Perturbation direction",
-                      "1, 0, 0",
-                      dealii::Patterns::List(dealii::Patterns::Double(), 2, 3),
-                      "The sign of the perturbation: the control point that the critical mode moves "
-                      "most along this direction moves forwards (e.g. '1, 0' sways a column "
-                      "towards +x). One component per dimension; a third one is ignored in 2D.");
+    prm.declare_entry(
+      "Step while unstable",
+      "0",
+      dealii::Patterns::Double(0.),
+      "With 'Inertia': while the signature of the accepted state is not (n_dofs_u, "
+      "n_dofs_mu, 0), no step is longer than this (tau_d). Backward Euler damps a "
+      "mode that grows at rate sigma once sigma dt > 2, so long steps keep a run on "
+      "an unstable branch; choose it so that sigma dt stays below about 1 "
+      "(doc/method.md, 'Going through an instability'). 0: no such cap.");
+    prm.declare_entry(
+      "Perturbation amplitude",
+      "0",
+      dealii::Patterns::Double(0.),
+      "With 'Inertia' and 'Schur eigenvalues' >= 1: when a loss of stability has "
+      "been bracketed, the displacement of the unstable state is perturbed along "
+      "the critical mode (the eigenvector of the smallest Schur eigenvalue), scaled "
+      "so that its largest control-point displacement is this amplitude (in the "
+      "scene's length unit), so that the run leaves the unstable branch at the "
+      "critical time in a chosen direction. 0: no perturbation (the run relies on "
+      "round-off to leave a symmetric branch, late and in a random direction).");
+    prm.declare_entry(
+      "Perturbation direction",
+      "1, 0, 0",
+      dealii::Patterns::List(dealii::Patterns::Double(), 2, 3),
+      "The sign of the perturbation: the control point that the critical mode moves "
+      "most along this direction moves forwards (e.g. '1, 0' sways a column "
+      "towards +x). One component per dimension; a third one is ignored in 2D.");
     prm.declare_entry("Condition number",
                       "false",
                       dealii::Patterns::Bool(),
@@ -108,15 +111,15 @@ namespace GelMPM
   StabilitySettings::parse_parameters(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection("Stability");
-    inertia             = prm.get_bool("Inertia");
-    n_eigenvalues       = prm.get_integer("Schur eigenvalues");
-    inf_sup             = prm.get_bool("Inf-sup constant");
-    condition           = prm.get_bool("Condition number");
-    bisection_tolerance = prm.get_double("Bisection tolerance");
-    write_mode          = prm.get_bool("Write mode");
-    unstable_step       = prm.get_double("Step while unstable");
-    signature_control   = prm.get_bool("Signature step control");
-    drained_onset       = prm.get("Onset criterion") == "drained";
+    inertia                = prm.get_bool("Inertia");
+    n_eigenvalues          = prm.get_integer("Schur eigenvalues");
+    inf_sup                = prm.get_bool("Inf-sup constant");
+    condition              = prm.get_bool("Condition number");
+    bisection_tolerance    = prm.get_double("Bisection tolerance");
+    write_mode             = prm.get_bool("Write mode");
+    unstable_step          = prm.get_double("Step while unstable");
+    signature_control      = prm.get_bool("Signature step control");
+    drained_onset          = prm.get("Onset criterion") == "drained";
     perturbation_amplitude = prm.get_double("Perturbation amplitude");
     perturbation_direction.clear();
     for (const auto &item : dealii::Utilities::split_string_list(prm.get("Perturbation direction")))

@@ -1,9 +1,8 @@
 #include <gelmpm/stability/symmetric_factorization.h>
 
-#include <algorithm>
-
 #include <deal.II/base/mpi.h>
 
+#include <algorithm>
 #include <dmumps_c.h>
 #include <stdexcept>
 #include <string>

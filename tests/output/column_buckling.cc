@@ -46,10 +46,10 @@ main(int argc, char **argv)
   std::cout << "onset between 0.2 and 0.3 tau_d: " << (t_stable > 0.2 && t_unstable < 0.3)
             << std::endl;
 
-  const auto  &s    = run.statistics;
-  const auto  &t    = s.at("t_over_tau_d");
-  const auto  &neg  = s.at("n_neg_uu");
-  bool         definite_before = true, indefinite_at = false;
+  const auto &s               = run.statistics;
+  const auto &t               = s.at("t_over_tau_d");
+  const auto &neg             = s.at("n_neg_uu");
+  bool        definite_before = true, indefinite_at = false;
   for (unsigned int i = 1; i < t.size(); ++i)
     {
       if (t[i] <= t_stable * (1. + 1e-12))
@@ -60,8 +60,8 @@ main(int argc, char **argv)
   std::cout << "K_uu positive definite before the onset, indefinite at its end: "
             << (definite_before && indefinite_at) << std::endl;
 
-  const auto        &offset = s.at("centre_offset_x");
-  const unsigned int n      = offset.size();
+  const auto        &offset  = s.at("centre_offset_x");
+  const unsigned int n       = offset.size();
   bool               growing = n > 11;
   for (unsigned int i = n - 10; growing && i < n; ++i)
     growing = offset[i] > offset[i - 1];

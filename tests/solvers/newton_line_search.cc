@@ -77,8 +77,11 @@ namespace
     LogarithmSystem        system;
     dealii::Vector<double> solution(1);
     solution(0) = 5.;
-    dealii::TimerOutput timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
-    const auto report = GelMPM::solve_newton(system, solution, 1., settings, linear_solver, 1., 1., timer);
+    dealii::TimerOutput timer(std::cout,
+                              dealii::TimerOutput::never,
+                              dealii::TimerOutput::wall_times);
+    const auto          report =
+      GelMPM::solve_newton(system, solution, 1., settings, linear_solver, 1., 1., timer);
     linear_solver.new_pattern();
     x = solution(0);
     return report;
@@ -91,8 +94,8 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::cout << std::boolalpha;
   using LineSearch = GelMPM::NewtonSettings::LineSearch;
-  double     x    = 0.;
-  const auto full = solve(LineSearch::none, x);
+  double     x     = 0.;
+  const auto full  = solve(LineSearch::none, x);
   std::cout << "full Newton fails: " << !full.converged << std::endl;
   std::cout << "at iteration 1 on the non-physical state: "
             << (full.failure.find("Newton iteration 1") != std::string::npos &&
@@ -103,7 +106,7 @@ main(int argc, char **argv)
   std::cout << "to the root x = 2 within 1e-12: " << (std::abs(x - 2.) < 1e-12) << std::endl;
   std::cout << "the first update was damped by 1/2: "
             << (!damped.history.empty() && damped.history[0][2] == 0.5) << std::endl;
-  const auto merit = solve(LineSearch::merit, x);
+  const auto merit      = solve(LineSearch::merit, x);
   bool       decreasing = true;
   for (unsigned int k = 1; k < merit.history.size(); ++k)
     decreasing = decreasing && merit.history[k][0] < merit.history[k - 1][0];

@@ -48,7 +48,7 @@ main()
     bool        ok = close(c.attempt(), 0.1);
     c.accept(3); // fast: grows to 0.125
     ok = ok && close(c.attempt(), 0.125) && close(c.time(), 0.1);
-    c.accept(8); // slow: stays
+    c.accept(8);                          // slow: stays
     ok = ok && close(c.attempt(), 0.075); // lands on the stop time 0.3
     c.accept(8);
     ok = ok && c.at_stop_time() && close(c.proposed_step(), 0.125);

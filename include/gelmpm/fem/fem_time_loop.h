@@ -102,7 +102,7 @@ namespace GelMPM
                     const LinearSolver                         &linear_solver,
                     const std::function<void(double, double)>  &prescribe,
                     const std::function<void(const FemStep &)> &on_step,
-                    const FemSignatureControl &signature = FemSignatureControl());
+                    const FemSignatureControl                  &signature = FemSignatureControl());
 } // namespace GelMPM
 
 #endif

@@ -80,12 +80,12 @@ namespace GelMPM
     double
     chemical_potential_oscillation(const dealii::Particles::ParticleHandler<dim> &particles) const;
 
-    std::array<int, 2> thickness_pieces = {{-1, -1}};
-    std::array<int, 2> offset_pieces    = {{-1, -1}};
-    unsigned int thickness_direction = 1;
-    bool         volume_ratio_range  = false;
-    bool         mu_oscillation      = false;
-    bool         boundary_error      = false;
+    std::array<int, 2> thickness_pieces    = {{-1, -1}};
+    std::array<int, 2> offset_pieces       = {{-1, -1}};
+    unsigned int       thickness_direction = 1;
+    bool               volume_ratio_range  = false;
+    bool               mu_oscillation      = false;
+    bool               boundary_error      = false;
   };
 } // namespace GelMPM
 

@@ -154,12 +154,12 @@ namespace GelMPM
     std::vector<unsigned int>               grid_volume_points;    // per cell, start of the step
     StatisticsFile                          statistics;
     StatisticsFile                          stability_file; // stability.csv, with the inertia
-    std::unique_ptr<StepControl> control;
-    bool                         announced_bracketing = false;
-    Inertia                      last_stable_inertia;
-    double              last_eigenvalue = 0.;
-    std::vector<double> mu_coefficients; // per mu control point
-    std::vector<bool>   mu_known;        // coefficient holds a current value
+    std::unique_ptr<StepControl>            control;
+    bool                                    announced_bracketing = false;
+    Inertia                                 last_stable_inertia;
+    double                                  last_eigenvalue = 0.;
+    std::vector<double>                     mu_coefficients; // per mu control point
+    std::vector<bool>                       mu_known;        // coefficient holds a current value
 
     unsigned int n_volume_points  = 0;
     unsigned int n_surface_points = 0;

@@ -10,9 +10,9 @@
 #include <deal.II/lac/vector.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <exception>
-#include <array>
 #include <string>
 #include <vector>
 
@@ -64,7 +64,7 @@ namespace GelMPM
     unsigned int damped_iterations = 0;
     /** Per iteration: the scaled residuals (u, mu) at its start and the damping taken. */
     std::vector<std::array<double, 3>> history;
-    std::string  failure;
+    std::string                        failure;
   };
 
 
@@ -158,7 +158,7 @@ namespace GelMPM
 
         const double merit_0 = merit();
         const double r_u_0 = report.residual_u, r_mu_0 = report.residual_mu;
-        double       alpha   = 1.;
+        double       alpha = 1.;
         for (;;)
           {
             trial = solution;
@@ -168,16 +168,16 @@ namespace GelMPM
               {
                 if (!physical)
                   {
-                    report.failure = "Newton iteration " + std::to_string(k + 1) + ": " +
-                                     report.failure;
+                    report.failure =
+                      "Newton iteration " + std::to_string(k + 1) + ": " + report.failure;
                     return report;
                   }
                 break;
               }
             // Near the solution round-off decides whether the residual still decreases: there
             // any physical update is taken.
-            const bool near_solution = std::max(report.residual_u, report.residual_mu) <=
-                                       1e3 * settings.tolerance;
+            const bool near_solution =
+              std::max(report.residual_u, report.residual_mu) <= 1e3 * settings.tolerance;
             if (physical && (settings.line_search == NewtonSettings::LineSearch::physical ||
                              near_solution || merit() <= (1. - 1e-4 * alpha) * merit_0))
               break;

@@ -164,13 +164,13 @@ namespace GelMPM
     bool         signature_control;
     bool         onset_seen_ = false;
 
-    double       time_     = 0.;
-    unsigned int step_     = 0;
-    double       proposed  = 0.; // the controller's step (Newton growth and cuts)
-    double       current   = 0.; // the current attempt
+    double       time_         = 0.;
+    unsigned int step_         = 0;
+    double       proposed      = 0.; // the controller's step (Newton growth and cuts)
+    double       current       = 0.; // the current attempt
     double       attempt_limit = 0.; // what bounded it before stop times (infinite when bisecting)
-    bool         stable_   = true;
-    bool         bisecting = false;
+    bool         stable_       = true;
+    bool         bisecting     = false;
     double       unstable_time = 0.;
     Bracket      bracket_;
   };

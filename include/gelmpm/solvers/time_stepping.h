@@ -20,16 +20,16 @@ namespace GelMPM
    */
   struct TimeStepping
   {
-    double                                 characteristic_length = 1.;
-    double                                 initial_step          = 1e-3;
-    double                                 end_time              = 1.;
-    double                                 minimum_step          = 1e-12;
-    double                                 growth_factor         = 1.25;
-    unsigned int                           growth_below          = 6;
-    double                                 cut_factor            = 0.5;
-    unsigned int                           maximum_steps         = 1000000;
+    double       characteristic_length = 1.;
+    double       initial_step          = 1e-3;
+    double       end_time              = 1.;
+    double       minimum_step          = 1e-12;
+    double       growth_factor         = 1.25;
+    unsigned int growth_below          = 6;
+    double       cut_factor            = 0.5;
+    unsigned int maximum_steps         = 1000000;
     /** Largest displacement of a material point in one step, in cells of the u grid; 0: off. */
-    double largest_increment = 0.;
+    double                                 largest_increment = 0.;
     std::vector<std::pair<double, double>> caps; // (until time, largest step), sorted
     std::vector<double>                    stop_times;
 

@@ -78,7 +78,7 @@ namespace GelMPM
   /** What the stability analysis of one state found. */
   struct StabilityReport
   {
-    Inertia             inertia;
+    Inertia inertia;
     /** With 'Onset criterion = drained': the inertia of the displacement block K_uu. */
     Inertia             drained_inertia;
     std::vector<double> eigenvalues;
