@@ -10,7 +10,7 @@ centre_distance and eig_1 ... eig_k, stability.csv if a loss of stability was br
 
 Outputs (into --output DIR):
   fig10a_centre_distance.png  the separation of the centres of the top and bottom faces
-                              (centre_distance, and centre_offset_x dashed) against t/tau_d, one
+                              (centre_distance; centre_offset_x thin, dashed) against t/tau_d, one
                               curve per run, the bracketed onset marked
   fig10b_schur_eigenvalues.png the Schur-complement eigenvalues eig_1 ... eig_k of the first run
                               against t/tau_d (symmetric log scale: they change sign)
@@ -48,8 +48,10 @@ def figure_10a(runs, output):
     for k, (label, directory) in enumerate(runs):
         s = read_csv(os.path.join(directory, "statistics.csv"))
         colour = "C%d" % k
-        ax.plot(s["t_over_tau_d"], s["centre_distance"], color=colour, label=label)
-        ax.plot(s["t_over_tau_d"], s["centre_offset_x"], color=colour, ls="--", lw=0.8)
+        # Curves that nearly coincide (the amplitude study) stay visible: wide ones first.
+        width = max(3.5 - 1.2 * k, 0.8)
+        ax.plot(s["t_over_tau_d"], s["centre_distance"], color=colour, lw=width, label=label)
+        ax.plot(s["t_over_tau_d"], s["centre_offset_x"], color="k", ls="--", lw=0.6)
         bracket = onset(directory)
         if bracket is not None:
             ax.axvline(0.5 * (bracket[0] + bracket[1]), color=colour, ls=":", lw=0.8)
@@ -101,7 +103,7 @@ def figure_9(directory, times, output):
         ax.set_ylim(0.5, 9.5)
         ax.tick_params(labelsize=7)
     fig.colorbar(scatter, ax=axes[0].tolist(), shrink=0.8, label="solvent volume fraction $\\phi$")
-    fig.savefig(os.path.join(output, "fig9_phi.png"), dpi=150)
+    fig.savefig(os.path.join(output, "fig9_phi.png"), dpi=150, bbox_inches="tight")
 
 
 def main():

@@ -4,6 +4,9 @@
 #include <deal.II/base/work_stream.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
 
 #include <algorithm>
 #include <cmath>
@@ -804,21 +807,35 @@ namespace GelMPM
   std::vector<double>
   MixedSystem<dim>::mu_from_points() const
   {
-    std::vector<double> sum(spaces_.n_mu_dofs(), 0.), weight(spaces_.n_mu_dofs(), 0.);
+    const unsigned int             n = spaces_.n_mu_dofs();
+    dealii::DynamicSparsityPattern pattern(n, n);
+    for (const Block &b : blocks)
+      {
+        const auto &dofs = spaces_.mu().cell_dofs(b.mu_cell);
+        for (const auto i : dofs)
+          for (const auto j : dofs)
+            pattern.add(i, j);
+      }
+    dealii::SparsityPattern sparsity;
+    sparsity.copy_from(pattern);
+    dealii::SparseMatrix<double> mass(sparsity);
+    dealii::Vector<double>       rhs(n), coefficients(n);
     for (const auto &r : points)
       if (r.kind == PointKind::volume)
         {
           const auto &dofs = spaces_.mu().cell_dofs(blocks[r.block].mu_cell);
-          for (unsigned int j = 0; j < dofs.size(); ++j)
+          for (unsigned int i = 0; i < dofs.size(); ++i)
             {
-              const double w = std::abs(mu_values[r.mu_offset + j]) * r.measure;
-              sum[dofs[j]] += w * r.mu_n;
-              weight[dofs[j]] += w;
+              const double Vi = r.measure * mu_values[r.mu_offset + i];
+              rhs(dofs[i]) += Vi * r.mu_n;
+              for (unsigned int j = 0; j < dofs.size(); ++j)
+                mass.add(dofs[i], dofs[j], Vi * mu_values[r.mu_offset + j]);
             }
         }
-    for (unsigned int i = 0; i < sum.size(); ++i)
-      sum[i] = (weight[i] > 0.) ? sum[i] / weight[i] : 0.;
-    return sum;
+    dealii::SparseDirectUMFPACK solver;
+    solver.initialize(mass);
+    solver.vmult(coefficients, rhs);
+    return std::vector<double>(coefficients.begin(), coefficients.end());
   }
 
 

@@ -445,17 +445,20 @@ namespace GelMPM
     solution.reinit(spaces->n_dofs());
     const auto        &mu  = spaces->mu();
     const unsigned int n_u = spaces->n_u_dofs();
-    // Control points that held no value in the last step (newly covered by material) start from
-    // the points' mu: a stale coefficient there puts a stress jump into the first residual, which
-    // short (undrained) steps cannot absorb.
+    // With 'Newton/Initial chemical potential = points' every coefficient starts from the
+    // projection of the points' mu; otherwise only those that held no value in the last step
+    // (newly covered by material), where a stale coefficient would put a stress jump into the
+    // first residual that short (undrained) steps cannot absorb.
     const std::vector<double> from_points =
       (system && step > 0) ? system->mu_from_points() : std::vector<double>();
+    const bool all_from_points = newton.mu_from_points && !from_points.empty();
     for (unsigned int i = 0; i < mu_coefficients.size(); ++i)
       {
         const unsigned int dof = mu.dof_of_control_point(i);
         if (dof != dealii::numbers::invalid_unsigned_int)
-          solution(n_u + dof) =
-            (mu_known[i] || from_points.empty()) ? mu_coefficients[i] : from_points[dof];
+          solution(n_u + dof) = (all_from_points || (!mu_known[i] && !from_points.empty()))
+                                  ? from_points[dof]
+                                  : mu_coefficients[i];
       }
   }
 

@@ -28,6 +28,16 @@ namespace GelMPM
                       "fraction-to-the-boundary rule); 'merit' in addition until the scaled "
                       "residual norm decreases (Armijo's rule); 'none': full updates, and a trial "
                       "state with J <= 1 fails the attempt (doc/method.md, 'Newton').");
+    prm.declare_entry(
+      "Initial chemical potential",
+      "points",
+      dealii::Patterns::Selection("grid|points"),
+      "The first iterate of mu in a step (material point scenes): 'grid', the "
+      "coefficients of the last step (for control points that held none, the "
+      "projection below); 'points', the L2 projection of the material points' mu "
+      "onto the step's basis. After a fast motion 'grid' shifts mu at every point by "
+      "grad mu . du and the stress with it, a false residual the first Newton "
+      "iterations must remove (doc/method.md). The converged step is the same.");
     prm.declare_entry("Log failures",
                       "false",
                       dealii::Patterns::Bool(),
@@ -55,6 +65,7 @@ namespace GelMPM
                                                         : LineSearch::merit;
     smallest_damping         = prm.get_double("Smallest damping");
     log_failures             = prm.get_bool("Log failures");
+    mu_from_points           = prm.get("Initial chemical potential") == "points";
     prm.leave_subsection();
     require(smallest_damping > 0. && smallest_damping <= 1.,
             "Newton/Smallest damping",

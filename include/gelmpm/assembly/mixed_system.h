@@ -106,10 +106,12 @@ namespace GelMPM
     update_particles(const dealii::Vector<double> &solution);
 
     /**
-     * Particle-to-grid estimate of the chemical-potential coefficients: for every mu DoF the
-     * average of the points' mu_n weighted by |Ñ_i| V (volume points only). Used as the initial
-     * guess of DoFs whose control points held no value in the previous step (newly covered by
-     * material), where a stale value would start Newton far from the solution.
+     * Particle-to-grid transfer of the chemical potential: the coefficients of the current mu
+     * basis closest to the points' mu_n in the least-squares sense over the volume points
+     * (L2 projection with the points as quadrature: M c = b, M_ij = sum_p V_p Ñ_i Ñ_j,
+     * b_i = sum_p V_p Ñ_i mu_p). The coefficients of the last step evaluated at the moved points
+     * would shift mu by grad mu . du at every point, and with it the stress by (k_BT/nu) grad mu .
+     * du, a large false residual in the first Newton iteration of a step after a fast motion.
      */
     std::vector<double>
     mu_from_points() const;

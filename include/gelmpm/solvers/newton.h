@@ -40,6 +40,8 @@ namespace GelMPM
       merit     ///< and until the scaled residual decreases (Armijo)
     };
     LineSearch line_search = LineSearch::physical;
+    /** Start mu from the projection of the points' mu (Simulator), not the last coefficients. */
+    bool mu_from_points = true;
     /** Print the residual history of every failed attempt. */
     bool log_failures = false;
     /** The smallest damping factor tried before the iteration counts as failed. */
