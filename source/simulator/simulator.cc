@@ -449,9 +449,8 @@ namespace GelMPM
     // projection of the points' mu; otherwise only those that held no value in the last step
     // (newly covered by material), where a stale coefficient would put a stress jump into the
     // first residual that short (undrained) steps cannot absorb.
-    const std::vector<double> from_points =
-      (system && step > 0) ? system->mu_from_points() : std::vector<double>();
-    const bool all_from_points = newton.mu_from_points && !from_points.empty();
+    const std::vector<double> &from_points     = mu_projection;
+    const bool                 all_from_points = newton.mu_from_points && !from_points.empty();
     for (unsigned int i = 0; i < mu_coefficients.size(); ++i)
       {
         const unsigned int dof = mu.dof_of_control_point(i);
@@ -475,6 +474,8 @@ namespace GelMPM
       // one goes first, while the matrix it refers to still exists.
       linear_solver.new_pattern();
       system->setup(particles);
+      // The points and the basis are fixed for the attempts of the step: project mu once.
+      mu_projection = system->mu_from_points();
     }
     dealii::Vector<double> solution;
     for (unsigned int attempt = 1;; ++attempt)

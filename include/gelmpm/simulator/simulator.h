@@ -160,6 +160,7 @@ namespace GelMPM
     double                                  last_eigenvalue = 0.;
     std::vector<double>                     mu_coefficients; // per mu control point
     std::vector<bool>                       mu_known;        // coefficient holds a current value
+    std::vector<double>                     mu_projection;   // points' mu on the step's basis
 
     unsigned int n_volume_points  = 0;
     unsigned int n_surface_points = 0;
