@@ -820,18 +820,37 @@ namespace GelMPM
     sparsity.copy_from(pattern);
     dealii::SparseMatrix<double> mass(sparsity);
     dealii::Vector<double>       rhs(n), coefficients(n);
-    for (const auto &r : points)
-      if (r.kind == PointKind::volume)
-        {
-          const auto &dofs = spaces_.mu().cell_dofs(blocks[r.block].mu_cell);
-          for (unsigned int i = 0; i < dofs.size(); ++i)
-            {
-              const double Vi = r.measure * mu_values[r.mu_offset + i];
-              rhs(dofs[i]) += Vi * r.mu_n;
-              for (unsigned int j = 0; j < dofs.size(); ++j)
-                mass.add(dofs[i], dofs[j], Vi * mu_values[r.mu_offset + j]);
-            }
-        }
+    // The points of a block share the mu functions of its cell: sum their contributions locally
+    // and add each block once.
+    dealii::FullMatrix<double> local_mass;
+    dealii::Vector<double>     local_rhs;
+    for (const Block &b : blocks)
+      {
+        const auto        &dofs = spaces_.mu().cell_dofs(b.mu_cell);
+        const unsigned int m    = dofs.size();
+        local_mass.reinit(m, m);
+        local_rhs.reinit(m);
+        for (unsigned int p = b.first; p < b.end; ++p)
+          {
+            const PointRecord &r = points[p];
+            if (r.kind != PointKind::volume)
+              continue;
+            const double *values = &mu_values[r.mu_offset];
+            for (unsigned int i = 0; i < m; ++i)
+              {
+                const double Vi = r.measure * values[i];
+                local_rhs(i) += Vi * r.mu_n;
+                for (unsigned int j = 0; j < m; ++j)
+                  local_mass(i, j) += Vi * values[j];
+              }
+          }
+        for (unsigned int i = 0; i < m; ++i)
+          {
+            rhs(dofs[i]) += local_rhs(i);
+            for (unsigned int j = 0; j < m; ++j)
+              mass.add(dofs[i], dofs[j], local_mass(i, j));
+          }
+      }
     dealii::SparseDirectUMFPACK solver;
     solver.initialize(mass);
     solver.vmult(coefficients, rhs);

@@ -474,8 +474,13 @@ namespace GelMPM
       // one goes first, while the matrix it refers to still exists.
       linear_solver.new_pattern();
       system->setup(particles);
-      // The points and the basis are fixed for the attempts of the step: project mu once.
-      mu_projection = system->mu_from_points();
+      // The points and the basis are fixed for the attempts of the step: project mu once, and
+      // only if some coefficient will start from it.
+      bool needed = newton.mu_from_points;
+      for (unsigned int i = 0; i < mu_known.size() && !needed; ++i)
+        needed = !mu_known[i] &&
+                 spaces->mu().dof_of_control_point(i) != dealii::numbers::invalid_unsigned_int;
+      mu_projection = needed ? system->mu_from_points() : std::vector<double>();
     }
     dealii::Vector<double> solution;
     for (unsigned int attempt = 1;; ++attempt)
