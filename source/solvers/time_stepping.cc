@@ -50,7 +50,8 @@ namespace GelMPM
                       "cells of the displacement grid, is retaken with the step times 'Cut factor' "
                       "(the material point method integrates on the points, so they should cross "
                       "at most about one cell per step; near an instability it also keeps Newton "
-                      "on the branch it started from). 0: no limit.");
+                      "on the branch it started from). Material point scenes only; the body-fitted "
+                      "peer ignores it. 0: no limit.");
     prm.declare_entry("Step caps",
                       "",
                       Patterns::Anything(),
