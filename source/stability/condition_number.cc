@@ -1,4 +1,5 @@
 #include <gelmpm/stability/condition_number.h>
+#include <gelmpm/stability/matrix_entries.h>
 
 #include <deal.II/lac/lapack_full_matrix.h>
 
@@ -17,9 +18,11 @@ namespace GelMPM
                                " unknowns are too many (at most 10000): use a coarser grid or "
                                "set it to false");
     dealii::LAPACKFullMatrix<double> dense(K.m(), K.n());
-    for (unsigned int row = 0; row < K.m(); ++row)
-      for (auto entry = K.begin(row); entry != K.end(row); ++entry)
-        dense(row, entry->column()) = entry->value();
+    for_each_entry(K,
+                   K.m(),
+                   [&dense](const unsigned int row, const unsigned int column, const double value) {
+                     dense(row, column) = value;
+                   });
     const double norm = dense.l1_norm();
     try
       {

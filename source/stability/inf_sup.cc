@@ -1,4 +1,5 @@
 #include <gelmpm/stability/inf_sup.h>
+#include <gelmpm/stability/matrix_entries.h>
 
 #include <deal.II/lac/lapack_full_matrix.h>
 
@@ -21,15 +22,17 @@ namespace GelMPM
       const unsigned int n_mu = K.m() - n_u;
       A.reinit(n_u, n_u);
       B.reinit(n_mu, n_u);
-      for (unsigned int row = 0; row < K.m(); ++row)
-        for (auto entry = K.begin(row); entry != K.end(row); ++entry)
-          if (entry->column() < n_u)
-            {
-              if (row < n_u)
-                A(row, entry->column()) = entry->value();
-              else
-                B(row - n_u, entry->column()) = entry->value();
-            }
+      for_each_entry(K,
+                     K.m(),
+                     [&](const unsigned int row, const unsigned int column, const double value) {
+                       if (column < n_u)
+                         {
+                           if (row < n_u)
+                             A(row, column) = value;
+                           else
+                             B(row - n_u, column) = value;
+                         }
+                     });
     }
   } // namespace
 

@@ -1,3 +1,4 @@
+#include <gelmpm/stability/matrix_entries.h>
 #include <gelmpm/stability/symmetric_factorization.h>
 
 #include <deal.II/base/mpi.h>
@@ -80,14 +81,16 @@ namespace GelMPM
     d.rows.clear();
     d.columns.clear();
     d.values.clear();
-    for (unsigned int row = 0; row < n; ++row)
-      for (auto entry = K.begin(row); entry != K.end(row); ++entry)
-        if (entry->column() <= row && entry->value() != 0.)
-          {
-            d.rows.push_back(row + 1);
-            d.columns.push_back(entry->column() + 1);
-            d.values.push_back(entry->value());
-          }
+    for_each_entry(K,
+                   n,
+                   [&d](const unsigned int row, const unsigned int column, const double value) {
+                     if (column <= row && value != 0.)
+                       {
+                         d.rows.push_back(row + 1);
+                         d.columns.push_back(column + 1);
+                         d.values.push_back(value);
+                       }
+                   });
     auto &m = d.mumps;
     m.n     = n;
     m.nnz   = d.values.size();
