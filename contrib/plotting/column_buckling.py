@@ -16,7 +16,9 @@ Outputs (into --output DIR):
                               against t/tau_d (symmetric log scale: they change sign)
   fig9_phi.png                with --snapshots DIR: the material points of DIR's particles.pvd at
                               the output times nearest to --times, coloured by the solvent volume
-                              fraction phi, at their current positions
+                              fraction phi, at their current positions, in panels of three
+The time axes are logarithmic when the runs span more than two decades (the full run to
+2154.4 tau_d), linear otherwise.
 """
 import argparse
 import os
@@ -43,8 +45,17 @@ def onset(directory):
     return table["t_stable"][0], table["t_unstable"][0]
 
 
+def time_axis(ax, times):
+    """Logarithmic from the first step on when the times span more than two decades."""
+    positive = [t for t in times if t > 0.]
+    if positive and max(positive) / min(positive) > 100.:
+        ax.set_xscale("log")
+        ax.set_xlim(min(positive), max(positive) * 1.2)
+
+
 def figure_10a(runs, output):
     fig, ax = plt.subplots(figsize=(6.4, 4.2))
+    all_times = []
     for k, (label, directory) in enumerate(runs):
         s = read_csv(os.path.join(directory, "statistics.csv"))
         colour = "C%d" % k
@@ -52,11 +63,13 @@ def figure_10a(runs, output):
         width = max(3.5 - 1.2 * k, 0.8)
         ax.plot(s["t_over_tau_d"], s["centre_distance"], color=colour, lw=width, label=label)
         ax.plot(s["t_over_tau_d"], s["centre_offset_x"], color="k", ls="--", lw=0.6)
+        all_times.extend(s["t_over_tau_d"])
         bracket = onset(directory)
         if bracket is not None:
             ax.axvline(0.5 * (bracket[0] + bracket[1]), color=colour, ls=":", lw=0.8)
     ax.axvline(0.28, color="k", ls="-.", lw=0.8, label="paper: onset 0.28 $\\tau_d$")
     ax.set_xlabel("$t/\\tau_d$")
+    time_axis(ax, all_times)
     ax.set_ylabel("centre distance / H  (dashed: offset in x)")
     ax.set_title("Fig. 10a: separation of the centres of top and bottom")
     ax.legend(fontsize=8)
@@ -75,6 +88,7 @@ def figure_10b(label, directory, output):
     bracket = onset(directory)
     if bracket is not None:
         ax.axvline(0.5 * (bracket[0] + bracket[1]), color="k", ls=":", lw=0.8, label="onset")
+    time_axis(ax, s["t_over_tau_d"])
     ax.set_xlabel("$t/\\tau_d$")
     ax.set_ylabel("Schur-complement eigenvalues")
     ax.set_title("Fig. 10b: smallest eigenvalues of S (%s)" % label)
@@ -90,19 +104,30 @@ def figure_9(directory, times, output):
         nearest = min(series, key=lambda item: abs(item[0] - t))
         if nearest not in chosen:
             chosen.append(nearest)
-    fig, axes = plt.subplots(1, len(chosen), figsize=(2.2 * len(chosen), 5.2), squeeze=False)
+    snapshots = [(t, read_vtu(path)) for t, path in chosen]
+    x_all = np.concatenate([points[:, 0] for _, (points, _) in snapshots])
+    y_all = np.concatenate([points[:, 1] for _, (points, _) in snapshots])
+    x_range = (x_all.min() - 0.3, x_all.max() + 0.3)
+    y_range = (y_all.min() - 0.3, y_all.max() + 0.3)
+    columns = min(3, len(snapshots))
+    rows = (len(snapshots) + columns - 1) // columns
+    width = 2.2 * max((x_range[1] - x_range[0]) / (y_range[1] - y_range[0]), 0.4)
+    fig, axes = plt.subplots(rows, columns, figsize=(width * columns + 1.0, 2.4 * rows + 0.4),
+                             squeeze=False)
     scatter = None
-    for ax, (t, path) in zip(axes[0], chosen):
-        points, fields = read_vtu(path)
+    for ax, (t, (points, fields)) in zip(axes.flat, snapshots):
         volume = fields["kind"] == 0
         scatter = ax.scatter(points[volume, 0], points[volume, 1], c=fields["phi"][volume],
-                             s=0.2, cmap="viridis", vmin=0.5, vmax=0.95, rasterized=True)
+                             s=0.05, cmap="viridis", vmin=0.5, vmax=0.95, rasterized=True)
         ax.set_aspect("equal")
-        ax.set_title("t = %.3g $\\tau_d$" % t, fontsize=9)
-        ax.set_xlim(0., 6.)
-        ax.set_ylim(0.5, 9.5)
+        ax.set_title("t = %.4g $\\tau_d$" % t, fontsize=9)
+        ax.set_xlim(*x_range)
+        ax.set_ylim(*y_range)
         ax.tick_params(labelsize=7)
-    fig.colorbar(scatter, ax=axes[0].tolist(), shrink=0.8, label="solvent volume fraction $\\phi$")
+    for ax in list(axes.flat)[len(snapshots):]:
+        ax.axis("off")
+    fig.colorbar(scatter, ax=axes.ravel().tolist(), shrink=0.8,
+                 label="solvent volume fraction $\\phi$")
     fig.savefig(os.path.join(output, "fig9_phi.png"), dpi=150, bbox_inches="tight")
 
 

@@ -156,7 +156,10 @@ namespace GelMPM
         r.measure = props[Layout::measure_n];
         r.x       = particle->get_location();
         for (unsigned int d = 0; d < dim; ++d)
-          r.u_n[d] = r.x[d] - props[Layout::position_0 + d];
+          {
+            r.u_n[d]     = r.x[d] - props[Layout::position_0 + d];
+            r.du_last[d] = props[Layout::increment + d];
+          }
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = 0; j < dim; ++j)
             r.F_p[i][j] = props[Layout::F + i * dim + j];
@@ -765,6 +768,8 @@ namespace GelMPM
           for (unsigned int j = 0; j < dim; ++j)
             props[Layout::F + i * dim + j] = F_p[i][j];
         props[Layout::mu] = mu;
+        for (unsigned int d = 0; d < dim; ++d)
+          props[Layout::increment + d] = du[d];
         if (r.kind == PointKind::volume)
           props[Layout::measure_n] = J_n * props[Layout::measure_0];
         else
@@ -805,56 +810,110 @@ namespace GelMPM
 
   template <int dim>
   std::vector<double>
-  MixedSystem<dim>::mu_from_points() const
+  MixedSystem<dim>::project_point_values(
+    const bool                                                      displacement,
+    const unsigned int                                              n_components,
+    const std::function<double(const PointRecord &, unsigned int)> &value) const
   {
-    const unsigned int             n = spaces_.n_mu_dofs();
+    const auto &space   = displacement ? spaces_.u() : spaces_.mu();
+    const auto  cell_of = [displacement](const Block &b) {
+      return displacement ? b.u_cell : b.mu_cell;
+    };
+    const unsigned int n = displacement ? spaces_.n_u_dofs() / dim : spaces_.n_mu_dofs();
     dealii::DynamicSparsityPattern pattern(n, n);
     for (const Block &b : blocks)
       {
-        const auto &dofs = spaces_.mu().cell_dofs(b.mu_cell);
+        const auto &dofs = space.cell_dofs(cell_of(b));
         for (const auto i : dofs)
           for (const auto j : dofs)
             pattern.add(i, j);
       }
     dealii::SparsityPattern sparsity;
     sparsity.copy_from(pattern);
-    dealii::SparseMatrix<double> mass(sparsity);
-    dealii::Vector<double>       rhs(n), coefficients(n);
-    // The points of a block share the mu functions of its cell: sum their contributions locally
+    dealii::SparseMatrix<double>        mass(sparsity);
+    std::vector<dealii::Vector<double>> rhs(n_components, dealii::Vector<double>(n));
+    // The points of a block share the functions of its cell: sum their contributions locally
     // and add each block once.
     dealii::FullMatrix<double> local_mass;
-    dealii::Vector<double>     local_rhs;
+    dealii::FullMatrix<double> local_rhs;
     for (const Block &b : blocks)
       {
-        const auto        &dofs = spaces_.mu().cell_dofs(b.mu_cell);
+        const auto        &dofs = space.cell_dofs(cell_of(b));
         const unsigned int m    = dofs.size();
         local_mass.reinit(m, m);
-        local_rhs.reinit(m);
+        local_rhs.reinit(n_components, m);
         for (unsigned int p = b.first; p < b.end; ++p)
           {
             const PointRecord &r = points[p];
             if (r.kind != PointKind::volume)
               continue;
-            const double *values = &mu_values[r.mu_offset];
+            const double *values = displacement ? &u_values[r.u_offset] : &mu_values[r.mu_offset];
             for (unsigned int i = 0; i < m; ++i)
               {
                 const double Vi = r.measure * values[i];
-                local_rhs(i) += Vi * r.mu_n;
+                for (unsigned int c = 0; c < n_components; ++c)
+                  local_rhs(c, i) += Vi * value(r, c);
                 for (unsigned int j = 0; j < m; ++j)
                   local_mass(i, j) += Vi * values[j];
               }
           }
         for (unsigned int i = 0; i < m; ++i)
           {
-            rhs(dofs[i]) += local_rhs(i);
+            for (unsigned int c = 0; c < n_components; ++c)
+              rhs[c](dofs[i]) += local_rhs(c, i);
             for (unsigned int j = 0; j < m; ++j)
               mass.add(dofs[i], dofs[j], local_mass(i, j));
           }
       }
     dealii::SparseDirectUMFPACK solver;
     solver.initialize(mass);
-    solver.vmult(coefficients, rhs);
-    return std::vector<double>(coefficients.begin(), coefficients.end());
+    std::vector<double>    interleaved(n * n_components);
+    dealii::Vector<double> coefficients(n);
+    for (unsigned int c = 0; c < n_components; ++c)
+      {
+        solver.vmult(coefficients, rhs[c]);
+        for (unsigned int i = 0; i < n; ++i)
+          interleaved[n_components * i + c] = coefficients(i);
+      }
+    return interleaved;
+  }
+
+
+  template <int dim>
+  std::vector<double>
+  MixedSystem<dim>::mu_from_points() const
+  {
+    return project_point_values(false, 1, [](const PointRecord &r, unsigned int) {
+      return r.mu_n;
+    });
+  }
+
+
+  template <int dim>
+  std::vector<double>
+  MixedSystem<dim>::displacement_from_points(const double ratio) const
+  {
+    return project_point_values(true, dim, [ratio](const PointRecord &r, const unsigned int c) {
+      return ratio * r.du_last[c];
+    });
+  }
+
+
+  template <int dim>
+  double
+  MixedSystem<dim>::largest_increment_deviation(const dealii::Vector<double> &solution,
+                                                const double                  ratio) const
+  {
+    double largest = 0.;
+    for (const auto &r : points)
+      {
+        Tensor<1, dim> du;
+        Tensor<2, dim> delta_F;
+        double         mu;
+        fields_at_point(r, solution, du, delta_F, mu);
+        largest = std::max(largest, (du - ratio * r.du_last).norm());
+      }
+    return largest;
   }
 
 

@@ -440,9 +440,12 @@ namespace GelMPM
 
   template <int dim>
   void
-  Simulator<dim>::initial_guess(dealii::Vector<double> &solution) const
+  Simulator<dim>::initial_guess(dealii::Vector<double> &solution, const double dt) const
   {
     solution.reinit(spaces->n_dofs());
+    if (!displacement_projection.empty() && last_dt > 0.)
+      for (unsigned int i = 0; i < displacement_projection.size(); ++i)
+        solution(i) = dt / last_dt * displacement_projection[i];
     const auto        &mu  = spaces->mu();
     const unsigned int n_u = spaces->n_u_dofs();
     // With 'Newton/Initial chemical potential = points' every coefficient starts from the
@@ -464,6 +467,34 @@ namespace GelMPM
 
   template <int dim>
   bool
+  Simulator<dim>::error_acceptable(const dealii::Vector<double> &solution,
+                                   const double                  dt,
+                                   std::string                  &failure)
+  {
+    // The first step has no predictor: its estimate would be the whole motion.
+    if (!(time_stepping.displacement_tolerance > 0.) || !(last_dt > 0.))
+      return true;
+    const double difference = system->largest_increment_deviation(solution, dt / last_dt);
+    if (control->judge_error(difference))
+      {
+        if (control->error_uncontrolled())
+          pcout << "    the motion differs from the last step's by " << difference
+                << " whatever the step: a jump in the last step (a perturbation), not an error "
+                   "of this one; accepted"
+                << std::endl;
+        return true;
+      }
+    std::ostringstream why;
+    why << "a material point's motion differs from the last step's by " << difference
+        << ", more than 'Time stepping/Displacement tolerance' = "
+        << time_stepping.displacement_tolerance;
+    failure = why.str();
+    return false;
+  }
+
+
+  template <int dim>
+  bool
   Simulator<dim>::advance()
   {
     {
@@ -480,7 +511,10 @@ namespace GelMPM
       for (unsigned int i = 0; i < mu_known.size() && !needed; ++i)
         needed = !mu_known[i] &&
                  spaces->mu().dof_of_control_point(i) != dealii::numbers::invalid_unsigned_int;
-      mu_projection = needed ? system->mu_from_points() : std::vector<double>();
+      mu_projection           = needed ? system->mu_from_points() : std::vector<double>();
+      displacement_projection = (newton.extrapolate_displacement && last_dt > 0.)
+                                  ? system->displacement_from_points(1.)
+                                  : std::vector<double>();
     }
     dealii::Vector<double> solution;
     for (unsigned int attempt = 1;; ++attempt)
@@ -488,7 +522,7 @@ namespace GelMPM
         const double t_begin = control->time();
         const double step_dt = control->attempt();
         system->set_boundary_values(t_begin + step_dt);
-        initial_guess(solution);
+        initial_guess(solution, step_dt);
         NewtonReport report = solve_newton(*system,
                                            solution,
                                            step_dt * tau_d,
@@ -509,6 +543,14 @@ namespace GelMPM
                     << time_stepping.largest_increment;
                 report.failure = why.str();
               }
+          }
+        if (report.converged && !error_acceptable(solution, step_dt, report.failure))
+          {
+            pcout << "    step " << control->step() + 1 << " at t = " << t_begin
+                  << " with dt = " << step_dt << " retaken (" << report.failure
+                  << "); retrying with dt = " << control->proposed_step() << std::endl;
+            announced_bracketing = false;
+            continue;
           }
         if (!report.converged)
           {
@@ -574,8 +616,10 @@ namespace GelMPM
             grid_output->record(spaces->u(), spaces->mu(), grid_volume_points, solution);
         }
         control->accept(report.iterations);
-        time = control->time();
-        step = control->step();
+        // The kick is no motion to continue: the next step starts without a predictor.
+        last_dt = perturb ? 0. : step_dt;
+        time    = control->time();
+        step    = control->step();
         statistics.set("dt", step_dt);
         record_statistics(report, attempt, &solution);
 

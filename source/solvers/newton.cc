@@ -38,6 +38,15 @@ namespace GelMPM
       "onto the step's basis. After a fast motion 'grid' shifts mu at every point by "
       "grad mu . du and the stress with it, a false residual the first Newton "
       "iterations must remove (doc/method.md). The converged step is the same.");
+    prm.declare_entry(
+      "Initial displacement",
+      "zero",
+      dealii::Patterns::Selection("zero|extrapolated"),
+      "The first iterate of the displacement increment in a step (material point scenes): "
+      "'zero'; 'extrapolated', the points' increments of the last accepted step scaled by "
+      "dt / dt_last and projected onto the step's basis (L2 over the volume points), "
+      "which continues a steady motion: fewer iterations, and near an instability the "
+      "iterates start on the branch the gel is following. The converged step is the same.");
     prm.declare_entry("Log failures",
                       "false",
                       dealii::Patterns::Bool(),
@@ -66,6 +75,7 @@ namespace GelMPM
     smallest_damping         = prm.get_double("Smallest damping");
     log_failures             = prm.get_bool("Log failures");
     mu_from_points           = prm.get("Initial chemical potential") == "points";
+    extrapolate_displacement = prm.get("Initial displacement") == "extrapolated";
     prm.leave_subsection();
     require(smallest_damping > 0. && smallest_damping <= 1.,
             "Newton/Smallest damping",

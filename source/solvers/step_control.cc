@@ -77,9 +77,52 @@ namespace GelMPM
   bool
   StepControl::cut_step()
   {
-    bisecting = false;
-    proposed  = current * settings_.cut_factor;
+    bisecting    = false;
+    retaken_step = 0.;
+    proposed     = current * settings_.cut_factor;
     return proposed >= settings_.minimum_step;
+  }
+
+
+  bool
+  StepControl::judge_error(const double difference)
+  {
+    error_limit            = 0.;
+    uncontrolled           = false;
+    const double tolerance = settings_.displacement_tolerance;
+    if (!(tolerance > 0.) || !(difference > 0.))
+      return true;
+    // Backward Euler's local error goes as dt^2: the step that would meet the tolerance, with a
+    // safety factor.
+    const double factor = 0.9 * std::sqrt(tolerance / difference);
+    if (difference <= tolerance)
+      {
+        error_limit  = current * factor;
+        retaken_step = 0.;
+        return true;
+      }
+    if (retaken_step > current &&
+        difference > retaken_difference * std::sqrt(current / retaken_step))
+      {
+        uncontrolled = true;
+        retaken_step = 0.;
+        return true;
+      }
+    const double shorter = current * std::clamp(factor, 0.2, 0.9);
+    if (shorter < settings_.minimum_step)
+      return true;
+    retaken_step       = current;
+    retaken_difference = difference;
+    bisecting          = false;
+    proposed           = shorter;
+    return false;
+  }
+
+
+  bool
+  StepControl::error_uncontrolled() const
+  {
+    return uncontrolled;
   }
 
 
@@ -120,6 +163,10 @@ namespace GelMPM
     stable_     = false;
     bracket_    = Bracket{time_, t_unstable};
     onset_seen_ = true;
+    // Going through: the mode grows from here on, so the steps start again from the bracket's
+    // width rather than from the step that was being bisected.
+    if (signature_control)
+      proposed = current;
     return Verdict::onset;
   }
 
@@ -130,12 +177,19 @@ namespace GelMPM
     // A step shortened by a stop time or by bisection leaves the proposed step as it was; a
     // bisection step does not grow it either (its size was forced, not chosen by Newton).
     const bool bisection_step = std::isinf(attempt_limit);
-    if (current >= attempt_limit * (1. - 1e-12))
+    const bool full_step      = current >= attempt_limit * (1. - 1e-12);
+    if (full_step)
       proposed = current;
     time_ += current;
     ++step_;
     if (newton_iterations < settings_.growth_below && !bisection_step)
       proposed *= settings_.growth_factor;
+    // A step shortened by a stop time measures its error on a short interval, where the points'
+    // integration noise weighs more: it does not shorten the next step either.
+    if (error_limit > 0. && full_step)
+      proposed = std::min(proposed, error_limit);
+    error_limit  = 0.;
+    retaken_step = 0.;
   }
 
 

@@ -52,6 +52,17 @@ namespace GelMPM
                       "at most about one cell per step; near an instability it also keeps Newton "
                       "on the branch it started from). Material point scenes only; the body-fitted "
                       "peer ignores it. 0: no limit.");
+    prm.declare_entry(
+      "Displacement tolerance",
+      "0",
+      Patterns::Double(0.),
+      "Error control of the step: the largest distance, in the scene's length unit, between a material point's displacement in the step and its displacement in the last "
+      "accepted step scaled by dt / dt_last (a predictor-corrector difference, about twice "
+      "backward Euler's local error). A step above it is retaken shorter; the next step is "
+      "the largest the estimate allows, dt * 0.9 sqrt(tolerance / difference), never more "
+      "than the Newton rule's growth. A steady motion lets the steps grow; an accelerating "
+      "one (the sway after a buckling onset) or a jump to another branch shortens them. "
+      "Material point scenes only; the body-fitted peer ignores it. 0: off.");
     prm.declare_entry("Step caps",
                       "",
                       Patterns::Anything(),
@@ -81,6 +92,7 @@ namespace GelMPM
     cut_factor                  = prm.get_double("Cut factor");
     maximum_steps               = prm.get_integer("Maximum steps");
     largest_increment           = prm.get_double("Largest increment");
+    displacement_tolerance      = prm.get_double("Displacement tolerance");
     const std::string caps_text = prm.get("Step caps");
     const std::string stops     = prm.get("Stop at times");
     prm.leave_subsection();

@@ -1,9 +1,9 @@
 // Going through the loss of stability of the §4.3 column (doc/method.md, "Going through an
 // instability"): prm/column_buckling.prm on a coarse grid (h_u = H/8, 3 x 3 points per cell) to
 // t = 0.32 tau_d with the scene's stability settings: the onset bracketed by the drained criterion
-// (K_uu indefinite) to 1e-3 tau_d, the perturbation of 1e-3 H along the critical mode towards +x,
-// signature step control and at most half a cell of motion per step. Asserted from stability.csv
-// and statistics.csv:
+// (K_uu indefinite) to 1e-3 tau_d, the perturbation of 1e-2 H along the critical mode towards +x,
+// signature step control and the error control of the steps (a predictor-corrector difference of at
+// most 0.01 H per step). Asserted from stability.csv and statistics.csv:
 // - exactly one onset is bracketed, at most 1e-3 tau_d wide, between 0.2 and 0.3 tau_d, where K_uu
 //   gains one negative eigenvalue (n_neg_uu: 0 before, >= 1 after);
 // - the column sways towards +x, the side the perturbation chose: centre_offset_x exceeds 0.1 H

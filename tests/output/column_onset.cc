@@ -52,7 +52,9 @@ main(int argc, char **argv)
                             "Stability/Onset criterion=tangent",
                             "Stability/Perturbation amplitude=0",
                             "Stability/Signature step control=false",
-                            "Time stepping/Largest increment=0"});
+                            "Time stepping/Largest increment=0",
+                            "Time stepping/Displacement tolerance=0",
+                            "Newton/Initial displacement=zero"});
   std::cout << std::boolalpha << "run completed: " << (run.status == 0) << std::endl;
 
   const auto brackets = GelMPM::read_statistics("results/stability.csv");

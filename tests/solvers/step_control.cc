@@ -5,8 +5,13 @@
 //    end time, a stop-time step leaving the proposed step unchanged;
 // 2. cuts after a failed attempt and the refusal below the minimum step;
 // 3. bisection of a loss of stability to the tolerance, the bracket, the step-dependent case;
-// 4. after an onset: the cap while unstable, and signature control (retake shorter while the
-//    signature is unstable), then regained stability.
+// 4. after an onset: the step from the bracket's width, the cap while unstable, and signature
+// control (retake shorter while the
+//    signature is unstable), then regained stability;
+// 5. error control: a difference above the tolerance retakes the step by 0.9 sqrt(tol/e)
+//    (clamped to [0.2, 0.9]), one below it bounds the next step by the same formula or by the
+//    Newton growth, whichever is smaller; a difference that does not shrink with the step is
+//    accepted as a jump; the tolerance 0 accepts everything.
 #include <gelmpm/solvers/step_control.h>
 
 #include <cmath>
@@ -100,6 +105,27 @@ main()
     std::cout << "a loss of stability is bracketed to the tolerance: " << ok << std::endl;
     std::cout << "after the bracket the proposed step is the step before it: "
               << close(c.proposed_step(), 0.1) << std::endl;
+
+    // With signature control (going through), the same sequence continues from the bracket's
+    // width instead.
+    StepControl g(s, 0.01, 0., true);
+    g.attempt();
+    g.judge_signature(true);
+    g.accept(8);
+    g.attempt();
+    g.judge_signature(false);
+    for (const bool stable : {true, false, true})
+      {
+        g.attempt();
+        g.judge_signature(stable);
+        if (stable)
+          g.accept(3);
+      }
+    g.attempt();
+    ok = g.judge_signature(false) == Verdict::onset;
+    g.accept(3);
+    std::cout << "with signature control the step after the onset is the bracket's width: "
+              << (ok && close(g.proposed_step(), 0.00625)) << std::endl;
   }
   {
     GelMPM::TimeStepping s = settings();
@@ -131,5 +157,39 @@ main()
     c.accept(3);
     ok = ok && c.stable() && close(c.attempt(), 0.00625);
     std::cout << "after an onset unstable attempts are shortened until stable: " << ok << std::endl;
+  }
+
+  {
+    GelMPM::TimeStepping s = settings();
+    s.caps.clear();
+    s.stop_times.clear();
+    s.displacement_tolerance = 0.01;
+    StepControl c(s);
+    c.attempt();                         // 0.1
+    bool ok        = !c.judge_error(1.); // 0.9 sqrt(0.01) = 0.09, clamped to 0.2
+    ok             = ok && close(c.attempt(), 0.02);
+    ok             = ok && !c.judge_error(0.03); // shrank enough: 0.9 sqrt(1 / 3)
+    ok             = ok && close(c.attempt(), 0.02 * 0.9 * std::sqrt(1. / 3.));
+    const double h = c.attempt_size();
+    ok = ok && c.judge_error(0.0081) && !c.error_uncontrolled(); // 0.9 sqrt(0.01 / 0.0081) = 1
+    c.accept(3);                                                 // Newton would grow by 1.25
+    ok = ok && close(c.time(), h) && close(c.attempt(), h);
+    ok = ok && c.judge_error(1e-6); // far below: Newton's growth limits
+    c.accept(3);
+    ok = ok && close(c.attempt(), h * 1.25);
+    std::cout << "error control: retake, clamp, and the bound on the next step: " << ok
+              << std::endl;
+
+    StepControl jump(s);
+    jump.attempt();
+    ok = !jump.judge_error(0.04) && close(jump.attempt(), 0.045);
+    ok = ok && jump.judge_error(0.039) && jump.error_uncontrolled(); // did not shrink: a jump
+    std::cout << "a difference that does not shrink with the step is accepted as a jump: " << ok
+              << std::endl;
+
+    s.displacement_tolerance = 0.;
+    StepControl off(s);
+    off.attempt();
+    std::cout << "the tolerance 0 accepts any difference: " << off.judge_error(1e9) << std::endl;
   }
 }

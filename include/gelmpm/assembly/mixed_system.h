@@ -14,6 +14,7 @@
 #include <deal.II/lac/vector.h>
 #include <deal.II/particles/particle_handler.h>
 
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -130,6 +131,24 @@ namespace GelMPM
     largest_displacement_increment(const dealii::Vector<double> &solution) const;
 
     /**
+     * The largest distance |du(x_p) - @p ratio du_p,last| over all material points between the
+     * displacement increment of @p solution and the point's increment in the last accepted step
+     * scaled by @p ratio = dt / dt_last: the predictor-corrector difference of backward Euler,
+     * about twice its local error (Delta t^2 |u''| against Delta t^2 |u''| / 2).
+     */
+    double
+    largest_increment_deviation(const dealii::Vector<double> &solution, const double ratio) const;
+
+    /**
+     * The displacement coefficients (n_u_dofs(), interleaved as the unknowns) closest to
+     * @p ratio times the points' increments of the last accepted step: the L2 projection of
+     * mu_from_points() applied to each displacement component over the volume points. A first
+     * Newton iterate that continues the motion of the last step.
+     */
+    std::vector<double>
+    displacement_from_points(const double ratio) const;
+
+    /**
      * The mass matrix of the chemical-potential basis integrated on the volume points,
      * M_ij = sum_p V_p Ñ_i(x_p) Ñ_j(x_p), dense: for analyses of small discretisations (the
      * inf-sup constant).
@@ -158,6 +177,7 @@ namespace GelMPM
       dealii::Tensor<1, dim> normal;    // unit N_n (surface points)
       dealii::Point<dim>     x;         // x_n
       dealii::Tensor<1, dim> u_n;       // x_n - X_0
+      dealii::Tensor<1, dim> du_last;   // x_n - x_{n-1}
       dealii::Tensor<2, dim> F_p;       // F_n F_0
       double                 mobility;  // m_n in the weak form's units
       double                 mu_n;      // mu at the point, last converged step
@@ -181,6 +201,18 @@ namespace GelMPM
 
     struct CopyData;
     struct ScratchData;
+
+    /**
+     * The L2 projection over the volume points onto the displacement (@p displacement) or the
+     * chemical potential basis of the @p n_components point values @p value(r, component):
+     * per component, the coefficients c of M c = b, M_ij = sum_p V_p N_i N_j,
+     * b_i = sum_p V_p N_i value_p. Returned interleaved (component fastest).
+     */
+    std::vector<double>
+    project_point_values(
+      const bool                                                      displacement,
+      const unsigned int                                              n_components,
+      const std::function<double(const PointRecord &, unsigned int)> &value) const;
 
     void
     assemble_block(const Block                  &block,

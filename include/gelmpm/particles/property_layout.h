@@ -48,6 +48,9 @@ namespace GelMPM
    *   out-of-plane stretch is lambda_0 and is not stored).
    * - normal_area_0: N_0 A_0 (surface points; zero for volume points).
    * - normal_area_n: N_n A_n = J_n F_n^{-T} N_0 A_0, eq. (34).
+   * - increment: the point's displacement in the last accepted step, x_n - x_{n-1} (zero before
+   *   the first step): the predictor of the next step's displacement ('Time stepping/Displacement
+   *   tolerance', 'Newton/Initial displacement').
    */
   template <int dim>
   struct PropertyLayout
@@ -61,7 +64,8 @@ namespace GelMPM
     static constexpr unsigned int F             = position_0 + dim;
     static constexpr unsigned int normal_area_0 = F + dim * dim;
     static constexpr unsigned int normal_area_n = normal_area_0 + dim;
-    static constexpr unsigned int n_properties  = normal_area_n + dim;
+    static constexpr unsigned int increment     = normal_area_n + dim;
+    static constexpr unsigned int n_properties  = increment + dim;
   };
 } // namespace GelMPM
 

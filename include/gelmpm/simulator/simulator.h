@@ -118,9 +118,20 @@ namespace GelMPM
     /** Chemical-potential coefficients of every control point of the mu grid, from a solution. */
     void
     store_mu_coefficients(const dealii::Vector<double> &solution);
-    /** Initial guess for a step: du = 0, mu from the last converged coefficients. */
+    /**
+     * Initial guess for a step of @p dt: du = 0, or with 'Newton/Initial displacement =
+     * extrapolated' the last step's motion scaled to @p dt; mu from the points or from the last
+     * converged coefficients ('Newton/Initial chemical potential').
+     */
     void
-    initial_guess(dealii::Vector<double> &solution) const;
+    initial_guess(dealii::Vector<double> &solution, const double dt = 0.) const;
+    /**
+     * With 'Time stepping/Displacement tolerance': whether the converged @p solution of a step of
+     * @p dt may be accepted by the error control (else the step was cut, and @p failure says
+     * why).
+     */
+    bool
+    error_acceptable(const dealii::Vector<double> &solution, const double dt, std::string &failure);
 
     SceneStructure              structure;
     OutputSettings              output_settings;
@@ -161,6 +172,8 @@ namespace GelMPM
     std::vector<double>                     mu_coefficients; // per mu control point
     std::vector<bool>                       mu_known;        // coefficient holds a current value
     std::vector<double>                     mu_projection;   // points' mu on the step's basis
+    std::vector<double> displacement_projection; // last step's motion on the step's basis
+    double              last_dt = 0.;            // the last accepted step (0 before the first)
 
     unsigned int n_volume_points  = 0;
     unsigned int n_surface_points = 0;

@@ -42,6 +42,8 @@ namespace GelMPM
     LineSearch line_search = LineSearch::physical;
     /** Start mu from the projection of the points' mu (Simulator), not the last coefficients. */
     bool mu_from_points = true;
+    /** 'Initial displacement = extrapolated': Newton starts from the last step's motion. */
+    bool extrapolate_displacement = false;
     /** Print the residual history of every failed attempt. */
     bool log_failures = false;
     /** The smallest damping factor tried before the iteration counts as failed. */

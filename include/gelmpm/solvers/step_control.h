@@ -21,10 +21,15 @@ namespace GelMPM
    *   - bracketing: when the signature leaves (n_u, n_mu, 0) within a step, the step is retaken
    *     from the last stable state with halved remaining intervals until the critical time is
    *     known to the bisection tolerance;
-   *   - with signature control, after the first bracketed loss of stability an unstable attempt
+   *   - with signature control, the steps after an onset start from the bracket's width, and
+   *     after the first bracketed loss of stability an unstable attempt
    *     is retaken shorter (by the cut factor) until its signature is (n_u, n_mu, 0) again or
    *     the minimum step is reached: the signature of K(dt) counts the modes that grow faster
    *     than 1/dt (doc/method.md), so this keeps sigma dt < 1 for every mode;
+   * - error ('Displacement tolerance', judge_error()): a converged attempt whose
+   *   predictor-corrector difference exceeds the tolerance is retaken shorter, and an accepted one
+   *   bounds the next step by dt * 0.9 sqrt(tolerance / difference) (backward Euler's local error
+   *   goes as dt^2);
    *   - while the accepted state is unstable, the step is at most 'unstable step': backward
    *     Euler multiplies a mode growing at rate sigma by 1/(1 - sigma dt) per step, which damps
    *     it once sigma dt > 2, so long steps would converge to the unstable symmetric state
@@ -117,6 +122,20 @@ namespace GelMPM
     cut_step();
 
     /**
+     * The current attempt converged with the predictor-corrector difference @p difference (in
+     * the units of 'Displacement tolerance'). Returns false if the attempt must be retaken:
+     * the next attempt is shorter, by the factor the estimate asks for (between 0.2 and 0.9).
+     * Returns true if it may be accepted: always with the tolerance 0; when a shorter attempt
+     * would fall below the minimum step; and when the difference did not shrink with the step
+     * (by at least the square root of the step ratio against the last retaken attempt), so that
+     * it is no time-stepping error but a jump in the last step's motion (a perturbation, a
+     * change of branch): error_uncontrolled() is then true. An accepted estimate also bounds the
+     * next step.
+     */
+    bool
+    judge_error(const double difference);
+
+    /**
      * The current attempt converged to a state whose signature is (n_u, n_mu, 0) if @p stable:
      * the signature rules above.
      */
@@ -133,6 +152,11 @@ namespace GelMPM
     /** Whether the last accepted step landed on one of the 'Stop at times'. */
     bool
     at_stop_time() const;
+
+    /** Whether the last judge_error() accepted a difference above the tolerance because it did
+     * not shrink with the step. */
+    bool
+    error_uncontrolled() const;
 
     /** Whether the last judged state was stable (true before any judgement). */
     bool
@@ -169,9 +193,13 @@ namespace GelMPM
     double       proposed      = 0.; // the controller's step (Newton growth and cuts)
     double       current       = 0.; // the current attempt
     double       attempt_limit = 0.; // what bounded it before stop times (infinite when bisecting)
-    bool         stable_       = true;
-    bool         bisecting     = false;
-    double       unstable_time = 0.;
+    double       error_limit   = 0.; // the step the error estimate of the attempt allows (0: none)
+    double       retaken_step  = 0.; // the last attempt retaken by the error control (0: none)
+    double       retaken_difference = 0.;
+    bool         uncontrolled       = false;
+    bool         stable_            = true;
+    bool         bisecting          = false;
+    double       unstable_time      = 0.;
     Bracket      bracket_;
   };
 } // namespace GelMPM

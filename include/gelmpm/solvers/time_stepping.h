@@ -29,7 +29,10 @@ namespace GelMPM
     double       cut_factor            = 0.5;
     unsigned int maximum_steps         = 1000000;
     /** Largest displacement of a material point in one step, in cells of the u grid; 0: off. */
-    double                                 largest_increment = 0.;
+    double largest_increment = 0.;
+    /** Largest predictor-corrector difference of a point's displacement in one step, in the
+     * scene's length unit; 0: off. */
+    double                                 displacement_tolerance = 0.;
     std::vector<std::pair<double, double>> caps; // (until time, largest step), sorted
     std::vector<double>                    stop_times;
 
