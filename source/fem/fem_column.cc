@@ -42,7 +42,7 @@ namespace GelMPM
     system_->prescribe_chemical_potential(left, boundary_chemical_potential(0.));
     system_->prescribe_chemical_potential(right, boundary_chemical_potential(0.));
     system_->setup();
-    signature_ = std::make_unique<FemTangentSignature<2>>(*system_);
+    signature_ = std::make_unique<FemTangentSignature<2>>(*system_, parameters.drained_onset);
   }
 
 
@@ -77,7 +77,8 @@ namespace GelMPM
 
     FemSignatureControl control;
     control.stable = [&]() {
-      return signature_->evaluate().stable();
+      const auto &signature = signature_->evaluate();
+      return parameters.drained_onset ? signature.drained_stable() : signature.stable();
     };
     control.bisection_tolerance = bisection_tolerance;
     control.unstable_step       = unstable_step;

@@ -3,8 +3,10 @@
 namespace GelMPM
 {
   template <int dim>
-  FemTangentSignature<dim>::FemTangentSignature(const FemMixedSystem<dim> &system)
+  FemTangentSignature<dim>::FemTangentSignature(const FemMixedSystem<dim> &system,
+                                                const bool                 drained)
     : system(system)
+    , drained(drained)
   {}
 
 
@@ -16,6 +18,7 @@ namespace GelMPM
     const auto  &constraints = system.increment_constraints();
     FemSignature signature;
     unsigned int positive = 0, negative = 0, zero = 0;
+    Inertia      constrained_u_signs;
     for (unsigned int i = 0; i < system.n_dofs(); ++i)
       if (constraints.is_constrained(i))
         {
@@ -23,8 +26,16 @@ namespace GelMPM
           // The only entry of the row and column: an eigenvalue of K by itself.
           const double diagonal = K.diag_element(i);
           (diagonal > 0. ? positive : diagonal < 0. ? negative : zero) += 1;
+          if (i < system.n_u_dofs())
+            (diagonal > 0.   ? constrained_u_signs.n_positive
+             : diagonal < 0. ? constrained_u_signs.n_negative
+                             : constrained_u_signs.n_zero) += 1;
         }
-    signature.expected.n_positive = system.n_u_dofs() - signature.constrained_u + positive;
+    signature.drained_expected.n_positive =
+      system.n_u_dofs() - signature.constrained_u + constrained_u_signs.n_positive;
+    signature.drained_expected.n_negative = constrained_u_signs.n_negative;
+    signature.drained_expected.n_zero     = constrained_u_signs.n_zero;
+    signature.expected.n_positive         = system.n_u_dofs() - signature.constrained_u + positive;
     signature.expected.n_negative = system.n_mu_dofs() - signature.constrained_mu + negative;
     signature.expected.n_zero     = zero;
     return signature;
@@ -38,6 +49,12 @@ namespace GelMPM
     last_ = expected(system);
     factorization.factorize(system.matrix());
     last_.measured = factorization.inertia();
+    if (drained)
+      {
+        // The displacement unknowns come first: the leading block is K_uu.
+        factorization.factorize(system.matrix(), system.n_u_dofs());
+        last_.drained_measured = factorization.inertia();
+      }
     return last_;
   }
 

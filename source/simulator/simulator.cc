@@ -600,7 +600,9 @@ namespace GelMPM
                       result.mode.size() == spaces->n_u_dofs();
           }
         if (perturb)
-          perturb_along_mode(result.mode, solution);
+          perturb_along_mode(result.drained_mode.size() == spaces->n_u_dofs() ? result.drained_mode
+                                                                              : result.mode,
+                             solution);
         {
           dealii::TimerOutput::Scope scope(timer, "update");
           const auto                 n_before = particles.n_global_particles();

@@ -209,6 +209,17 @@ namespace GelMPM
             SymmetricFactorization displacement_block;
             displacement_block.factorize(K, n_u);
             report.drained_inertia = displacement_block.inertia();
+            // K_uu alone is its own "Schur complement" (no mu block): the same shift-invert
+            // Lanczos gives its eigenvalue nearest zero. The perturbation at the onset follows
+            // this mode, not the Schur mode of the short bracketing step: that one is nearly
+            // isochoric, and the next short step relaxes it elastically (doc/method.md).
+            if (settings.perturbation_amplitude > 0. && report.drained_inertia.n_negative > 0)
+              {
+                // Near the onset the negative eigenvalue is the one nearest zero; of the three
+                // nearest, take the lowest (the values come in algebraic order).
+                auto drained        = smallest_schur_eigenvalues(displacement_block, n_u, 3, true);
+                report.drained_mode = std::move(drained.vectors[0]);
+              }
           }
         if (settings.n_eigenvalues > 0)
           {

@@ -37,6 +37,7 @@ main(int argc, char **argv)
   double       end_time, step_cap, initial_step, bisection_tolerance, unstable_step, tolerance;
   unsigned int max_iterations;
   bool         quiet = false;
+  std::string  criterion;
   po::options_description options(
     "gelmpm-fem-column: the onset of swell-induced buckling of a gel column (paper §4.3) with "
     "the body-fitted Taylor-Hood finite-element peer of the MPM.\nThe column is [0, 1] x [0, 8] "
@@ -63,6 +64,9 @@ main(int argc, char **argv)
      "Newton tolerance (as 'Newton/Tolerance' of gelmpm)")
     ("max-iterations", po::value(&max_iterations)->default_value(15),
      "Newton iterations before a step is cut")
+    ("onset-criterion", po::value(&criterion)->default_value("tangent"),
+     "what brackets the onset: 'tangent' (the signature of the tangent leaves (n_u, n_mu, 0)) "
+     "or 'drained' (K_uu becomes indefinite, independent of the step; doc/method.md)")
     ("quiet", po::bool_switch(&quiet), "no line per step");
   // clang-format on
 
@@ -76,6 +80,10 @@ main(int argc, char **argv)
           return 0;
         }
       po::notify(vm);
+      if (criterion != "tangent" && criterion != "drained")
+        throw std::invalid_argument("--onset-criterion must be 'tangent' or 'drained', not '" +
+                                    criterion + "'");
+      parameters.drained_onset = criterion == "drained";
       if (!(end_time > 0.))
         throw std::invalid_argument("--end-time must be positive");
       if (step_cap < 0. || bisection_tolerance < 0. || unstable_step < 0.)
@@ -121,7 +129,11 @@ main(int argc, char **argv)
                   << "  attempts " << s.attempts << "  dV/V " << std::setw(10)
                   << s.relative_volume_change << "  signature " << format(s.signature.measured)
                   << " stable " << format(s.signature.expected)
-                  << (s.signature.stable() ? "" : "  UNSTABLE") << std::endl;
+                  << (s.signature.stable() ? "" : "  UNSTABLE");
+        if (parameters.drained_onset)
+          std::cout << "  K_uu " << format(s.signature.drained_measured)
+                    << (s.signature.drained_stable() ? "" : "  INDEFINITE");
+        std::cout << std::endl;
       };
       const auto   result = column.run(settings.time_stepping,
                                      settings.newton,

@@ -13,7 +13,11 @@
 //   t_onset = 0.28 tau_d but lies below it on these meshes: on 8 x 64 cells within 0.005 tau_d of
 //   the measured 0.2516 tau_d, which is 10.1 % below 0.28 (printed, not required). Finer meshes
 //   (16 x 128: 0.264 tau_d) and the mesh study are in doc/fem_peer.md, "The buckling onset of
-//   the §4.3 column"; they take longer than a test should.
+//   the §4.3 column"; they take longer than a test should;
+// - the drained criterion (--onset-criterion drained): on 1 x 8 cells, at every step the dense
+//   count of the K_uu block's eigenvalues equals its LDL^T inertia, K_uu is judged definite
+//   exactly when that equals the expectation corrected for the constrained rows, and the one
+//   onset it brackets lies at or before the tangent criterion's.
 #include <gelmpm/core/parameters.h>
 #include <gelmpm/fem/fem_column.h>
 
@@ -33,10 +37,12 @@ namespace
   /** The inertia of the symmetric matrix whose lower triangle @p K holds, from its eigenvalues
    * (|lambda| <= 1e-12 max |lambda| counts as zero). */
   GelMPM::Inertia
-  dense_inertia(const dealii::TrilinosWrappers::SparseMatrix &K)
+  dense_inertia(const dealii::TrilinosWrappers::SparseMatrix &K, const unsigned int leading = 0)
   {
-    dealii::LAPACKFullMatrix<double> dense(K.m(), K.n());
-    for (unsigned int row = 0; row < K.m(); ++row)
+    // With @p leading > 0: the leading block of that size (K_uu).
+    const unsigned int               n = leading > 0 ? leading : K.m();
+    dealii::LAPACKFullMatrix<double> dense(n, n);
+    for (unsigned int row = 0; row < n; ++row)
       for (auto entry = K.begin(row); entry != K.end(row); ++entry)
         if (entry->column() <= row)
           {
@@ -45,10 +51,10 @@ namespace
           }
     dense.compute_eigenvalues();
     double largest = 0.;
-    for (unsigned int i = 0; i < K.m(); ++i)
+    for (unsigned int i = 0; i < n; ++i)
       largest = std::max(largest, std::abs(dense.eigenvalue(i).real()));
     GelMPM::Inertia inertia;
-    for (unsigned int i = 0; i < K.m(); ++i)
+    for (unsigned int i = 0; i < n; ++i)
       {
         const double lambda = dense.eigenvalue(i).real();
         if (std::abs(lambda) <= 1e-12 * largest)
@@ -81,6 +87,7 @@ main(int argc, char **argv)
   const auto                      run_settings = settings();
 
   // (a) The signature against a dense eigenvalue count, on a tiny mesh.
+  double tangent_onset = 0.;
   {
     FemColumn::Parameters parameters;
     parameters.cells = 1;
@@ -111,6 +118,39 @@ main(int argc, char **argv)
               << "; the correction matters (uncorrected expectation differs): "
               << (uncorrected_differs == steps) << "; steps checked: more than 10: " << (steps > 10)
               << "; unstable steps among them: " << (unstable > 0) << std::endl;
+    tangent_onset = result.onsets.empty() ? 0. : result.onsets[0].t_unstable;
+  }
+
+  // (d) The drained criterion (K_uu indefinite) on the same mesh: its inertia against a dense
+  // count of the K_uu block, and its onset at or before the tangent's.
+  {
+    FemColumn::Parameters parameters;
+    parameters.cells         = 1;
+    parameters.drained_onset = true;
+    FemColumn    column(material, parameters);
+    const auto  &system = column.system();
+    unsigned int steps = 0, agreeing = 0, judged_right = 0;
+    const auto   result =
+      column.run(run_settings.time_stepping,
+                 run_settings.newton,
+                 GelMPM::LinearSolver(),
+                 1e-3,
+                 0.,
+                 [&](const FemColumn::Step &s) {
+                   const auto  dense     = dense_inertia(system.matrix(), system.n_u_dofs());
+                   const auto &signature = s.signature;
+                   ++steps;
+                   agreeing += (dense == signature.drained_measured);
+                   judged_right +=
+                     ((dense == signature.drained_expected) == signature.drained_stable());
+                 });
+    const bool one = result.onsets.size() == 1;
+    std::cout << "1 x 8 cells, drained criterion: run completed: " << result.completed
+              << "; dense eigenvalue count of K_uu equals its LDL^T inertia at every step: "
+              << (agreeing == steps) << "; K_uu definite exactly when it equals the corrected "
+              << "expectation: " << (judged_right == steps) << "; one onset: " << one
+              << "; at or before the tangent criterion's: "
+              << (one && result.onsets[0].t_unstable <= tangent_onset + 1e-12) << std::endl;
   }
 
   // (b), (c) The onset on two coarse meshes.

@@ -2,7 +2,11 @@
 // full matrix, S never formed) against the eigenvalues of the dense Schur complement
 // S = A + B^T C^{-1} B of K = [A B^T; B -C] from LAPACK: agreement to 1e-8 relative, for a stable
 // (S > 0) and an unstable (one negative eigenvalue) saddle-point matrix of size 60 + 25.
+// And analyse_stability()'s drained mode (the eigenvector of K_uu = A for its negative eigenvalue,
+// perturbation at a drained onset) on a matrix whose A has one small negative eigenvalue: the
+// drained inertia counts it, and the mode satisfies A v = lambda_min v with LAPACK's lambda_min.
 #include <gelmpm/stability/schur_eigenvalues.h>
+#include <gelmpm/stability/stability_analysis.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -47,11 +51,12 @@ main(int argc, char **argv)
   bool                             ok = true;
   std::uniform_real_distribution<> uniform(-1., 1.);
 
-  for (const bool unstable : {false, true})
+  for (const int variant : {0, 1, 2})
     {
+      const bool         unstable = variant > 0, drained = variant == 2;
       FullMatrix<double> A = banded(n, 2., 0.3), C = banded(m, 4., 0.2), B(m, n);
       if (unstable)
-        A(n / 2, n / 2) = -3.;
+        A(n / 2, n / 2) = drained ? -0.4 : -3.;
       for (unsigned int i = 0; i < m; ++i)
         for (unsigned int j = 0; j < n; ++j)
           if ((i * 7 + j * 3) % 11 == 0)
@@ -81,6 +86,39 @@ main(int argc, char **argv)
           if (K(i, j) != 0.)
             sparse.set(i, j, K(i, j));
       sparse.compress(VectorOperation::insert);
+
+      if (drained)
+        {
+          GelMPM::StabilitySettings settings;
+          settings.inertia                = true;
+          settings.n_eigenvalues          = 1;
+          settings.drained_onset          = true;
+          settings.perturbation_amplitude = 1e-2;
+          const auto               report = GelMPM::analyse_stability(sparse, n, settings, []() {
+            return FullMatrix<double>();
+          });
+          LAPACKFullMatrix<double> A_lapack(n, n);
+          A_lapack = A;
+          A_lapack.compute_eigenvalues();
+          double lowest = 0.;
+          for (unsigned int i = 0; i < n; ++i)
+            lowest = std::min(lowest, A_lapack.eigenvalue(i).real());
+          const auto    &v = report.drained_mode;
+          Vector<double> Av(n);
+          if (v.size() == n)
+            {
+              A.vmult(Av, v);
+              Av.add(-lowest, v);
+            }
+          const bool this_ok = report.drained_inertia.n_negative == 1 && v.size() == n &&
+                               Av.l2_norm() < 1e-8 * v.l2_norm();
+          std::cout << "drained onset: K_uu has " << report.drained_inertia.n_negative
+                    << " negative eigenvalue (LAPACK: " << std::setprecision(6) << lowest
+                    << "), the drained mode is its eigenvector: " << (this_ok ? "yes" : "no")
+                    << std::endl;
+          ok &= this_ok;
+          continue;
+        }
 
       GelMPM::SymmetricFactorization factorization;
       factorization.factorize(sparse);

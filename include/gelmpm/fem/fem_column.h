@@ -51,6 +51,9 @@ namespace GelMPM
       unsigned int cells     = 4;    // across the width; 8 times as many along the height
       double       ramp_time = 0.75; // t_inc, tau_d
       unsigned int u_degree  = 2;
+      /** Bracket the onset where K_uu becomes indefinite (as 'Stability/Onset criterion =
+       * drained'), not where the signature of the tangent leaves (n_u, n_mu, 0). */
+      bool drained_onset = false;
     };
 
     /** What a converged step did. */

@@ -15,11 +15,21 @@ namespace GelMPM
     Inertia expected;
     /** Constrained rows of the displacement and mu blocks. */
     unsigned int constrained_u = 0, constrained_mu = 0;
+    /** With the drained criterion: the inertia of the displacement block K_uu, and what a
+     * positive definite K_uu gives (corrected for the constrained rows as above). */
+    Inertia drained_measured, drained_expected;
 
     bool
     stable() const
     {
       return measured == expected;
+    }
+
+    /** K_uu positive definite on the unconstrained DoFs: no mode grows (doc/method.md). */
+    bool
+    drained_stable() const
+    {
+      return drained_measured == drained_expected;
     }
   };
 
@@ -51,8 +61,8 @@ namespace GelMPM
   class FemTangentSignature
   {
   public:
-    /** Keeps @p system by reference. */
-    explicit FemTangentSignature(const FemMixedSystem<dim> &system);
+    /** Keeps @p system by reference; with @p drained evaluate() also factorises K_uu. */
+    explicit FemTangentSignature(const FemMixedSystem<dim> &system, const bool drained = false);
 
     /**
      * Factorise the system's matrix() (the tangent at the last assembly: after a converged
@@ -72,6 +82,7 @@ namespace GelMPM
 
   private:
     const FemMixedSystem<dim> &system;
+    bool                       drained;
     SymmetricFactorization     factorization;
     FemSignature               last_;
   };

@@ -85,6 +85,13 @@ namespace GelMPM
     double              inf_sup = 0.;
     /** With 'Write mode': the eigenvector of eigenvalues[0] (displacement unknowns). */
     dealii::Vector<double> mode;
+    /**
+     * With 'Onset criterion = drained' and a perturbation, when K_uu is indefinite: the
+     * eigenvector of the lowest of the three eigenvalues of K_uu nearest zero (at a bracketed
+     * onset, its small negative eigenvalue), the mode that grows at a drained onset
+     * (displacement unknowns; empty otherwise).
+     */
+    dealii::Vector<double> drained_mode;
     double                 condition_number = 0.;
   };
 
