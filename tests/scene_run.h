@@ -12,6 +12,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace GelMPMTests
@@ -55,6 +56,26 @@ namespace GelMPMTests
     std::cout.rdbuf(cout_buffer);
     run.statistics = GelMPM::read_statistics(directory + "/statistics.csv");
     return run;
+  }
+
+
+  /**
+   * The single loss of stability of a run's @p directory/stability.csv: prints whether there is
+   * exactly one and, if so, whether it is at most @p width wide; returns {t_stable, t_unstable},
+   * or {-1, -1} if there is not exactly one.
+   */
+  inline std::pair<double, double>
+  single_bracket(const std::string &directory, const double width)
+  {
+    const auto brackets = GelMPM::read_statistics(directory + "/stability.csv");
+    const bool one      = brackets.count("t_stable") && brackets.at("t_stable").size() == 1;
+    std::cout << "one onset bracketed: " << one << std::endl;
+    if (!one)
+      return {-1., -1.};
+    const double t_stable = brackets.at("t_stable")[0], t_unstable = brackets.at("t_unstable")[0];
+    std::cout << "bracket at most " << width
+              << " tau_d wide: " << (t_unstable - t_stable <= width * (1. + 1e-9)) << std::endl;
+    return {t_stable, t_unstable};
   }
 } // namespace GelMPMTests
 

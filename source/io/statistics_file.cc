@@ -1,6 +1,7 @@
 #include <gelmpm/io/statistics_file.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
@@ -37,6 +38,16 @@ namespace GelMPM
 
 
   void
+  StatisticsFile::set(const std::string &column, const std::string &text)
+  {
+    const auto it = index.find(column);
+    if (it == index.end())
+      throw std::logic_error("statistics.csv has no column '" + column + "'");
+    current[it->second] = text;
+  }
+
+
+  void
   StatisticsFile::write_row()
   {
     for (unsigned int i = 0; i < current.size(); ++i)
@@ -61,6 +72,19 @@ namespace GelMPM
   }
 
 
+  namespace
+  {
+    /** A field as a number; empty and text fields (e.g. the event of events.csv) as NaN. */
+    double
+    number_or_nan(const std::string &cell)
+    {
+      char        *end   = nullptr;
+      const double value = std::strtod(cell.c_str(), &end);
+      return (cell.empty() || end == cell.c_str() || *end != '\0') ? std::nan("") : value;
+    }
+  } // namespace
+
+
   std::map<std::string, std::vector<double>>
   read_statistics(const std::string &file_name)
   {
@@ -80,7 +104,7 @@ namespace GelMPM
           {
             if (!std::getline(row, cell, ','))
               cell.clear();
-            columns[names[c]].push_back(cell.empty() ? std::nan("") : std::stod(cell));
+            columns[names[c]].push_back(number_or_nan(cell));
           }
       }
     return columns;

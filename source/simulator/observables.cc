@@ -37,6 +37,23 @@ namespace GelMPM
                       "to that of the second's minus its initial value, and centre_distance, its "
                       "length (paper Fig. 10a: the sideways separation of the ends of a buckling "
                       "column). Empty: off.");
+    prm.declare_entry("Pore piece",
+                      "",
+                      dealii::Patterns::Anything(),
+                      "A boundary piece name (e.g. 'holes') whose surface points outline the "
+                      "pores listed in 'Pore centres': adds the columns pore_ratio_1 ... "
+                      "pore_ratio_N, each pore's extent along x over its extent along y (1 for a "
+                      "circle or a quarter circle, > 1 for a pore elongated along x), from the "
+                      "current positions of the points assigned to it, and mu_boundary, the mean "
+                      "mu/k_BT over the piece's points (paper §4.4: alternating ellipses). Empty: "
+                      "off.");
+    prm.declare_entry("Pore centres",
+                      "",
+                      dealii::Patterns::Anything(),
+                      "With 'Pore piece': the pores' centres 'x1, y1; x2, y2; ...' in the initial "
+                      "configuration (a pore cut by the grid's edge, e.g. a quarter hole, is given "
+                      "by its full circle's centre). Each surface point of the piece belongs to "
+                      "the pore whose centre is nearest its initial position.");
     prm.declare_entry("Volume ratio range",
                       "false",
                       dealii::Patterns::Bool(),
@@ -73,11 +90,41 @@ namespace GelMPM
     const auto names = dealii::Utilities::split_string_list(prm.get("Thickness pieces"), ',');
     const auto offset_names =
       dealii::Utilities::split_string_list(prm.get("Centre offset pieces"), ',');
-    thickness_direction = prm.get_integer("Thickness direction");
-    volume_ratio_range  = prm.get_bool("Volume ratio range");
-    mu_oscillation      = prm.get_bool("Chemical potential oscillation");
-    boundary_error      = prm.get_bool("Boundary condition error");
+    thickness_direction         = prm.get_integer("Thickness direction");
+    volume_ratio_range          = prm.get_bool("Volume ratio range");
+    mu_oscillation              = prm.get_bool("Chemical potential oscillation");
+    boundary_error              = prm.get_bool("Boundary condition error");
+    const std::string pore_name = dealii::Utilities::trim(prm.get("Pore piece"));
+    pore_centres.clear();
+    for (const auto &text : dealii::Utilities::split_string_list(prm.get("Pore centres"), ';'))
+      {
+        const auto coordinates = dealii::Utilities::split_string_list(text, ',');
+        require(coordinates.size() == dim,
+                "Observables/Pore centres",
+                "has the centre '" + text + "' with " + std::to_string(coordinates.size()) +
+                  " coordinates",
+                "give " + std::to_string(dim) +
+                  " coordinates per centre, centres separated by ';'");
+        dealii::Point<dim> centre;
+        for (unsigned int d = 0; d < dim; ++d)
+          centre[d] = dealii::Utilities::string_to_double(coordinates[d]);
+        pore_centres.push_back(centre);
+      }
     prm.leave_subsection();
+    pore_piece = -1;
+    if (!pore_name.empty())
+      {
+        const auto it = std::find(pieces.begin(), pieces.end(), pore_name);
+        require(it != pieces.end(),
+                "Observables/Pore piece",
+                "names the piece '" + pore_name + "' that is not in 'Boundary conditions/Pieces'",
+                "use one of the declared pieces");
+        require(!pore_centres.empty(),
+                "Observables/Pore centres",
+                "is empty, but 'Pore piece' is set",
+                "list the pores' centres 'x1, y1; x2, y2; ...'");
+        pore_piece = it - pieces.begin();
+      }
 
     require(thickness_direction < dim,
             "Observables/Thickness direction",
@@ -126,6 +173,12 @@ namespace GelMPM
           c.push_back(std::string("centre_offset_") + "xyz"[d]);
         c.push_back("centre_distance");
       }
+    if (pore_piece >= 0)
+      {
+        for (unsigned int k = 0; k < pore_centres.size(); ++k)
+          c.push_back("pore_ratio_" + std::to_string(k + 1));
+        c.push_back("mu_boundary");
+      }
     if (volume_ratio_range)
       for (const char *name : {"J_min", "J_mean", "J_max"})
         c.push_back(name);
@@ -159,6 +212,14 @@ namespace GelMPM
         for (unsigned int d = 0; d < dim; ++d)
           statistics.set(std::string("centre_offset_") + "xyz"[d], offset[d]);
         statistics.set("centre_distance", offset.norm());
+      }
+    if (pore_piece >= 0)
+      {
+        double     mu_mean = 0.;
+        const auto ratios  = pore_ratios(particles, mu_mean);
+        for (unsigned int k = 0; k < ratios.size(); ++k)
+          statistics.set("pore_ratio_" + std::to_string(k + 1), ratios[k]);
+        statistics.set("mu_boundary", mu_mean);
       }
     if (volume_ratio_range)
       {
@@ -204,6 +265,61 @@ namespace GelMPM
     for (unsigned int k = 0; k < 4; ++k)
       sum[k] /= count[k % 2];
     return sum;
+  }
+
+
+  template <int dim>
+  std::vector<double>
+  Observables<dim>::pore_ratios(const dealii::Particles::ParticleHandler<dim> &particles,
+                                double                                        &mu_mean) const
+  {
+    using Layout                        = PropertyLayout<dim>;
+    const unsigned int            n     = pore_centres.size();
+    const double                  large = std::numeric_limits<double>::max();
+    std::vector<dealii::Point<2>> lower(n, dealii::Point<2>(large, large)),
+      upper(n, dealii::Point<2>(-large, -large));
+    double       mu_sum = 0.;
+    unsigned int count  = 0;
+    for (const auto &particle : particles)
+      {
+        const auto props = particle.get_properties();
+        if (static_cast<int>(std::lround(props[Layout::piece])) != pore_piece)
+          continue;
+        dealii::Point<dim> X_0;
+        for (unsigned int d = 0; d < dim; ++d)
+          X_0[d] = props[Layout::position_0 + d];
+        unsigned int nearest = 0;
+        for (unsigned int k = 1; k < n; ++k)
+          if (X_0.distance(pore_centres[k]) < X_0.distance(pore_centres[nearest]))
+            nearest = k;
+        const auto x = particle.get_location();
+        for (unsigned int d = 0; d < 2; ++d)
+          {
+            lower[nearest][d] = std::min(lower[nearest][d], x[d]);
+            upper[nearest][d] = std::max(upper[nearest][d], x[d]);
+          }
+        mu_sum += props[Layout::mu];
+        ++count;
+      }
+    mu_mean = count > 0 ? mu_sum / count : 0.;
+    std::vector<double> ratios(n, 0.);
+    for (unsigned int k = 0; k < n; ++k)
+      if (upper[k][1] > lower[k][1])
+        ratios[k] = (upper[k][0] - lower[k][0]) / (upper[k][1] - lower[k][1]);
+    return ratios;
+  }
+
+
+  template <int dim>
+  std::optional<double>
+  Observables<dim>::boundary_chemical_potential(
+    const dealii::Particles::ParticleHandler<dim> &particles) const
+  {
+    if (pore_piece < 0)
+      return std::nullopt;
+    double mu_mean = 0.;
+    pore_ratios(particles, mu_mean);
+    return mu_mean;
   }
 
 

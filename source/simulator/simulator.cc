@@ -193,6 +193,8 @@ namespace GelMPM
           for (const char *name : {"eig_1_stable", "eig_1_unstable"})
             bracket_columns.push_back(name);
         stability_file.open(output_settings.directory + "/stability.csv", bracket_columns);
+        events_file.open(output_settings.directory + "/events.csv",
+                         {"event", "time", "t_over_tau_d", "mu_boundary"});
       }
   }
 
@@ -334,6 +336,16 @@ namespace GelMPM
         stability_file.set("eig_1_unstable", result.eigenvalues[0]);
       }
     stability_file.write_row();
+
+    // Written as the event happens. The points still hold the state of the bracket's stable end
+    // (the converged attempt is applied after the stability analysis): mu_boundary is taken there,
+    // at most 'Bisection tolerance' earlier.
+    events_file.set("event", "bifurcation");
+    events_file.set("time", bracket.t_unstable * tau_d);
+    events_file.set("t_over_tau_d", bracket.t_unstable);
+    if (const auto mu = observables.boundary_chemical_potential(particles))
+      events_file.set("mu_boundary", *mu);
+    events_file.write_row();
   }
 
 

@@ -26,6 +26,10 @@ namespace GelMPM
     void
     set(const std::string &column, const double value);
 
+    /** Set a text field (a name, e.g. the event of events.csv; no commas) of the current row. */
+    void
+    set(const std::string &column, const std::string &text);
+
     /** Write the current row (columns not set are written as empty fields) and start a new one. */
     void
     write_row();
@@ -47,8 +51,8 @@ namespace GelMPM
   };
 
   /**
-   * Read a statistics.csv written by StatisticsFile back, column by column (empty fields become
-   * NaN). For tests and tools that compare a run with a reference. Throws std::runtime_error if
+   * Read a statistics.csv written by StatisticsFile back, column by column (empty and text
+   * fields become NaN). For tests and tools that compare a run with a reference. Throws std::runtime_error if
    * the file cannot be read.
    */
   std::map<std::string, std::vector<double>>

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -26,6 +27,10 @@ namespace GelMPM
    * - Centre offset (columns centre_offset_x, _y, (_z), centre_distance): with "Centre offset
    *   pieces = bottom, top", the vector between the mean positions of the two pieces' surface
    *   points minus its initial value, and its length (paper §4.3, Fig. 10a).
+   * - Pore ratios (columns pore_ratio_1 ... pore_ratio_N, mu_boundary): with "Pore piece" and
+   *   "Pore centres", each pore's extent along x over its extent along y, from the current
+   *   positions of the piece's surface points nearest (initially) to its centre, and the mean mu
+   *   over the piece (paper §4.4: the holes turning into alternating ellipses).
    * - Volume ratio range (columns J_min, J_mean, J_max): the extremes and the V_0-weighted mean of
    *   J (dry state to current) over the volume points; the spread measures how far a state is
    *   from homogeneous (patch tests).
@@ -61,6 +66,13 @@ namespace GelMPM
              const std::function<std::pair<double, double>()> &dirichlet_errors,
              StatisticsFile                                   &statistics) const;
 
+    /**
+     * With 'Pore piece': the mean mu/k_BT over that piece's surface points (the column
+     * mu_boundary); empty otherwise.
+     */
+    std::optional<double>
+    boundary_chemical_potential(const dealii::Particles::ParticleHandler<dim> &particles) const;
+
   private:
     /** The indices of the two pieces named in @p names (entry @p entry); {-1, -1} if empty. */
     static std::array<int, 2>
@@ -72,6 +84,10 @@ namespace GelMPM
     std::array<dealii::Point<dim>, 4>
     piece_means(const dealii::Particles::ParticleHandler<dim> &particles,
                 const std::array<int, 2>                      &pair) const;
+    /** Per pore, extent along x over extent along y (0 for a pore without points); the mean mu
+     * over the pore piece's points into @p mu_mean. */
+    std::vector<double>
+    pore_ratios(const dealii::Particles::ParticleHandler<dim> &particles, double &mu_mean) const;
     /** (min, V_0-weighted mean, max) of J over the volume points. */
     std::array<double, 3>
     volume_ratio_statistics(const dealii::Particles::ParticleHandler<dim> &particles,
@@ -80,12 +96,14 @@ namespace GelMPM
     double
     chemical_potential_oscillation(const dealii::Particles::ParticleHandler<dim> &particles) const;
 
-    std::array<int, 2> thickness_pieces    = {{-1, -1}};
-    std::array<int, 2> offset_pieces       = {{-1, -1}};
-    unsigned int       thickness_direction = 1;
-    bool               volume_ratio_range  = false;
-    bool               mu_oscillation      = false;
-    bool               boundary_error      = false;
+    std::array<int, 2>              thickness_pieces = {{-1, -1}};
+    std::array<int, 2>              offset_pieces    = {{-1, -1}};
+    int                             pore_piece       = -1;
+    std::vector<dealii::Point<dim>> pore_centres;
+    unsigned int                    thickness_direction = 1;
+    bool                            volume_ratio_range  = false;
+    bool                            mu_oscillation      = false;
+    bool                            boundary_error      = false;
   };
 } // namespace GelMPM
 

@@ -165,6 +165,7 @@ namespace GelMPM
     std::vector<unsigned int>               grid_volume_points;    // per cell, start of the step
     StatisticsFile                          statistics;
     StatisticsFile                          stability_file; // stability.csv, with the inertia
+    StatisticsFile                          events_file;    // events.csv, with the inertia
     std::unique_ptr<StepControl>            control;
     bool                                    announced_bracketing = false;
     Inertia                                 last_stable_inertia;
