@@ -52,8 +52,8 @@ namespace GelMPM
 
   /**
    * Read a statistics.csv written by StatisticsFile back, column by column (empty and text
-   * fields become NaN). For tests and tools that compare a run with a reference. Throws std::runtime_error if
-   * the file cannot be read.
+   * fields become NaN). For tests and tools that compare a run with a reference. Throws
+   * std::runtime_error if the file cannot be read.
    */
   std::map<std::string, std::vector<double>>
   read_statistics(const std::string &file_name);
