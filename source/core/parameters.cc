@@ -5,6 +5,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <cctype>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -177,6 +178,11 @@ namespace GelMPM
               "",
               "the scene file '" + file_name + "' cannot be opened",
               "check the path (relative paths are taken from the current directory)");
+      // A directory opens as a stream on Linux and reads as an empty scene of defaults.
+      require(!std::filesystem::is_directory(file_name),
+              "",
+              "'" + file_name + "' is a directory, not a scene file",
+              "give a scene file, e.g. prm/constrained_swelling.prm");
     }
     try
       {

@@ -73,15 +73,19 @@ namespace GelMPM
         patch.vertices[0] = particle.get_location();
         patch.patch_index = patches.size();
         patch.data.reinit(names.size(), 1);
-        patch.data(0, 0)     = props[Layout::kind];
-        patch.data(1, 0)     = props[Layout::piece];
-        patch.data(2, 0)     = mu;
-        patch.data(3, 0)     = J;
-        patch.data(4, 0)     = 1. - 1. / J;
-        patch.data(5, 0)     = props[Layout::measure_n];
-        const auto lambda_sq = eigenvalues(symmetrize(F * transpose(F)));
+        patch.data(0, 0) = props[Layout::kind];
+        patch.data(1, 0) = props[Layout::piece];
+        patch.data(2, 0) = mu;
+        patch.data(3, 0) = J;
+        patch.data(4, 0) = 1. - 1. / J;
+        patch.data(5, 0) = props[Layout::measure_n];
+        // Principal stretches from F F^T by Jacobi rotations: the closed-form eigenvalues of a
+        // nearly isotropic tensor take the root of a discriminant that round-off can make
+        // slightly negative, a NaN in ParaView (sorted in descending order either way).
+        const auto principal =
+          eigenvectors(symmetrize(F * transpose(F)), SymmetricTensorEigenvectorMethod::jacobi);
         for (unsigned int d = 0; d < dim; ++d)
-          patch.data(6 + d, 0) = std::sqrt(lambda_sq[dim - 1 - d]);
+          patch.data(6 + d, 0) = std::sqrt(std::max(principal[dim - 1 - d].first, 0.));
         if (J > 1.)
           {
             const Tensor<2, dim> sigma = material.stress(F, mu) * transpose(F) / J;

@@ -651,9 +651,12 @@ namespace GelMPM
         const bool interval_due =
           (output_settings.interval_steps > 0 && step % output_settings.interval_steps == 0) ||
           (output_settings.interval_time > 0. && time >= next_output_time * (1. - 1e-12));
-        if (output_settings.interval_time > 0.)
-          while (next_output_time <= time * (1. + 1e-12))
-            next_output_time += output_settings.interval_time;
+        // The next multiple of the interval after this time, in one step: a loop that adds the
+        // interval would run for ever when it is tiny against the time.
+        if (output_settings.interval_time > 0. && next_output_time <= time * (1. + 1e-12))
+          next_output_time =
+            (std::floor(time * (1. + 1e-12) / output_settings.interval_time) + 1.) *
+            output_settings.interval_time;
         if (control->at_stop_time() || interval_due || control->finished())
           write_output();
         return true;

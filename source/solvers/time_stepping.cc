@@ -4,6 +4,8 @@
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <limits>
 
 namespace GelMPM
@@ -83,10 +85,15 @@ namespace GelMPM
   TimeStepping::parse_parameters(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection("Time stepping");
-    characteristic_length       = prm.get_double("Characteristic length");
-    initial_step                = prm.get_double("Initial step");
-    end_time                    = prm.get_double("End time");
-    minimum_step                = prm.get_double("Minimum step");
+    characteristic_length = prm.get_double("Characteristic length");
+    initial_step          = prm.get_double("Initial step");
+    end_time              = prm.get_double("End time");
+    {
+      // Not get_double(): deal.II refuses to convert a denormal number with an exception that
+      // does not name the entry.
+      const std::string text = prm.get("Minimum step");
+      minimum_step           = std::strtod(text.c_str(), nullptr);
+    }
     growth_factor               = prm.get_double("Growth factor");
     growth_below                = prm.get_integer("Growth below iterations");
     cut_factor                  = prm.get_double("Cut factor");
@@ -107,6 +114,10 @@ namespace GelMPM
             "Time stepping/Cut factor",
             "must lie strictly between 0 and 1",
             "use 0.5 as in the paper");
+    require(minimum_step >= 1e-300,
+            "Time stepping/Minimum step",
+            "is below 1e-300, where the step arithmetic loses its precision",
+            "give e.g. 1e-12 (tau_d)");
     require(minimum_step < initial_step,
             "Time stepping/Minimum step",
             "is not smaller than the initial step",
@@ -132,10 +143,19 @@ namespace GelMPM
                              "has the item '" + item + "' with a non-number",
                              "write e.g. '5: 0.0125, 20: 0.0625'");
           }
+        require(std::isfinite(until) && std::isfinite(value),
+                "Time stepping/Step caps",
+                "has the item '" + item + "' that is not finite",
+                "write e.g. '5: 0.0125, 20: 0.0625'");
         require(value > 0.,
                 "Time stepping/Step caps",
                 "has the non-positive cap in '" + item + "'",
                 "give caps > 0");
+        require(value >= minimum_step,
+                "Time stepping/Step caps",
+                "has the cap in '" + item + "' below 'Minimum step' = " +
+                  std::to_string(minimum_step) + " (the run would crawl there)",
+                "give caps of at least the minimum step");
         require(caps.empty() || until > caps.back().first,
                 "Time stepping/Step caps",
                 "has times that do not increase",
@@ -145,7 +165,24 @@ namespace GelMPM
 
     stop_times.clear();
     for (const auto &item : dealii::Utilities::split_string_list(stops, ','))
-      stop_times.push_back(dealii::Utilities::string_to_double(item));
+      {
+        double t = 0.;
+        try
+          {
+            t = dealii::Utilities::string_to_double(item);
+          }
+        catch (...)
+          {
+            throw InputError("Time stepping/Stop at times",
+                             "has the item '" + item + "' that is not a number",
+                             "write e.g. '0.1, 0.5, 1'");
+          }
+        require(std::isfinite(t) && t > 0.,
+                "Time stepping/Stop at times",
+                "has the item '" + item + "' that is not a positive, finite time",
+                "write e.g. '0.1, 0.5, 1'");
+        stop_times.push_back(t);
+      }
     std::sort(stop_times.begin(), stop_times.end());
   }
 
