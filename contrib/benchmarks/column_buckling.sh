@@ -36,7 +36,7 @@ out="${out:-${top}/output/column_buckling_study}"
 mkdir -p "${out}"
 scene="${top}/prm/column_buckling.prm"
 echo "run,exit_status,wall_seconds" > "${out}/runs.csv"
-echo "column_buckling.sh: about $((3 + 15 * paper)) minutes on a 2-core machine; results in ${out}"
+echo "column_buckling.sh: about $((2 + 10 * paper)) minutes on a 2-core machine; results in ${out}"
 
 run() {
   local name="$1"

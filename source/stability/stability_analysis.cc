@@ -85,8 +85,9 @@ namespace GelMPM
       dealii::Patterns::Double(0.),
       "With 'Inertia' and 'Schur eigenvalues' >= 1: when a loss of stability has "
       "been bracketed, the displacement of the unstable state is perturbed along "
-      "the critical mode (the eigenvector of the smallest Schur eigenvalue), scaled "
-      "so that its largest control-point displacement is this amplitude (in the "
+      "the critical mode (with 'Onset criterion = drained' the eigenvector of the "
+      "negative eigenvalue of K_uu, otherwise that of the smallest Schur eigenvalue), "
+      "scaled so that its largest control-point displacement is this amplitude (in the "
       "scene's length unit), so that the run leaves the unstable branch at the "
       "critical time in a chosen direction. 0: no perturbation (the run relies on "
       "round-off to leave a symmetric branch, late and in a random direction).");
