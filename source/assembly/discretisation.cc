@@ -116,11 +116,30 @@ namespace GelMPM
     for (unsigned int c = 0; c < u_cell_has_material.size(); ++c)
       if (u_cell_has_material[c])
         mu_has_material[mu_cell_of(c)] = true;
-    u_ = std::make_unique<ExtendedBSplineSpace<dim>>(u_space_,
+    u_  = std::make_unique<ExtendedBSplineSpace<dim>>(u_space_,
                                                      u_cell_has_material,
-                                                     settings_.extension);
-    mu_ =
-      std::make_unique<ExtendedBSplineSpace<dim>>(mu_space_, mu_has_material, settings_.extension);
+                                                     settings_.extension,
+                                                     !inexact_extrapolation_tolerated);
+    mu_ = std::make_unique<ExtendedBSplineSpace<dim>>(mu_space_,
+                                                      mu_has_material,
+                                                      settings_.extension,
+                                                      !inexact_extrapolation_tolerated);
+  }
+
+
+  template <int dim>
+  void
+  DiscreteSpaces<dim>::tolerate_inexact_extrapolation()
+  {
+    inexact_extrapolation_tolerated = true;
+  }
+
+
+  template <int dim>
+  unsigned int
+  DiscreteSpaces<dim>::n_inexact_extrapolations() const
+  {
+    return (u_ ? u_->n_inexact_extrapolations() : 0) + (mu_ ? mu_->n_inexact_extrapolations() : 0);
   }
 
 

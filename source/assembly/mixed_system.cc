@@ -547,92 +547,16 @@ namespace GelMPM
       }
 
     if (piece.displacement_prescribed())
-      {
-        const auto            state = material.incremental(s.delta_F, s.mu_at_point, point.F_p);
-        const Tensor<2, dim> &Pi    = point.projector;
-        const Tensor<1, dim>  g     = Pi * (point.u_n + s.du_at_point - point.u_bar);
-        const Tensor<2, dim>  W     = outer(g, N);
-        const double beta = nitsche.displacement_penalty * material.shear_modulus() / spaces_.h_u();
-        const Tensor<1, dim> Pi_PN = Pi * (state.P_n * N);
-        Tensor<2, dim>       WA; // [k][L] = W_iJ A_iJkL
-        for (unsigned int k = 0; k < dim; ++k)
-          for (unsigned int L = 0; L < dim; ++L)
-            for (unsigned int i = 0; i < dim; ++i)
-              for (unsigned int J = 0; J < dim; ++J)
-                WA[k][L] += W[i][J] * state.A_n[i][J][k][L];
-        const double W_dPdmu = dealii::scalar_product(W, state.dP_n_dmu);
-
-        for (unsigned int a = 0; a < s.n_u; ++a)
-          {
-            const Tensor<1, dim> WAG = WA * s.G[a];
-            for (unsigned int k = 0; k < dim; ++k)
-              r(dim * a + k) += area * (beta * g[k] * s.N[a] - Pi_PN[k] * s.N[a] - sym * WAG[k]);
-          }
-        for (unsigned int b = 0; b < s.n_mu; ++b)
-          r(mu0 + b) -= sym * area * W_dPdmu * s.M[b];
-
-        if (with_matrix)
-          {
-            // C[k][m][L] = Pi_ki A_iJmL N_J: the consistency term's derivative.
-            Tensor<3, dim> C;
-            for (unsigned int k = 0; k < dim; ++k)
-              for (unsigned int m = 0; m < dim; ++m)
-                for (unsigned int L = 0; L < dim; ++L)
-                  for (unsigned int i = 0; i < dim; ++i)
-                    for (unsigned int J = 0; J < dim; ++J)
-                      C[k][m][L] += Pi[k][i] * state.A_n[i][J][m][L] * N[J];
-
-            // Third derivative of the energy contracted with W, by a central difference of
-            // the analytic tangent along W (second-order accurate, step 1e-5 relative).
-            dealii::Tensor<4, dim> H;
-            dealii::Tensor<2, dim> DW; // d(W : dP_n/dmu)/d(dF)
-            const double           W_norm = W.norm();
-            if (W_norm > 0.)
-              {
-                const double eps = 1e-5 / W_norm;
-                const auto   plus =
-                  material.incremental(s.delta_F + eps * W, s.mu_at_point, point.F_p);
-                const auto minus =
-                  material.incremental(s.delta_F - eps * W, s.mu_at_point, point.F_p);
-                H = (plus.A_n - minus.A_n) / (2. * eps);
-                // P_n is affine in mu, so this difference is exact.
-                const auto mu_plus = material.incremental(s.delta_F, s.mu_at_point + 1., point.F_p);
-                for (unsigned int k = 0; k < dim; ++k)
-                  for (unsigned int L = 0; L < dim; ++L)
-                    for (unsigned int i = 0; i < dim; ++i)
-                      for (unsigned int J = 0; J < dim; ++J)
-                        DW[k][L] += W[i][J] * (mu_plus.A_n[i][J][k][L] - state.A_n[i][J][k][L]);
-              }
-            const Tensor<1, dim> Pi_dPdmu_N = Pi * (state.dP_n_dmu * N);
-
-            for (unsigned int a = 0; a < s.n_u; ++a)
-              for (unsigned int c = 0; c < s.n_u; ++c)
-                for (unsigned int k = 0; k < dim; ++k)
-                  for (unsigned int m = 0; m < dim; ++m)
-                    {
-                      double value = beta * Pi[k][m] * s.N[a] * s.N[c];
-                      value -= s.N[a] * (C[k][m] * s.G[c]);
-                      value -= sym * s.N[c] * (C[m][k] * s.G[a]);
-                      if (W_norm > 0.)
-                        for (unsigned int L = 0; L < dim; ++L)
-                          for (unsigned int Q = 0; Q < dim; ++Q)
-                            value -= sym * s.G[a][L] * H[k][L][m][Q] * s.G[c][Q];
-                      K(dim * a + k, dim * c + m) += area * value;
-                    }
-            for (unsigned int a = 0; a < s.n_u; ++a)
-              {
-                const Tensor<1, dim> DWG = DW * s.G[a];
-                for (unsigned int k = 0; k < dim; ++k)
-                  for (unsigned int b = 0; b < s.n_mu; ++b)
-                    {
-                      K(dim * a + k, mu0 + b) -=
-                        area * s.M[b] * (s.N[a] * Pi_dPdmu_N[k] + sym * DWG[k]);
-                      K(mu0 + b, dim * a + k) -=
-                        sym * area * s.M[b] * (s.N[a] * Pi_dPdmu_N[k] + DWG[k]);
-                    }
-              }
-          }
-      }
+      add_displacement_nitsche(point,
+                               point.projector,
+                               point.projector * (point.u_n + s.du_at_point - point.u_bar),
+                               nitsche.displacement_penalty * material.shear_modulus() /
+                                 spaces_.h_u(),
+                               with_matrix,
+                               s,
+                               copy);
+    else if (contact.enabled())
+      add_plane_contact(point, with_matrix, s, copy);
 
     if (piece.chemical_potential_prescribed())
       {
@@ -654,6 +578,143 @@ namespace GelMPM
     else
       for (unsigned int b = 0; b < s.n_mu; ++b)
         r(mu0 + b) += dt * area * kTnu * point.flux * s.M[b];
+  }
+
+
+  template <int dim>
+  void
+  MixedSystem<dim>::add_displacement_nitsche(const PointRecord          &point,
+                                             const Tensor<2, dim>       &Pi,
+                                             const Tensor<1, dim>       &g,
+                                             const double                beta,
+                                             const bool                  with_matrix,
+                                             ScratchData                &s,
+                                             CopyData                   &copy) const
+  {
+    const double       area = point.measure;
+    const auto        &N    = point.normal;
+    const double       sym  = nitsche.symmetry;
+    const unsigned int mu0  = dim * s.n_u;
+    auto              &K    = copy.matrix;
+    auto              &r    = copy.residual;
+    const auto            state = material.incremental(s.delta_F, s.mu_at_point, point.F_p);
+            const Tensor<2, dim>  W     = outer(g, N);
+    const Tensor<1, dim> Pi_PN = Pi * (state.P_n * N);
+    Tensor<2, dim>       WA; // [k][L] = W_iJ A_iJkL
+    for (unsigned int k = 0; k < dim; ++k)
+      for (unsigned int L = 0; L < dim; ++L)
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int J = 0; J < dim; ++J)
+            WA[k][L] += W[i][J] * state.A_n[i][J][k][L];
+    const double W_dPdmu = dealii::scalar_product(W, state.dP_n_dmu);
+
+    for (unsigned int a = 0; a < s.n_u; ++a)
+      {
+        const Tensor<1, dim> WAG = WA * s.G[a];
+        for (unsigned int k = 0; k < dim; ++k)
+          r(dim * a + k) += area * (beta * g[k] * s.N[a] - Pi_PN[k] * s.N[a] - sym * WAG[k]);
+      }
+    for (unsigned int b = 0; b < s.n_mu; ++b)
+      r(mu0 + b) -= sym * area * W_dPdmu * s.M[b];
+
+    if (with_matrix)
+      {
+        // C[k][m][L] = Pi_ki A_iJmL N_J: the consistency term's derivative.
+        Tensor<3, dim> C;
+        for (unsigned int k = 0; k < dim; ++k)
+          for (unsigned int m = 0; m < dim; ++m)
+            for (unsigned int L = 0; L < dim; ++L)
+              for (unsigned int i = 0; i < dim; ++i)
+                for (unsigned int J = 0; J < dim; ++J)
+                  C[k][m][L] += Pi[k][i] * state.A_n[i][J][m][L] * N[J];
+
+        // Third derivative of the energy contracted with W, by a central difference of
+        // the analytic tangent along W (second-order accurate, step 1e-5 relative).
+        dealii::Tensor<4, dim> H;
+        dealii::Tensor<2, dim> DW; // d(W : dP_n/dmu)/d(dF)
+        const double           W_norm = W.norm();
+        if (W_norm > 0.)
+          {
+            const double eps = 1e-5 / W_norm;
+            const auto   plus =
+              material.incremental(s.delta_F + eps * W, s.mu_at_point, point.F_p);
+            const auto minus =
+              material.incremental(s.delta_F - eps * W, s.mu_at_point, point.F_p);
+            H = (plus.A_n - minus.A_n) / (2. * eps);
+            // P_n is affine in mu, so this difference is exact.
+            const auto mu_plus = material.incremental(s.delta_F, s.mu_at_point + 1., point.F_p);
+            for (unsigned int k = 0; k < dim; ++k)
+              for (unsigned int L = 0; L < dim; ++L)
+                for (unsigned int i = 0; i < dim; ++i)
+                  for (unsigned int J = 0; J < dim; ++J)
+                    DW[k][L] += W[i][J] * (mu_plus.A_n[i][J][k][L] - state.A_n[i][J][k][L]);
+          }
+        const Tensor<1, dim> Pi_dPdmu_N = Pi * (state.dP_n_dmu * N);
+
+        for (unsigned int a = 0; a < s.n_u; ++a)
+          for (unsigned int c = 0; c < s.n_u; ++c)
+            for (unsigned int k = 0; k < dim; ++k)
+              for (unsigned int m = 0; m < dim; ++m)
+                {
+                  double value = beta * Pi[k][m] * s.N[a] * s.N[c];
+                  value -= s.N[a] * (C[k][m] * s.G[c]);
+                  value -= sym * s.N[c] * (C[m][k] * s.G[a]);
+                  if (W_norm > 0.)
+                    for (unsigned int L = 0; L < dim; ++L)
+                      for (unsigned int Q = 0; Q < dim; ++Q)
+                        value -= sym * s.G[a][L] * H[k][L][m][Q] * s.G[c][Q];
+                  K(dim * a + k, dim * c + m) += area * value;
+                }
+        for (unsigned int a = 0; a < s.n_u; ++a)
+          {
+            const Tensor<1, dim> DWG = DW * s.G[a];
+            for (unsigned int k = 0; k < dim; ++k)
+              for (unsigned int b = 0; b < s.n_mu; ++b)
+                {
+                  K(dim * a + k, mu0 + b) -=
+                    area * s.M[b] * (s.N[a] * Pi_dPdmu_N[k] + sym * DWG[k]);
+                  K(mu0 + b, dim * a + k) -=
+                    sym * area * s.M[b] * (s.N[a] * Pi_dPdmu_N[k] + DWG[k]);
+                }
+          }
+      }
+  }
+
+
+  template <int dim>
+  void
+  MixedSystem<dim>::add_plane_contact(const PointRecord &point,
+                                      const bool         with_matrix,
+                                      ScratchData       &s,
+                                      CopyData          &copy) const
+  {
+    const double beta = contact.penalty * material.shear_modulus() / spaces_.h_u();
+    for (const auto &plane : contact_planes)
+      {
+        const double g =
+          plane.sign * (point.x[plane.axis] + s.du_at_point[plane.axis] - plane.value);
+        Tensor<1, dim> n;
+        n[plane.axis] = plane.sign;
+        if (contact.method == ContactSettings::Method::nitsche)
+          {
+            // Nitsche's active set: the augmented normal traction sigma_n - beta g < 0.
+            const auto   state   = material.incremental(s.delta_F, s.mu_at_point, point.F_p);
+            const double sigma_n = n * (state.P_n * point.normal);
+            if (beta * g - sigma_n > 0.)
+              add_displacement_nitsche(point, outer(n, n), g * n, beta, with_matrix, s, copy);
+            continue;
+          }
+        if (g <= 0.)
+          continue;
+        const unsigned int i    = plane.axis;
+        const double       area = point.measure;
+        for (unsigned int a = 0; a < s.n_u; ++a)
+          copy.residual(dim * a + i) += area * beta * g * plane.sign * s.N[a];
+        if (with_matrix)
+          for (unsigned int a = 0; a < s.n_u; ++a)
+            for (unsigned int c = 0; c < s.n_u; ++c)
+              copy.matrix(dim * a + i, dim * c + i) += area * beta * s.N[a] * s.N[c];
+      }
   }
 
 
@@ -931,6 +992,60 @@ namespace GelMPM
         largest = std::max(largest, du.norm());
       }
     return largest;
+  }
+
+
+  template <int dim>
+  void
+  MixedSystem<dim>::set_contact(const ContactSettings &settings)
+  {
+    contact = settings;
+    Point<dim> lower, upper;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        lower[d] = spaces_.u_space().basis_1d(d).x_min();
+        upper[d] = spaces_.u_space().basis_1d(d).x_max();
+      }
+    contact_planes = settings.planes(lower, upper);
+  }
+
+
+  template <int dim>
+  std::pair<unsigned int, double>
+  MixedSystem<dim>::contact_state(const dealii::Vector<double> &solution) const
+  {
+    unsigned int active      = 0;
+    double       penetration = 0.;
+    if (!contact.enabled())
+      return {active, penetration};
+    const double beta = contact.penalty * material.shear_modulus() / spaces_.h_u();
+    for (const auto &r : points)
+      {
+        if (r.kind == PointKind::volume || r.piece < 0 ||
+            boundary_conditions.piece(r.piece).displacement_prescribed())
+          continue;
+        Tensor<1, dim> du;
+        Tensor<2, dim> delta_F;
+        double         mu;
+        fields_at_point(r, solution, du, delta_F, mu);
+        bool is_active = false;
+        for (const auto &plane : contact_planes)
+          {
+            const double g = plane.sign * (r.x[plane.axis] + du[plane.axis] - plane.value);
+            penetration    = std::max(penetration, g);
+            if (contact.method == ContactSettings::Method::nitsche)
+              {
+                Tensor<1, dim> n;
+                n[plane.axis]    = plane.sign;
+                const auto state = material.incremental(delta_F, mu, r.F_p);
+                is_active |= beta * g - n * (state.P_n * r.normal) > 0.;
+              }
+            else
+              is_active |= g > 0.;
+          }
+        active += is_active;
+      }
+    return {active, penetration};
   }
 
 

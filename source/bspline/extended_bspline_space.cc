@@ -52,9 +52,11 @@ namespace GelMPM
   template <int dim>
   ExtendedBSplineSpace<dim>::ExtendedBSplineSpace(const BSplineSpace<dim> &space,
                                                   const std::vector<bool> &cell_has_material,
-                                                  const bool               use_extension)
+                                                  const bool               use_extension,
+                                                  const bool exact_extrapolation_required)
     : space_(space)
     , use_extension(use_extension)
+    , exact_extrapolation_required(exact_extrapolation_required)
   {
     if (cell_has_material.size() != space.n_cells())
       throw std::invalid_argument("ExtendedBSplineSpace: one material flag per cell expected");
@@ -231,9 +233,17 @@ namespace GelMPM
             const int k_d = kk[d];
             if (k_d >= best[d] && k_d <= best[d] + q)
               continue;
-            if (std::min(k_d, best[d]) < q - 1 ||
-                std::max(k_d, best[d] + q) > static_cast<int>(space_.n_cells_per_direction()[d]))
-              throw std::runtime_error(
+            const bool exact =
+              std::min(k_d, best[d]) >= q - 1 &&
+              std::max(k_d, best[d] + q) <= static_cast<int>(space_.n_cells_per_direction()[d]);
+            if (exact)
+              continue;
+            if (!exact_extrapolation_required)
+              {
+                ++n_inexact;
+                break;
+              }
+            throw std::runtime_error(
                 "extended B-splines (degree " + std::to_string(q) + ", " +
                 std::to_string(space_.n_cells_per_direction()[d]) + " cells in direction " +
                 std::to_string(d) +
@@ -258,6 +268,14 @@ namespace GelMPM
           weights[k].emplace_back(space_.function_index(to_unsigned<dim>(i)), E);
         });
       }
+  }
+
+
+  template <int dim>
+  unsigned int
+  ExtendedBSplineSpace<dim>::n_inexact_extrapolations() const
+  {
+    return n_inexact;
   }
 
 

@@ -1,6 +1,7 @@
 #include <gelmpm/core/input_error.h>
 #include <gelmpm/particles/property_layout.h>
 #include <gelmpm/simulator/observables.h>
+#include <gelmpm/simulator/pore_geometry.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
@@ -54,6 +55,14 @@ namespace GelMPM
                       "configuration (a pore cut by the grid's edge, e.g. a quarter hole, is given "
                       "by its full circle's centre). Each surface point of the piece belongs to "
                       "the pore whose centre is nearest its initial position.");
+    prm.declare_entry("Crease angle",
+                      "60",
+                      dealii::Patterns::Double(0., 180.),
+                      "With 'Pore piece': a pore creases (event 'crease' in events.csv) when the "
+                      "polyline of its surface points turns by more than this angle (degrees) at "
+                      "one point, or crosses itself. Points d apart on a smooth surface of "
+                      "curvature radius r turn by d/r (a few degrees); a crease turns at once "
+                      "(column pore_turning_k).");
     prm.declare_entry("Volume ratio range",
                       "false",
                       dealii::Patterns::Bool(),
@@ -95,6 +104,7 @@ namespace GelMPM
     mu_oscillation              = prm.get_bool("Chemical potential oscillation");
     boundary_error              = prm.get_bool("Boundary condition error");
     const std::string pore_name = dealii::Utilities::trim(prm.get("Pore piece"));
+    crease_angle                = prm.get_double("Crease angle") * M_PI / 180.;
     pore_centres.clear();
     for (const auto &text : dealii::Utilities::split_string_list(prm.get("Pore centres"), ';'))
       {
@@ -177,6 +187,13 @@ namespace GelMPM
       {
         for (unsigned int k = 0; k < pore_centres.size(); ++k)
           c.push_back("pore_ratio_" + std::to_string(k + 1));
+        for (unsigned int k = 0; k < pore_centres.size(); ++k)
+          c.push_back("pore_curvature_" + std::to_string(k + 1));
+        for (unsigned int k = 0; k < pore_centres.size(); ++k)
+          c.push_back("pore_turning_" + std::to_string(k + 1));
+        if (!contact_planes.empty())
+          for (unsigned int k = 0; k < pore_centres.size(); ++k)
+            c.push_back("pore_contact_" + std::to_string(k + 1));
         c.push_back("mu_boundary");
       }
     if (volume_ratio_range)
@@ -216,9 +233,16 @@ namespace GelMPM
     if (pore_piece >= 0)
       {
         double     mu_mean = 0.;
-        const auto ratios  = pore_ratios(particles, mu_mean);
-        for (unsigned int k = 0; k < ratios.size(); ++k)
-          statistics.set("pore_ratio_" + std::to_string(k + 1), ratios[k]);
+        const auto shapes  = pore_shapes(particles, mu_mean);
+        for (unsigned int k = 0; k < shapes.size(); ++k)
+          {
+            const std::string number = std::to_string(k + 1);
+            statistics.set("pore_ratio_" + number, shapes[k].ratio);
+            statistics.set("pore_curvature_" + number, shapes[k].curvature);
+            statistics.set("pore_turning_" + number, shapes[k].turning * 180. / M_PI);
+            if (!contact_planes.empty())
+              statistics.set("pore_contact_" + number, shapes[k].contact_points);
+          }
         statistics.set("mu_boundary", mu_mean);
       }
     if (volume_ratio_range)
@@ -269,17 +293,22 @@ namespace GelMPM
 
 
   template <int dim>
-  std::vector<double>
-  Observables<dim>::pore_ratios(const dealii::Particles::ParticleHandler<dim> &particles,
+  std::vector<typename Observables<dim>::PoreShape>
+  Observables<dim>::pore_shapes(const dealii::Particles::ParticleHandler<dim> &particles,
                                 double                                        &mu_mean) const
   {
-    using Layout                        = PropertyLayout<dim>;
-    const unsigned int            n     = pore_centres.size();
-    const double                  large = std::numeric_limits<double>::max();
+    using Layout           = PropertyLayout<dim>;
+    const unsigned int   n = pore_centres.size();
+    const double         large = std::numeric_limits<double>::max();
     std::vector<dealii::Point<2>> lower(n, dealii::Point<2>(large, large)),
       upper(n, dealii::Point<2>(-large, -large));
-    double       mu_sum = 0.;
-    unsigned int count  = 0;
+    // Per pore: (angle of the initial position about the centre, current position); the
+    // initial angle orders the points along the boundary whatever the pore's current shape.
+    std::vector<std::vector<std::pair<double, dealii::Point<2>>>> ordered(n);
+    std::vector<double>                                           radius(n, 0.);
+    std::vector<PoreShape>                                        shapes(n);
+    double                                                        mu_sum = 0.;
+    unsigned int                                                  count  = 0;
     for (const auto &particle : particles)
       {
         const auto props = particle.get_properties();
@@ -292,21 +321,80 @@ namespace GelMPM
         for (unsigned int k = 1; k < n; ++k)
           if (X_0.distance(pore_centres[k]) < X_0.distance(pore_centres[nearest]))
             nearest = k;
-        const auto x = particle.get_location();
+        const auto       x = particle.get_location();
+        dealii::Point<2> x_2;
         for (unsigned int d = 0; d < 2; ++d)
           {
+            x_2[d]            = x[d];
             lower[nearest][d] = std::min(lower[nearest][d], x[d]);
             upper[nearest][d] = std::max(upper[nearest][d], x[d]);
           }
+        const auto offset = X_0 - pore_centres[nearest];
+        ordered[nearest].emplace_back(std::atan2(offset[1], offset[0]), x_2);
+        radius[nearest] += offset.norm();
+        for (const auto &plane : contact_planes)
+          if (plane.sign * (x[plane.axis] - plane.value) > -contact_tolerance)
+            {
+              ++shapes[nearest].contact_points;
+              break;
+            }
         mu_sum += props[Layout::mu];
         ++count;
       }
     mu_mean = count > 0 ? mu_sum / count : 0.;
-    std::vector<double> ratios(n, 0.);
     for (unsigned int k = 0; k < n; ++k)
-      if (upper[k][1] > lower[k][1])
-        ratios[k] = (upper[k][0] - lower[k][0]) / (upper[k][1] - lower[k][1]);
-    return ratios;
+      {
+        if (upper[k][1] > lower[k][1])
+          shapes[k].ratio = (upper[k][0] - lower[k][0]) / (upper[k][1] - lower[k][1]);
+        if (ordered[k].empty())
+          continue;
+        std::sort(ordered[k].begin(), ordered[k].end(), [](const auto &a, const auto &b) {
+          return a.first < b.first;
+        });
+        std::vector<dealii::Point<2>> polyline;
+        for (const auto &entry : ordered[k])
+          polyline.push_back(entry.second);
+        const double R     = radius[k] / ordered[k].size();
+        shapes[k].curvature = PoreGeometry::largest_curvature(polyline) * R;
+        shapes[k].turning   = PoreGeometry::largest_turning(polyline);
+        shapes[k].crease =
+          shapes[k].turning > crease_angle || PoreGeometry::self_intersects(polyline);
+      }
+    return shapes;
+  }
+
+
+  template <int dim>
+  std::vector<std::pair<std::string, unsigned int>>
+  Observables<dim>::new_events(const dealii::Particles::ParticleHandler<dim> &particles)
+  {
+    std::vector<std::pair<std::string, unsigned int>> events;
+    if (pore_piece < 0)
+      return events;
+    double     mu_mean = 0.;
+    const auto shapes  = pore_shapes(particles, mu_mean);
+    contact_seen.resize(shapes.size(), false);
+    crease_seen.resize(shapes.size(), false);
+    for (unsigned int k = 0; k < shapes.size(); ++k)
+      {
+        if (shapes[k].contact_points > 0 && !contact_seen[k])
+          events.emplace_back("self_contact", k + 1);
+        if (shapes[k].crease && !crease_seen[k])
+          events.emplace_back("crease", k + 1);
+        contact_seen[k] = contact_seen[k] || shapes[k].contact_points > 0;
+        crease_seen[k]  = crease_seen[k] || shapes[k].crease;
+      }
+    return events;
+  }
+
+
+  template <int dim>
+  void
+  Observables<dim>::set_contact_planes(const std::vector<ContactSettings::Plane> &planes,
+                                       const double                               tolerance)
+  {
+    contact_planes    = planes;
+    contact_tolerance = tolerance;
   }
 
 
@@ -318,7 +406,7 @@ namespace GelMPM
     if (pore_piece < 0)
       return std::nullopt;
     double mu_mean = 0.;
-    pore_ratios(particles, mu_mean);
+    pore_shapes(particles, mu_mean);
     return mu_mean;
   }
 

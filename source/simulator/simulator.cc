@@ -30,6 +30,7 @@ namespace GelMPM
     MaterialPointGenerator<dim>::declare_parameters(prm);
     DiscretisationSettings::declare_parameters(prm);
     NitscheSettings::declare_parameters(prm);
+    ContactSettings::declare_parameters(prm);
     LinearSolver::declare_parameters(prm);
     NewtonSettings::declare_parameters(prm);
     TimeStepping::declare_parameters(prm);
@@ -55,6 +56,7 @@ namespace GelMPM
     generator.parse_parameters(prm);
     discretisation.parse_parameters(prm);
     nitsche.parse_parameters(prm);
+    contact.parse_parameters(prm, dim);
     linear_solver.parse_parameters(prm);
     newton.parse_parameters(prm);
     time_stepping.parse_parameters(prm);
@@ -177,6 +179,9 @@ namespace GelMPM
                                         "n_particles"};
     for (const auto &c : stability.columns())
       columns.push_back(c);
+    if (contact.enabled())
+      for (const char *name : {"contact_points", "contact_penetration"})
+        columns.push_back(name);
     for (const auto &c : observables.columns())
       columns.push_back(c);
     statistics.open(output_settings.directory + "/statistics.csv", columns);
@@ -193,9 +198,10 @@ namespace GelMPM
           for (const char *name : {"eig_1_stable", "eig_1_unstable"})
             bracket_columns.push_back(name);
         stability_file.open(output_settings.directory + "/stability.csv", bracket_columns);
-        events_file.open(output_settings.directory + "/events.csv",
-                         {"event", "time", "t_over_tau_d", "mu_boundary"});
       }
+    if (stability.inertia || observables.boundary_chemical_potential(particles))
+      events_file.open(output_settings.directory + "/events.csv",
+                       {"event", "time", "t_over_tau_d", "mu_boundary", "pore"});
   }
 
 
@@ -224,8 +230,15 @@ namespace GelMPM
       dirichlet_errors = [&]() {
         return system->dirichlet_errors(*solution);
       };
+    if (contact.enabled() && solution != nullptr)
+      {
+        const auto [active, penetration] = system->contact_state(*solution);
+        statistics.set("contact_points", active);
+        statistics.set("contact_penetration", penetration);
+      }
     observables.evaluate(particles, material, dirichlet_errors, statistics);
     statistics.write_row();
+    record_pore_events();
   }
 
 
@@ -340,11 +353,51 @@ namespace GelMPM
     // Written as the event happens. The points still hold the state of the bracket's stable end
     // (the converged attempt is applied after the stability analysis): mu_boundary is taken there,
     // at most 'Bisection tolerance' earlier.
-    events_file.set("event", "bifurcation");
-    events_file.set("time", bracket.t_unstable * tau_d);
-    events_file.set("t_over_tau_d", bracket.t_unstable);
+    write_event("bifurcation", bracket.t_unstable, 0);
+  }
+
+
+  template <int dim>
+  void
+  Simulator<dim>::note_inexact_extrapolation(const double t_begin)
+  {
+    if (spaces->n_inexact_extrapolations() > 0 && !inexact_extrapolation_noted)
+      {
+        pcout << "  note: from t/tau_d = " << t_begin << ", " << spaces->n_inexact_extrapolations()
+              << " boundary control point(s) next to the grid's edge are extrapolated inexactly "
+                 "(the body has moved within q cells of it; doc/method.md, \"Contact\")\n";
+        inexact_extrapolation_noted = true;
+      }
+    // The initial body was checked strictly; from here on its motion cannot be helped.
+    spaces->tolerate_inexact_extrapolation();
+  }
+
+
+  template <int dim>
+  void
+  Simulator<dim>::record_pore_events()
+  {
+    for (const auto &[name, pore] : observables.new_events(particles))
+      {
+        write_event(name, time, pore);
+        pcout << "  event: " << name << " of pore " << pore << " at t/tau_d = " << time << '\n';
+      }
+  }
+
+
+  template <int dim>
+  void
+  Simulator<dim>::write_event(const std::string &name, const double t_over_tau_d, const int pore)
+  {
+    events_file.set("event", name);
+    events_file.set("time", t_over_tau_d * tau_d);
+    events_file.set("t_over_tau_d", t_over_tau_d);
     if (const auto mu = observables.boundary_chemical_potential(particles))
       events_file.set("mu_boundary", *mu);
+    if (pore > 0)
+      events_file.set("pore", pore);
+    else
+      events_file.set("pore", std::string());
     events_file.write_row();
   }
 
@@ -630,6 +683,7 @@ namespace GelMPM
             grid_output->record(spaces->u(), spaces->mu(), grid_volume_points, solution);
         }
         control->accept(report.iterations);
+        note_inexact_extrapolation(t_begin);
         // The kick is no motion to continue: the next step starts without a predictor.
         last_dt = perturb ? 0. : step_dt;
         time    = control->time();
@@ -673,6 +727,14 @@ namespace GelMPM
     pcout << "  material points: " << n_volume_points << " volume, " << n_surface_points
           << " surface; body volume " << body_volume << '\n';
     system = std::make_unique<MixedSystem<dim>>(material, boundary_conditions, nitsche, *spaces);
+    if (contact.enabled())
+      {
+        system->set_contact(contact);
+        // Touching: within 1% of a cell of the plane (points that start on a plane's edge of a
+        // quarter pore lie a quarter cell away).
+        observables.set_contact_planes(contact.planes(grid.lower, grid.upper),
+                                       0.01 * spaces->h_u());
+      }
     particle_output = std::make_unique<ParticleOutput<dim>>(output_settings.directory, material);
     mu_coefficients.assign(spaces->mu_space().n_functions(), material.mu_0());
     mu_known.assign(spaces->mu_space().n_functions(), true);

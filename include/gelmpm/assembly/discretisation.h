@@ -68,6 +68,19 @@ namespace GelMPM
     void
     reinit(const std::vector<bool> &u_cell_has_material);
 
+    /**
+     * From now on, accept boundary control points whose extrapolation is not exact because it
+     * crosses the first or last q cells of the grid (ExtendedBSplineSpace). The initial body is
+     * checked strictly: there a larger grid is the fix. Once the body has moved next to the
+     * grid's edge, as a pore closing on a plane of symmetry does, stopping the run helps nobody.
+     */
+    void
+    tolerate_inexact_extrapolation();
+
+    /** Control points of this step's extended spaces extrapolated inexactly. */
+    unsigned int
+    n_inexact_extrapolations() const;
+
     const BSplineSpace<dim> &
     u_space() const;
     const BSplineSpace<dim> &
@@ -117,6 +130,7 @@ namespace GelMPM
     std::unique_ptr<ExtendedBSplineSpace<dim>> u_;
     std::unique_ptr<ExtendedBSplineSpace<dim>> mu_;
     std::vector<bool>                          u_cell_has_material_;
+    bool                                       inexact_extrapolation_tolerated = false;
   };
 } // namespace GelMPM
 

@@ -1,6 +1,7 @@
 #ifndef gelmpm_assembly_mixed_system_h
 #define gelmpm_assembly_mixed_system_h
 
+#include <gelmpm/assembly/contact_settings.h>
 #include <gelmpm/assembly/discretisation.h>
 #include <gelmpm/assembly/nitsche_settings.h>
 #include <gelmpm/material/flory_rehner_gel.h>
@@ -156,6 +157,20 @@ namespace GelMPM
     dealii::FullMatrix<double>
     mu_mass_matrix() const;
 
+    /**
+     * Keep the free surfaces behind the planes of symmetry of @p settings (the "Contact"
+     * section); off until called.
+     */
+    void
+    set_contact(const ContactSettings &settings);
+
+    /**
+     * The contact state of @p solution: the number of surface points on which the contact
+     * condition is active, and the largest penetration max(g, 0) (0 without contact).
+     */
+    std::pair<unsigned int, double>
+    contact_state(const dealii::Vector<double> &solution) const;
+
     /** Number of material points of the last setup(), and how many take part in assembly. */
     unsigned int
     n_points() const;
@@ -251,10 +266,33 @@ namespace GelMPM
                       ScratchData       &scratch,
                       CopyData          &copy) const;
 
+    /**
+     * The symmetric Nitsche terms of a displacement condition Pi (u - ubar) = 0 with the
+     * violation @p g = Pi (u - ubar) and penalty @p beta at a surface point (prescribed pieces
+     * and active contact).
+     */
+    void
+    add_displacement_nitsche(const PointRecord            &point,
+                             const dealii::Tensor<2, dim> &Pi,
+                             const dealii::Tensor<1, dim> &g,
+                             const double                  beta,
+                             const bool                    with_matrix,
+                             ScratchData                  &scratch,
+                             CopyData                     &copy) const;
+
+    /** The contact terms of a surface point of a free piece (ContactSettings). */
+    void
+    add_plane_contact(const PointRecord &point,
+                      const bool         with_matrix,
+                      ScratchData       &scratch,
+                      CopyData          &copy) const;
+
     const FloryRehnerGel<dim> &material;
     BoundaryConditions<dim>   &boundary_conditions;
     const NitscheSettings     &nitsche;
     DiscreteSpaces<dim>       &spaces_;
+    ContactSettings                     contact;
+    std::vector<ContactSettings::Plane> contact_planes;
 
     std::vector<PointRecord>                                                         points;
     std::vector<typename dealii::Particles::ParticleHandler<dim>::particle_iterator> particles;

@@ -62,12 +62,23 @@ namespace GelMPM
   public:
     /**
      * @param cell_has_material One flag per cell of @p space.
+     * @param exact_extrapolation_required Whether a boundary control point whose extrapolation
+     * crosses the first or last q cells of the grid (where the B-spline coefficients of a
+     * polynomial are not polynomials of the index, so the extrapolation is not exact) is an
+     * error. A run whose body has moved next to the grid's edge (a pore closing on a plane of
+     * symmetry) accepts them: counted by n_inexact_extrapolations().
      * Throws std::runtime_error when some boundary control point has no block of interior control
-     * points (the body is thinner than q+1 interior cells somewhere).
+     * points (the body is thinner than q+1 interior cells somewhere), or, if required, when an
+     * extrapolation is not exact.
      */
     ExtendedBSplineSpace(const BSplineSpace<dim> &space,
                          const std::vector<bool> &cell_has_material,
-                         const bool               use_extension = true);
+                         const bool               use_extension                = true,
+                         const bool               exact_extrapolation_required = true);
+
+    /** Boundary control points extrapolated inexactly (0 unless allowed by the constructor). */
+    unsigned int
+    n_inexact_extrapolations() const;
 
     const BSplineSpace<dim> &
     space() const;
@@ -117,6 +128,8 @@ namespace GelMPM
 
     const BSplineSpace<dim>                                  &space_;
     bool                                                      use_extension;
+    bool                                                      exact_extrapolation_required;
+    unsigned int                                              n_inexact = 0;
     std::vector<CellKind>                                     cell_kinds;
     std::vector<ControlPointKind>                             point_kinds;
     std::vector<unsigned int>                                 dof_index;

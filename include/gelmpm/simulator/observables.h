@@ -1,6 +1,7 @@
 #ifndef gelmpm_simulator_observables_h
 #define gelmpm_simulator_observables_h
 
+#include <gelmpm/assembly/contact_settings.h>
 #include <gelmpm/io/statistics_file.h>
 #include <gelmpm/material/flory_rehner_gel.h>
 
@@ -8,6 +9,7 @@
 #include <deal.II/particles/particle_handler.h>
 
 #include <array>
+#include <cmath>
 #include <functional>
 #include <optional>
 #include <string>
@@ -27,10 +29,15 @@ namespace GelMPM
    * - Centre offset (columns centre_offset_x, _y, (_z), centre_distance): with "Centre offset
    *   pieces = bottom, top", the vector between the mean positions of the two pieces' surface
    *   points minus its initial value, and its length (paper §4.3, Fig. 10a).
-   * - Pore ratios (columns pore_ratio_1 ... pore_ratio_N, mu_boundary): with "Pore piece" and
-   *   "Pore centres", each pore's extent along x over its extent along y, from the current
-   *   positions of the piece's surface points nearest (initially) to its centre, and the mean mu
-   *   over the piece (paper §4.4: the holes turning into alternating ellipses).
+   * - Pore shapes (columns pore_ratio_1 ... pore_ratio_N, pore_curvature_1 ... _N,
+   *   pore_turning_1 ... _N, (pore_contact_1 ... _N), mu_boundary): with "Pore piece" and "Pore centres", each pore's
+   *   extent along x over its extent along y, from the current positions of the piece's surface
+   *   points nearest (initially) to its centre; the largest curvature of the polyline of these
+   *   points, ordered by their initial angle about the centre, times the pore's initial radius
+   *   (PoreGeometry, Fig. 12b), and its largest turning angle in degrees (pore_turning_k, a
+   *   crease beyond 'Crease angle'); with contact planes, the number of its points on a plane; and the
+   *   mean mu over the piece (paper §4.4: the holes turning into alternating ellipses, closing
+   *   and creasing).
    * - Volume ratio range (columns J_min, J_mean, J_max): the extremes and the V_0-weighted mean of
    *   J (dry state to current) over the volume points; the spread measures how far a state is
    *   from homogeneous (patch tests).
@@ -73,7 +80,32 @@ namespace GelMPM
     std::optional<double>
     boundary_chemical_potential(const dealii::Particles::ParticleHandler<dim> &particles) const;
 
+    /**
+     * The contact planes of the scene (ContactSettings) and the distance @p tolerance within
+     * which a surface point counts as touching one; adds the pore_contact_k columns.
+     */
+    void
+    set_contact_planes(const std::vector<ContactSettings::Plane> &planes, const double tolerance);
+
+    /**
+     * With 'Pore piece': the events of the pores that happened since the last call, as (name,
+     * pore number from 1): 'self_contact' when a pore first touches a contact plane, 'crease' when
+     * its surface polyline first turns by more than 'Crease angle' at a point or crosses itself.
+     */
+    std::vector<std::pair<std::string, unsigned int>>
+    new_events(const dealii::Particles::ParticleHandler<dim> &particles);
+
   private:
+    /** What pore_shapes() measures of one pore. */
+    struct PoreShape
+    {
+      double       ratio          = 0.;
+      double       curvature      = 0.;
+      double       turning        = 0.; // radians
+      bool         crease         = false;
+      unsigned int contact_points = 0;
+    };
+
     /** The indices of the two pieces named in @p names (entry @p entry); {-1, -1} if empty. */
     static std::array<int, 2>
     piece_pair(const std::vector<std::string> &names,
@@ -84,10 +116,10 @@ namespace GelMPM
     std::array<dealii::Point<dim>, 4>
     piece_means(const dealii::Particles::ParticleHandler<dim> &particles,
                 const std::array<int, 2>                      &pair) const;
-    /** Per pore, extent along x over extent along y (0 for a pore without points); the mean mu
-     * over the pore piece's points into @p mu_mean. */
-    std::vector<double>
-    pore_ratios(const dealii::Particles::ParticleHandler<dim> &particles, double &mu_mean) const;
+    /** Per pore, its shape (ratio 0 for a pore without points); the mean mu over the pore
+     * piece's points into @p mu_mean. */
+    std::vector<PoreShape>
+    pore_shapes(const dealii::Particles::ParticleHandler<dim> &particles, double &mu_mean) const;
     /** (min, V_0-weighted mean, max) of J over the volume points. */
     std::array<double, 3>
     volume_ratio_statistics(const dealii::Particles::ParticleHandler<dim> &particles,
@@ -100,6 +132,10 @@ namespace GelMPM
     std::array<int, 2>              offset_pieces    = {{-1, -1}};
     int                             pore_piece       = -1;
     std::vector<dealii::Point<dim>> pore_centres;
+    std::vector<ContactSettings::Plane> contact_planes;
+    double                              contact_tolerance = 0.;
+    std::vector<bool>                   contact_seen, crease_seen;
+    double                              crease_angle = M_PI / 3.;
     unsigned int                    thickness_direction = 1;
     bool                            volume_ratio_range  = false;
     bool                            mu_oscillation      = false;

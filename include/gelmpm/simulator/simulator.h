@@ -72,6 +72,21 @@ namespace GelMPM
     int
     run();
 
+    /**
+     * Say once when the step that began at @p t_begin extrapolated control points inexactly next
+     * to the grid's edge; accept such control points from the first accepted step on.
+     */
+    void
+    note_inexact_extrapolation(const double t_begin);
+
+    /** The pores' self-contact and crease events since the last step, into events.csv. */
+    void
+    record_pore_events();
+
+    /** One row of events.csv: @p name at @p t_over_tau_d, of pore @p pore (0: none). */
+    void
+    write_event(const std::string &name, const double t_over_tau_d, const int pore);
+
   private:
     void
     print_header();
@@ -142,6 +157,7 @@ namespace GelMPM
     MaterialPointGenerator<dim> generator;
     DiscretisationSettings      discretisation;
     NitscheSettings             nitsche;
+    ContactSettings             contact;
     LinearSolver                linear_solver;
     NewtonSettings              newton;
     TimeStepping                time_stepping;
@@ -165,9 +181,10 @@ namespace GelMPM
     std::vector<unsigned int>               grid_volume_points;    // per cell, start of the step
     StatisticsFile                          statistics;
     StatisticsFile                          stability_file; // stability.csv, with the inertia
-    StatisticsFile                          events_file;    // events.csv, with the inertia
+    StatisticsFile                          events_file;    // events.csv (inertia or pores)
     std::unique_ptr<StepControl>            control;
     bool                                    announced_bracketing = false;
+    bool                                    inexact_extrapolation_noted = false;
     Inertia                                 last_stable_inertia;
     double                                  last_eigenvalue = 0.;
     std::vector<double>                     mu_coefficients; // per mu control point

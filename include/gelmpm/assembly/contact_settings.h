@@ -1,0 +1,71 @@
+#ifndef gelmpm_assembly_contact_settings_h
+#define gelmpm_assembly_contact_settings_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <string>
+#include <vector>
+
+namespace GelMPM
+{
+  /**
+   * @brief The "Contact" section: keeps free surfaces from crossing planes of symmetry.
+   *
+   * A scene that models one cell of a periodic or mirror-symmetric structure (§4.4: one cell of
+   * a lattice of holes) has the cell's edges as planes of reflection. Material that reaches such
+   * a plane meets its mirror image there: the two sides of a closing pore touch. The condition is
+   * unilateral, g = (x - x_plane).n <= 0 with n the plane's outward normal, imposed on every
+   * surface point of a piece whose displacement is free:
+   * - penalty: beta_c max(g, 0) n on the points that penetrate (beta_c = gamma_c G / h_u); the
+   *   penetration of a loaded contact is of order (normal stress)/beta_c;
+   * - nitsche: the symmetric Nitsche terms of a roller on the points where beta_c g - sigma_n > 0
+   *   (sigma_n = n.(P_n N) the normal traction, negative in compression), the active set of
+   *   Nitsche's method for contact; consistent, so the penetration vanishes with the mesh.
+   * Either way the active set is that of the current Newton iterate (semi-smooth Newton).
+   */
+  struct ContactSettings
+  {
+    enum class Method
+    {
+      none,
+      penalty,
+      nitsche
+    };
+
+    /** One contact plane: x[axis] = value, outward normal sign * e_axis. */
+    struct Plane
+    {
+      unsigned int axis;
+      double       value;
+      double       sign;
+    };
+
+    Method method = Method::none;
+    /** gamma_c: beta_c = gamma_c G / h_u. */
+    double penalty = 1000.;
+    /** The sides of the background grid that are contact planes (left, right, bottom, top,
+     * front, back). */
+    std::vector<std::string> sides;
+
+    bool
+    enabled() const
+    {
+      return method != Method::none;
+    }
+
+    /** The contact planes on the grid [@p lower, @p upper]. */
+    template <int dim>
+    std::vector<Plane>
+    planes(const dealii::Point<dim> &lower, const dealii::Point<dim> &upper) const;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    /** Read the section; @p dim rejects sides a 2D grid does not have. */
+    void
+    parse_parameters(dealii::ParameterHandler &prm, const unsigned int dim);
+  };
+} // namespace GelMPM
+
+#endif

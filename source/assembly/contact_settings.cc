@@ -1,0 +1,92 @@
+#include <gelmpm/assembly/contact_settings.h>
+#include <gelmpm/core/input_error.h>
+
+#include <deal.II/base/utilities.h>
+
+#include <algorithm>
+
+namespace GelMPM
+{
+  namespace
+  {
+    const std::vector<std::string> side_names = {"left", "right", "bottom", "top", "back", "front"};
+  }
+
+
+  void
+  ContactSettings::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    using namespace dealii;
+    prm.enter_subsection("Contact");
+    prm.declare_entry("Method",
+                      "none",
+                      Patterns::Selection("none|penalty|nitsche"),
+                      "Contact of free surfaces with the planes of symmetry listed in 'Grid "
+                      "sides' (doc/method.md, \"Contact\"): none; penalty (beta_c max(g, 0) on "
+                      "penetrating surface points); nitsche (symmetric Nitsche terms of a roller "
+                      "on the active points, consistent).");
+    prm.declare_entry("Grid sides",
+                      "",
+                      Patterns::Anything(),
+                      "The sides of the background grid that are planes of symmetry, as a "
+                      "comma-separated list of left (lower x), right (upper x), bottom (lower y), "
+                      "top (upper y), back (lower z), front (upper z), or 'all'. Surface points "
+                      "of pieces with a free displacement may touch them but not cross.");
+    prm.declare_entry("Penalty",
+                      "1000",
+                      Patterns::Double(0.),
+                      "gamma_c: the contact penalty is beta_c = gamma_c G / h_u (both methods).");
+    prm.leave_subsection();
+  }
+
+
+  void
+  ContactSettings::parse_parameters(dealii::ParameterHandler &prm, const unsigned int dim)
+  {
+    prm.enter_subsection("Contact");
+    const std::string name = prm.get("Method");
+    method  = name == "penalty" ? Method::penalty : name == "nitsche" ? Method::nitsche :
+                                                                         Method::none;
+    penalty = prm.get_double("Penalty");
+    sides   = dealii::Utilities::split_string_list(prm.get("Grid sides"), ',');
+    prm.leave_subsection();
+
+    const std::vector<std::string> allowed(side_names.begin(), side_names.begin() + 2 * dim);
+    if (sides.size() == 1 && sides[0] == "all")
+      sides = allowed;
+    for (const auto &side : sides)
+      require(std::find(allowed.begin(), allowed.end(), side) != allowed.end(),
+              "Contact/Grid sides",
+              "names '" + side + "', which is not a side of a " + std::to_string(dim) + "D grid",
+              dim == 2 ? "list some of left, right, bottom, top, or write 'all'" :
+                         "list some of left, right, bottom, top, back, front, or write 'all'");
+    require(penalty > 0., "Contact/Penalty", "must be positive", "give gamma_c > 0 (e.g. 1000)");
+    require(method == Method::none || !sides.empty(),
+            "Contact/Grid sides",
+            "is empty while 'Contact/Method' is " + name,
+            "name the grid sides that are planes of symmetry, e.g. 'all'");
+  }
+
+
+  template <int dim>
+  std::vector<ContactSettings::Plane>
+  ContactSettings::planes(const dealii::Point<dim> &lower, const dealii::Point<dim> &upper) const
+  {
+    std::vector<Plane> result;
+    for (const auto &side : sides)
+      {
+        const auto         index = std::find(side_names.begin(), side_names.end(), side) -
+                           side_names.begin();
+        const unsigned int axis  = index / 2;
+        const bool         high  = index % 2 == 1;
+        result.push_back({axis, high ? upper[axis] : lower[axis], high ? 1. : -1.});
+      }
+    return result;
+  }
+
+
+  template std::vector<ContactSettings::Plane>
+  ContactSettings::planes<2>(const dealii::Point<2> &, const dealii::Point<2> &) const;
+  template std::vector<ContactSettings::Plane>
+  ContactSettings::planes<3>(const dealii::Point<3> &, const dealii::Point<3> &) const;
+} // namespace GelMPM
