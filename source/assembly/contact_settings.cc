@@ -45,10 +45,11 @@ namespace GelMPM
   {
     prm.enter_subsection("Contact");
     const std::string name = prm.get("Method");
-    method  = name == "penalty" ? Method::penalty : name == "nitsche" ? Method::nitsche :
-                                                                         Method::none;
-    penalty = prm.get_double("Penalty");
-    sides   = dealii::Utilities::split_string_list(prm.get("Grid sides"), ',');
+    method                 = name == "penalty"   ? Method::penalty
+                             : name == "nitsche" ? Method::nitsche
+                                                 : Method::none;
+    penalty                = prm.get_double("Penalty");
+    sides                  = dealii::Utilities::split_string_list(prm.get("Grid sides"), ',');
     prm.leave_subsection();
 
     const std::vector<std::string> allowed(side_names.begin(), side_names.begin() + 2 * dim);
@@ -58,8 +59,8 @@ namespace GelMPM
       require(std::find(allowed.begin(), allowed.end(), side) != allowed.end(),
               "Contact/Grid sides",
               "names '" + side + "', which is not a side of a " + std::to_string(dim) + "D grid",
-              dim == 2 ? "list some of left, right, bottom, top, or write 'all'" :
-                         "list some of left, right, bottom, top, back, front, or write 'all'");
+              dim == 2 ? "list some of left, right, bottom, top, or write 'all'"
+                       : "list some of left, right, bottom, top, back, front, or write 'all'");
     require(penalty > 0., "Contact/Penalty", "must be positive", "give gamma_c > 0 (e.g. 1000)");
     require(method == Method::none || !sides.empty(),
             "Contact/Grid sides",
@@ -75,10 +76,10 @@ namespace GelMPM
     std::vector<Plane> result;
     for (const auto &side : sides)
       {
-        const auto         index = std::find(side_names.begin(), side_names.end(), side) -
-                           side_names.begin();
-        const unsigned int axis  = index / 2;
-        const bool         high  = index % 2 == 1;
+        const auto index =
+          std::find(side_names.begin(), side_names.end(), side) - side_names.begin();
+        const unsigned int axis = index / 2;
+        const bool         high = index % 2 == 1;
         result.push_back({axis, high ? upper[axis] : lower[axis], high ? 1. : -1.});
       }
     return result;

@@ -583,22 +583,22 @@ namespace GelMPM
 
   template <int dim>
   void
-  MixedSystem<dim>::add_displacement_nitsche(const PointRecord          &point,
-                                             const Tensor<2, dim>       &Pi,
-                                             const Tensor<1, dim>       &g,
-                                             const double                beta,
-                                             const bool                  with_matrix,
-                                             ScratchData                &s,
-                                             CopyData                   &copy) const
+  MixedSystem<dim>::add_displacement_nitsche(const PointRecord    &point,
+                                             const Tensor<2, dim> &Pi,
+                                             const Tensor<1, dim> &g,
+                                             const double          beta,
+                                             const bool            with_matrix,
+                                             ScratchData          &s,
+                                             CopyData             &copy) const
   {
-    const double       area = point.measure;
-    const auto        &N    = point.normal;
-    const double       sym  = nitsche.symmetry;
-    const unsigned int mu0  = dim * s.n_u;
-    auto              &K    = copy.matrix;
-    auto              &r    = copy.residual;
-    const auto            state = material.incremental(s.delta_F, s.mu_at_point, point.F_p);
-            const Tensor<2, dim>  W     = outer(g, N);
+    const double         area  = point.measure;
+    const auto          &N     = point.normal;
+    const double         sym   = nitsche.symmetry;
+    const unsigned int   mu0   = dim * s.n_u;
+    auto                &K     = copy.matrix;
+    auto                &r     = copy.residual;
+    const auto           state = material.incremental(s.delta_F, s.mu_at_point, point.F_p);
+    const Tensor<2, dim> W     = outer(g, N);
     const Tensor<1, dim> Pi_PN = Pi * (state.P_n * N);
     Tensor<2, dim>       WA; // [k][L] = W_iJ A_iJkL
     for (unsigned int k = 0; k < dim; ++k)
@@ -635,12 +635,10 @@ namespace GelMPM
         const double           W_norm = W.norm();
         if (W_norm > 0.)
           {
-            const double eps = 1e-5 / W_norm;
-            const auto   plus =
-              material.incremental(s.delta_F + eps * W, s.mu_at_point, point.F_p);
-            const auto minus =
-              material.incremental(s.delta_F - eps * W, s.mu_at_point, point.F_p);
-            H = (plus.A_n - minus.A_n) / (2. * eps);
+            const double eps  = 1e-5 / W_norm;
+            const auto   plus = material.incremental(s.delta_F + eps * W, s.mu_at_point, point.F_p);
+            const auto minus  = material.incremental(s.delta_F - eps * W, s.mu_at_point, point.F_p);
+            H                 = (plus.A_n - minus.A_n) / (2. * eps);
             // P_n is affine in mu, so this difference is exact.
             const auto mu_plus = material.incremental(s.delta_F, s.mu_at_point + 1., point.F_p);
             for (unsigned int k = 0; k < dim; ++k)

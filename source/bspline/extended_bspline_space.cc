@@ -244,15 +244,15 @@ namespace GelMPM
                 break;
               }
             throw std::runtime_error(
-                "extended B-splines (degree " + std::to_string(q) + ", " +
-                std::to_string(space_.n_cells_per_direction()[d]) + " cells in direction " +
-                std::to_string(d) +
-                "): a boundary control point must be extrapolated across the first or last " +
-                std::to_string(q) +
-                " cells of the grid, where extrapolation is not exact; either the body's boundary "
-                "cuts cells that close to the grid edge (enlarge the grid so that it reaches at "
-                "least q cells beyond the body, or let the body end on the edge) or the body is "
-                "only a few cells thick there (refine the grid)");
+              "extended B-splines (degree " + std::to_string(q) + ", " +
+              std::to_string(space_.n_cells_per_direction()[d]) + " cells in direction " +
+              std::to_string(d) +
+              "): a boundary control point must be extrapolated across the first or last " +
+              std::to_string(q) +
+              " cells of the grid, where extrapolation is not exact; either the body's boundary "
+              "cuts cells that close to the grid edge (enlarge the grid so that it reaches at "
+              "least q cells beyond the body, or let the body end on the edge) or the body is "
+              "only a few cells thick there (refine the grid)");
           }
 
         // Tensor-product Lagrange extrapolation weights, eq. (54).

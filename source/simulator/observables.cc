@@ -297,9 +297,9 @@ namespace GelMPM
   Observables<dim>::pore_shapes(const dealii::Particles::ParticleHandler<dim> &particles,
                                 double                                        &mu_mean) const
   {
-    using Layout           = PropertyLayout<dim>;
-    const unsigned int   n = pore_centres.size();
-    const double         large = std::numeric_limits<double>::max();
+    using Layout                        = PropertyLayout<dim>;
+    const unsigned int            n     = pore_centres.size();
+    const double                  large = std::numeric_limits<double>::max();
     std::vector<dealii::Point<2>> lower(n, dealii::Point<2>(large, large)),
       upper(n, dealii::Point<2>(-large, -large));
     // Per pore: (angle of the initial position about the centre, current position); the
@@ -354,7 +354,7 @@ namespace GelMPM
         std::vector<dealii::Point<2>> polyline;
         for (const auto &entry : ordered[k])
           polyline.push_back(entry.second);
-        const double R     = radius[k] / ordered[k].size();
+        const double R      = radius[k] / ordered[k].size();
         shapes[k].curvature = PoreGeometry::largest_curvature(polyline) * R;
         shapes[k].turning   = PoreGeometry::largest_turning(polyline);
         shapes[k].crease =

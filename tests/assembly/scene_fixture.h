@@ -37,7 +37,8 @@ struct SceneFixture
   std::unique_ptr<GelMPM::DiscreteSpaces<dim>> spaces;
   std::unique_ptr<GelMPM::MixedSystem<dim>>    system;
 
-  explicit SceneFixture(const std::string &variant = "symmetric")
+  /** @p overrides: parameter text read after the scene's, to change some of its entries. */
+  explicit SceneFixture(const std::string &variant = "symmetric", const std::string &overrides = "")
   {
     const std::vector<std::string> pieces = {"bottom", "left", "right", "top"};
     dealii::ParameterHandler       prm;
@@ -103,7 +104,7 @@ struct SceneFixture
             set Function expression = -0.1 + 0.05*x
           end
         end
-      end)");
+      end)" + overrides);
     material.parse_parameters(prm);
     grid.parse_parameters(prm);
     geometry.parse_parameters(prm);

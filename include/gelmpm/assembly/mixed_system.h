@@ -287,10 +287,10 @@ namespace GelMPM
                       ScratchData       &scratch,
                       CopyData          &copy) const;
 
-    const FloryRehnerGel<dim> &material;
-    BoundaryConditions<dim>   &boundary_conditions;
-    const NitscheSettings     &nitsche;
-    DiscreteSpaces<dim>       &spaces_;
+    const FloryRehnerGel<dim>          &material;
+    BoundaryConditions<dim>            &boundary_conditions;
+    const NitscheSettings              &nitsche;
+    DiscreteSpaces<dim>                &spaces_;
     ContactSettings                     contact;
     std::vector<ContactSettings::Plane> contact_planes;
 

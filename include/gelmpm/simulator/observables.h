@@ -30,13 +30,13 @@ namespace GelMPM
    *   pieces = bottom, top", the vector between the mean positions of the two pieces' surface
    *   points minus its initial value, and its length (paper §4.3, Fig. 10a).
    * - Pore shapes (columns pore_ratio_1 ... pore_ratio_N, pore_curvature_1 ... _N,
-   *   pore_turning_1 ... _N, (pore_contact_1 ... _N), mu_boundary): with "Pore piece" and "Pore centres", each pore's
-   *   extent along x over its extent along y, from the current positions of the piece's surface
-   *   points nearest (initially) to its centre; the largest curvature of the polyline of these
-   *   points, ordered by their initial angle about the centre, times the pore's initial radius
-   *   (PoreGeometry, Fig. 12b), and its largest turning angle in degrees (pore_turning_k, a
-   *   crease beyond 'Crease angle'); with contact planes, the number of its points on a plane; and the
-   *   mean mu over the piece (paper §4.4: the holes turning into alternating ellipses, closing
+   *   pore_turning_1 ... _N, (pore_contact_1 ... _N), mu_boundary): with "Pore piece" and "Pore
+   * centres", each pore's extent along x over its extent along y, from the current positions of the
+   * piece's surface points nearest (initially) to its centre; the largest curvature of the polyline
+   * of these points, ordered by their initial angle about the centre, times the pore's initial
+   * radius (PoreGeometry, Fig. 12b), and its largest turning angle in degrees (pore_turning_k, a
+   *   crease beyond 'Crease angle'); with contact planes, the number of its points on a plane; and
+   * the mean mu over the piece (paper §4.4: the holes turning into alternating ellipses, closing
    *   and creasing).
    * - Volume ratio range (columns J_min, J_mean, J_max): the extremes and the V_0-weighted mean of
    *   J (dry state to current) over the volume points; the spread measures how far a state is
@@ -128,18 +128,18 @@ namespace GelMPM
     double
     chemical_potential_oscillation(const dealii::Particles::ParticleHandler<dim> &particles) const;
 
-    std::array<int, 2>              thickness_pieces = {{-1, -1}};
-    std::array<int, 2>              offset_pieces    = {{-1, -1}};
-    int                             pore_piece       = -1;
-    std::vector<dealii::Point<dim>> pore_centres;
+    std::array<int, 2>                  thickness_pieces = {{-1, -1}};
+    std::array<int, 2>                  offset_pieces    = {{-1, -1}};
+    int                                 pore_piece       = -1;
+    std::vector<dealii::Point<dim>>     pore_centres;
     std::vector<ContactSettings::Plane> contact_planes;
     double                              contact_tolerance = 0.;
     std::vector<bool>                   contact_seen, crease_seen;
-    double                              crease_angle = M_PI / 3.;
-    unsigned int                    thickness_direction = 1;
-    bool                            volume_ratio_range  = false;
-    bool                            mu_oscillation      = false;
-    bool                            boundary_error      = false;
+    double                              crease_angle        = M_PI / 3.;
+    unsigned int                        thickness_direction = 1;
+    bool                                volume_ratio_range  = false;
+    bool                                mu_oscillation      = false;
+    bool                                boundary_error      = false;
   };
 } // namespace GelMPM
 

@@ -183,7 +183,7 @@ namespace GelMPM
     StatisticsFile                          stability_file; // stability.csv, with the inertia
     StatisticsFile                          events_file;    // events.csv (inertia or pores)
     std::unique_ptr<StepControl>            control;
-    bool                                    announced_bracketing = false;
+    bool                                    announced_bracketing        = false;
     bool                                    inexact_extrapolation_noted = false;
     Inertia                                 last_stable_inertia;
     double                                  last_eigenvalue = 0.;
