@@ -15,6 +15,50 @@ namespace GelMPM
   {
     const std::string list_hint =
       "'gelmpm --print-parameters' lists every section and entry with its pattern and documentation";
+
+    // Editors on Windows start UTF-8 files with one; deal.II would see it as part of line 1.
+    const std::string byte_order_mark = "\xEF\xBB\xBF";
+
+    /** The file named by an 'include' line of a parameter file (as deal.II reads it), or "". */
+    std::string
+    included_file(std::string line)
+    {
+      line = dealii::Utilities::trim(line.substr(0, line.find('#')));
+      if (line.rfind(byte_order_mark, 0) == 0)
+        line.erase(0, byte_order_mark.size());
+      if (line.rfind("include ", 0) != 0 && line.rfind("INCLUDE ", 0) != 0)
+        return "";
+      return dealii::Utilities::trim(line.substr(8));
+    }
+
+    /**
+     * deal.II follows 'include' lines without a limit: a file that includes itself, directly or
+     * through others, recurses until the stack overflows.
+     */
+    void
+    check_includes(const std::string &file_name, std::vector<std::string> &chain)
+    {
+      std::error_code   error;
+      const std::string path = std::filesystem::weakly_canonical(file_name, error).string();
+      for (const auto &outer : chain)
+        if (outer == path)
+          throw InputError("",
+                           "the scene file includes '" + file_name +
+                             "' inside itself (an 'include' cycle)",
+                           "remove the 'include " + file_name + "' line that closes the cycle");
+      if (chain.size() >= 32)
+        throw InputError("",
+                         "the scene file nests 'include' lines more than 32 deep",
+                         "include fewer files");
+      std::ifstream in(file_name);
+      if (!in || std::filesystem::is_directory(file_name))
+        return; // deal.II reports a missing include file with its line number
+      chain.push_back(path);
+      for (std::string line; std::getline(in, line);)
+        if (const auto included = included_file(line); !included.empty())
+          check_includes(included, chain);
+      chain.pop_back();
+    }
   } // namespace
 
 
@@ -124,7 +168,8 @@ namespace GelMPM
            "                               default (with a scene file: with that scene's values)\n"
            "  --help                       this text\n"
            "\n"
-           "Exit status: 0 success, 1 the run failed (e.g. no convergence), 2 bad input.\n";
+           "Exit status: 0 success, 1 the run failed (e.g. no convergence, disk full), 2 bad\n"
+           "input (nothing is written), 130/143 stopped by SIGINT/SIGTERM after a step.\n";
   }
 
 
@@ -184,10 +229,18 @@ namespace GelMPM
               "'" + file_name + "' is a directory, not a scene file",
               "give a scene file, e.g. prm/constrained_swelling.prm");
     }
+    std::vector<std::string> chain;
+    check_includes(file_name, chain);
     try
       {
-        std::ifstream in(file_name);
-        prm.parse_input(in, file_name, "", skip_undefined);
+        std::ifstream     file(file_name);
+        std::stringstream in;
+        in << file.rdbuf();
+        std::string text = in.str();
+        if (text.rfind(byte_order_mark, 0) == 0)
+          text.erase(0, byte_order_mark.size());
+        std::istringstream stripped(text);
+        prm.parse_input(stripped, file_name, "", skip_undefined);
       }
     catch (const dealii::ExceptionBase &e)
       {
