@@ -73,7 +73,9 @@ namespace GelMPM
       "Flory-Huggins chi",
       "0.1",
       Patterns::Double(),
-      "chi, the Flory-Huggins polymer-solvent interaction parameter (Table 1: 0.1).");
+      "chi, the Flory-Huggins polymer-solvent interaction parameter (Table 1: 0.1). Accepted: "
+      "0 <= chi <= chi_max, where with 'Initial state = stretch' chi_max makes the initial "
+      "state the swollen equilibrium in pure solvent (mu_0 = 0).");
     prm.declare_entry("N nu",
                       "7.299e-3",
                       Patterns::Double(),

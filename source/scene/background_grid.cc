@@ -24,7 +24,8 @@ namespace GelMPM
                       dim == 2 ? "1, 1" : "1, 1, 1",
                       Patterns::List(Patterns::Double(), dim, dim),
                       "Upper corner of the background grid. The body must stay inside the grid for "
-                      "the whole run (it swells).");
+                      "the whole run (it swells): a face that reaches the edge of the grid stops "
+                      "the run unless a roller or a fixed condition holds it there.");
     prm.declare_entry("Cells",
                       dim == 2 ? "10, 10" : "10, 10, 10",
                       Patterns::List(Patterns::Integer(1), dim, dim),
