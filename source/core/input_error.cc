@@ -40,7 +40,7 @@ namespace GelMPM
     compose(const std::string &entry, const std::string &problem_text, const std::string &fix_text)
     {
       const std::string problem = shorten(problem_text), fix = shorten(fix_text);
-      std::string       message = entry.empty() ? problem : ("'" + entry + "' " + problem);
+      std::string       message = entry.empty() ? problem : ("'" + shorten(entry) + "' " + problem);
       if (!fix.empty())
         message += ". Fix: " + fix;
       return message;

@@ -114,19 +114,27 @@ namespace GelMPM
   void
   Simulator<dim>::check_boundary_values()
   {
-    // A few surface points of each piece and times over the run: enough to catch an expression
-    // that is not finite (1/0, log(-1)) before the run cuts its steps without saying why.
-    std::vector<std::vector<dealii::Point<dim>>> samples(boundary_conditions.n_pieces());
+    // Up to 64 surface points spread over each piece and times over the run: enough to catch
+    // an expression that is not finite (1/0, log(-1)) before the run cuts its steps without
+    // saying why.
+    std::vector<std::vector<dealii::Point<dim>>> points(boundary_conditions.n_pieces());
     for (const auto &p : particles)
       {
         const auto props = p.get_properties();
         const int  piece = static_cast<int>(std::lround(props[PropertyLayout<dim>::piece]));
-        if (piece < 0 || samples[piece].size() >= 64)
+        if (piece < 0)
           continue;
         dealii::Point<dim> x;
         for (unsigned int d = 0; d < dim; ++d)
           x[d] = props[PropertyLayout<dim>::position_0 + d];
-        samples[piece].push_back(x);
+        points[piece].push_back(x);
+      }
+    std::vector<std::vector<dealii::Point<dim>>> samples(points.size());
+    for (unsigned int i = 0; i < points.size(); ++i)
+      {
+        const std::size_t stride = points[i].size() / 64 + 1;
+        for (std::size_t k = 0; k < points[i].size(); k += stride)
+          samples[i].push_back(points[i][k]);
       }
     std::vector<double> times;
     for (unsigned int k = 0; k <= 8; ++k)
@@ -213,10 +221,9 @@ namespace GelMPM
   {
     // Only the names this program writes: a particles-00042.vtu of a longer earlier run would
     // otherwise sit next to this run's series as if it belonged to it.
-    static const std::regex ours(
-      "(particles|grid|mode)(-[0-9]{5}\\.vtu|\\.pvd)(\\.tmp)?|"
-      "(statistics|stability|events)\\.csv|parameters\\.prm|original\\.prm");
-    std::error_code error;
+    const std::regex ours("(particles|grid|mode)(-[0-9]{5}\\.vtu|\\.pvd)(\\.tmp)?|"
+                          "(statistics|stability|events)\\.csv|parameters\\.prm|original\\.prm");
+    std::error_code  error;
     for (const auto &entry : std::filesystem::directory_iterator(output_settings.directory, error))
       if (entry.is_regular_file() && std::regex_match(entry.path().filename().string(), ours))
         std::filesystem::remove(entry.path(), error);
