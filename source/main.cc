@@ -5,10 +5,12 @@
  *   gelmpm --print-parameters [scene.prm]
  *   gelmpm --help
  *
- * Exit status: 0 success, 1 the run failed, 2 bad input (nothing is written then).
+ * Exit status: 0 success, 1 the run failed, 2 bad input (nothing is written then), 128 + the
+ * signal (130 SIGINT, 143 SIGTERM) when a signal stopped the run after a step.
  */
 #include <gelmpm/core/input_error.h>
 #include <gelmpm/core/parameters.h>
+#include <gelmpm/core/stop_request.h>
 #include <gelmpm/simulator/scene_structure.h>
 #include <gelmpm/simulator/simulator.h>
 
@@ -51,6 +53,7 @@ main(int argc, char **argv)
   // Quiet deal.II's own abort-on-exception printing: every error below is reported once.
   dealii::deal_II_exceptions::disable_abort_on_exception();
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, dealii::numbers::invalid_unsigned_int);
+  GelMPM::install_stop_handlers();
   try
     {
       const auto cl = GelMPM::CommandLine::parse(argc, argv);

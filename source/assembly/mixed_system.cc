@@ -843,24 +843,27 @@ namespace GelMPM
               props[Layout::normal_area_n + d] = na[d];
             props[Layout::measure_n] = na.norm();
           }
-        // Points on a boundary that lies on the edge of the grid (e.g. a roller on the grid's
-        // left side) cross the edge by the small violation of the weakly imposed condition;
-        // keep them on the edge. Larger excursions are left to the caller to report.
+        // A point held normal to a grid edge (a roller or a fixed piece on the edge) crosses it
+        // by the small violation of the weakly imposed condition: keep it on the edge. Any other
+        // point beyond the edge is material the grid cannot carry.
         Point<dim> x = r.x + du;
         for (unsigned int d = 0; d < dim; ++d)
           {
             const auto  &basis     = spaces_.u_space().basis_1d(d);
             const double tolerance = 0.25 * basis.cell_size();
-            if (x[d] < basis.x_min() && x[d] > basis.x_min() - tolerance)
+            const bool   held      = r.projector[d][d] > 0.5;
+            if (held && x[d] < basis.x_min() && x[d] > basis.x_min() - tolerance)
               x[d] = basis.x_min();
-            if (x[d] > basis.x_max() && x[d] < basis.x_max() + tolerance)
+            if (held && x[d] > basis.x_max() && x[d] < basis.x_max() + tolerance)
               x[d] = basis.x_max();
             if (x[d] < basis.x_min() || x[d] > basis.x_max())
-              throw std::runtime_error("the material point at " + format_point(x) +
-                                       " (initially at " + format_point(r.x - r.u_n) + ", kind " +
-                                       std::to_string(static_cast<int>(r.kind)) +
-                                       ") has left the background grid; enlarge the grid "
-                                       "('Background grid/Lower corner', 'Upper corner')");
+              throw std::runtime_error(
+                "the material point at " + format_point(x) + " (initially at " +
+                format_point(r.x - r.u_n) + ", " +
+                (r.kind == PointKind::volume ? std::string("inside the body")
+                                             : "on the boundary, free normal to the grid edge") +
+                ") has crossed the edge of the background grid; enlarge the grid so that the body "
+                "stays inside it ('Background grid/Lower corner', 'Upper corner')");
           }
         particles[p]->set_location(x);
       }

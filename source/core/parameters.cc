@@ -4,6 +4,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
 #include <cctype>
 #include <filesystem>
 #include <fstream>
@@ -15,6 +16,172 @@ namespace GelMPM
   {
     const std::string list_hint =
       "'gelmpm --print-parameters' lists every section and entry with its pattern and documentation";
+
+    // Editors on Windows start UTF-8 files with one; deal.II would see it as part of line 1.
+    const std::string byte_order_mark = "\xEF\xBB\xBF";
+
+    /** The file named by an 'include' line of a parameter file (as deal.II reads it), or "". */
+    std::string
+    included_file(std::string line)
+    {
+      line = dealii::Utilities::trim(line.substr(0, line.find('#')));
+      if (line.rfind(byte_order_mark, 0) == 0)
+        line.erase(0, byte_order_mark.size());
+      if (line.rfind("include ", 0) != 0 && line.rfind("INCLUDE ", 0) != 0)
+        return "";
+      return dealii::Utilities::trim(line.substr(8));
+    }
+
+    /**
+     * deal.II follows 'include' lines without a limit: a file that includes itself, directly or
+     * through others, recurses until the stack overflows.
+     */
+    void
+    check_includes(const std::string &file_name, std::vector<std::string> &chain)
+    {
+      std::error_code   error;
+      const std::string path = std::filesystem::weakly_canonical(file_name, error).string();
+      for (const auto &outer : chain)
+        if (outer == path)
+          throw InputError("",
+                           "the scene file includes '" + file_name +
+                             "' inside itself (an 'include' cycle)",
+                           "remove the 'include " + file_name + "' line that closes the cycle");
+      if (chain.size() >= 32)
+        throw InputError("",
+                         "the scene file nests 'include' lines more than 32 deep",
+                         "include fewer files");
+      std::ifstream in(file_name);
+      if (!in || std::filesystem::is_directory(file_name))
+        return; // deal.II reports a missing include file with its line number
+      chain.push_back(path);
+      for (std::string line; std::getline(in, line);)
+        if (const auto included = included_file(line); !included.empty())
+          check_includes(included, chain);
+      chain.pop_back();
+    }
+
+    /** The names of all sections (@p sections) or all entries of @p prm. */
+    std::vector<std::string>
+    declared_names(const dealii::ParameterHandler &prm, const bool sections)
+    {
+      std::ostringstream text;
+      prm.print_parameters(text, dealii::ParameterHandler::ShortPRM);
+      const std::string        keyword = sections ? "subsection " : "set ";
+      std::vector<std::string> names;
+      std::istringstream       lines(text.str());
+      for (std::string line; std::getline(lines, line);)
+        {
+          line = dealii::Utilities::trim(line);
+          if (line.rfind(keyword, 0) != 0)
+            continue;
+          const auto name =
+            dealii::Utilities::trim(line.substr(keyword.size(), line.find('=') - keyword.size()));
+          if (std::find(names.begin(), names.end(), name) == names.end())
+            names.push_back(name);
+        }
+      return names;
+    }
+
+    /** Edit distance of @p a and @p b, ignoring case. */
+    unsigned int
+    distance(const std::string &a, const std::string &b)
+    {
+      std::vector<unsigned int> row(b.size() + 1);
+      for (unsigned int j = 0; j <= b.size(); ++j)
+        row[j] = j;
+      for (unsigned int i = 1; i <= a.size(); ++i)
+        {
+          unsigned int diagonal = row[0];
+          row[0]                = i;
+          for (unsigned int j = 1; j <= b.size(); ++j)
+            {
+              const unsigned int above = row[j];
+              const bool         same  = std::tolower(static_cast<unsigned char>(a[i - 1])) ==
+                                std::tolower(static_cast<unsigned char>(b[j - 1]));
+              row[j]   = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (same ? 0 : 1)});
+              diagonal = above;
+            }
+        }
+      return row[b.size()];
+    }
+
+    /** "write 'X'" for the declared name nearest to the misspelt @p name, else the list hint. */
+    std::string
+    nearest_name_fix(const dealii::ParameterHandler &prm,
+                     const std::string              &name,
+                     const bool                      section)
+    {
+      std::string  best;
+      unsigned int best_distance = std::max<unsigned int>(2, name.size() / 3) + 1;
+      for (const auto &candidate : declared_names(prm, section))
+        if (const unsigned int d = distance(name, candidate); d < best_distance)
+          {
+            best          = candidate;
+            best_distance = d;
+          }
+      if (best.empty())
+        return list_hint;
+      return "write '" + best + "', the nearest " + (section ? "section" : "entry") + " name (" +
+             list_hint + ")";
+    }
+
+    /** The first of @p sections (a path) that @p prm does not declare. */
+    std::string
+    first_missing_section(const dealii::ParameterHandler &prm,
+                          const std::vector<std::string> &sections)
+    {
+      std::vector<std::string> path;
+      for (const auto &s : sections)
+        {
+          path.push_back(s);
+          if (!prm.subsection_path_exists(path))
+            return s;
+        }
+      return sections.empty() ? "" : sections.back();
+    }
+
+    /** The text between @p open and @p close after @p marker in @p message, or "". */
+    std::string
+    quoted_after(const std::string &message,
+                 const std::string &marker,
+                 const char         open,
+                 const char         close)
+    {
+      const auto at = message.find(marker);
+      if (at == std::string::npos)
+        return "";
+      const auto begin = message.find(open, at + marker.size());
+      const auto end   = message.find(close, begin + 1);
+      if (begin == std::string::npos || end == std::string::npos)
+        return "";
+      return message.substr(begin + 1, end - begin - 1);
+    }
+
+    /** A fix for what deal.II reported in @p message, as specific as the message allows. */
+    std::string
+    fix_for(const dealii::ParameterHandler &prm, const std::string &message)
+    {
+      if (const auto name = quoted_after(message, "No entry with name", '<', '>'); !name.empty())
+        return nearest_name_fix(prm, name, false);
+      if (const auto at = message.find("no such subsection to be entered: ");
+          at != std::string::npos)
+        {
+          const auto rest = message.substr(at + 34);
+          return nearest_name_fix(prm,
+                                  dealii::Utilities::trim(rest.substr(0, rest.find('.'))),
+                                  true);
+        }
+      if (message.find("does not match the given pattern") != std::string::npos)
+        return "give a value of the pattern in brackets (the entry's documentation: 'gelmpm "
+               "--print-parameters')";
+      if (message.find("unequal numbers of 'subsection' and 'end'") != std::string::npos)
+        return "close every 'subsection' with one 'end'";
+      if (message.find("include") != std::string::npos)
+        return "check the path after 'include' (relative paths are taken from the current "
+               "directory)";
+      return list_hint;
+    }
   } // namespace
 
 
@@ -124,7 +291,8 @@ namespace GelMPM
            "                               default (with a scene file: with that scene's values)\n"
            "  --help                       this text\n"
            "\n"
-           "Exit status: 0 success, 1 the run failed (e.g. no convergence), 2 bad input.\n";
+           "Exit status: 0 success, 1 the run failed (e.g. no convergence, disk full), 2 bad\n"
+           "input (nothing is written), 130/143 stopped by SIGINT/SIGTERM after a step.\n";
   }
 
 
@@ -139,7 +307,9 @@ namespace GelMPM
           {
             if (skip_undefined)
               continue;
-            throw InputError("--set " + o.text, "names a section that does not exist", list_hint);
+            throw InputError("--set " + o.text,
+                             "names a section that does not exist",
+                             nearest_name_fix(prm, first_missing_section(prm, o.sections), true));
           }
         for (const auto &s : o.sections)
           prm.enter_subsection(s);
@@ -152,14 +322,16 @@ namespace GelMPM
             leave_sections(prm, o.sections.size());
             if (skip_undefined)
               continue;
-            throw InputError("--set " + o.text, "names an entry that does not exist", list_hint);
+            throw InputError("--set " + o.text,
+                             "names an entry that does not exist",
+                             nearest_name_fix(prm, o.entry, false));
           }
         catch (const dealii::ExceptionBase &e)
           {
             leave_sections(prm, o.sections.size());
             if (skip_undefined)
               continue;
-            throw InputError(o.path(), "(from --set): " + describe(e), list_hint);
+            throw InputError(o.path(), "(from --set): " + describe(e), fix_for(prm, describe(e)));
           }
         leave_sections(prm, o.sections.size());
       }
@@ -184,14 +356,22 @@ namespace GelMPM
               "'" + file_name + "' is a directory, not a scene file",
               "give a scene file, e.g. prm/constrained_swelling.prm");
     }
+    std::vector<std::string> chain;
+    check_includes(file_name, chain);
     try
       {
-        std::ifstream in(file_name);
-        prm.parse_input(in, file_name, "", skip_undefined);
+        std::ifstream     file(file_name);
+        std::stringstream in;
+        in << file.rdbuf();
+        std::string text = in.str();
+        if (text.rfind(byte_order_mark, 0) == 0)
+          text.erase(0, byte_order_mark.size());
+        std::istringstream stripped(text);
+        prm.parse_input(stripped, file_name, "", skip_undefined);
       }
     catch (const dealii::ExceptionBase &e)
       {
-        throw InputError("", "in scene file: " + describe(e), list_hint);
+        throw InputError("", "in scene file: " + describe(e), fix_for(prm, describe(e)));
       }
     apply_overrides(prm, overrides, skip_undefined);
   }

@@ -153,13 +153,9 @@ namespace GelMPM
     flags.time              = time;
     flags.compression_level = DataOutBase::VtkFlags::best_speed;
     data_out.set_flags(flags);
-    {
-      std::ofstream out(series.next_path());
-      if (!out)
-        throw std::runtime_error("cannot write " + series.next_path());
+    series.write(time, [&](std::ostream &out) {
       data_out.write_vtu(out);
-    }
-    series.add(time);
+    });
   }
 
 

@@ -14,7 +14,10 @@ namespace GelMPM
                       "Directory for all results (created if missing; relative to the directory "
                       "gelmpm is started in). It receives the log, statistics.csv, "
                       "parameters.prm (the parameters as used, after --set) and the ParaView "
-                      "files.");
+                      "files. A run first removes the files an earlier run wrote there (only the "
+                      "names gelmpm writes: the particles, grid and mode series, statistics.csv, "
+                      "stability.csv, events.csv, parameters.prm, original.prm); it may not be the "
+                      "directory of the scene file.");
     prm.declare_entry("Write particles",
                       "true",
                       Patterns::Bool(),

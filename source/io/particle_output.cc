@@ -104,13 +104,9 @@ namespace GelMPM
 
     DataOutBase::VtkFlags flags;
     flags.compression_level = DataOutBase::VtkFlags::best_speed;
-    {
-      std::ofstream out(series.next_path());
-      if (!out)
-        throw std::runtime_error("cannot write " + series.next_path());
+    series.write(time, [&](std::ostream &out) {
       DataOutBase::write_vtu(patches, names, ranges, flags, out);
-    }
-    series.add(time);
+    });
   }
 
 

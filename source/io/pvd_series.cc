@@ -1,7 +1,10 @@
+#include <gelmpm/io/file_writing.h>
 #include <gelmpm/io/pvd_series.h>
 
 #include <deal.II/base/data_out_base.h>
+#include <deal.II/base/exceptions.h>
 
+#include <cerrno>
 #include <cstdio>
 #include <fstream>
 #include <iomanip>
@@ -33,17 +36,42 @@ namespace GelMPM
 
 
   void
+  PvdSeries::write(const double time, const std::function<void(std::ostream &)> &writer)
+  {
+    write_file(next_path(), writer);
+    add(time);
+  }
+
+
+  void
   PvdSeries::add(const double time)
   {
-    series.emplace_back(time, next_file_name());
-    const std::string pvd = directory + "/" + name + ".pvd";
-    {
-      std::ofstream out(pvd + ".tmp");
-      if (!out)
-        throw std::runtime_error("cannot write " + pvd + ".tmp");
-      dealii::DataOutBase::write_pvd_record(out, series);
-    }
-    std::rename((pvd + ".tmp").c_str(), pvd.c_str());
+    auto listed = series;
+    listed.emplace_back(time, next_file_name());
+    write_file(directory + "/" + name + ".pvd", [&](std::ostream &out) {
+      dealii::DataOutBase::write_pvd_record(out, listed);
+    });
+    series = std::move(listed);
+  }
+
+
+  void
+  PvdSeries::write_file(const std::string                         &path,
+                        const std::function<void(std::ostream &)> &writer) const
+  {
+    const std::string partial = path + ".tmp";
+    std::ofstream     out     = open_partial(partial, path);
+    int               error   = 0;
+    try
+      {
+        writer(out);
+      }
+    catch (const dealii::ExceptionBase &)
+      {
+        // deal.II's writers check the stream and throw a long library message; errno says why.
+        error = errno != 0 ? errno : EIO;
+      }
+    commit_file(out, partial, path, error);
   }
 
 

@@ -1,7 +1,10 @@
+#include <gelmpm/io/file_writing.h>
 #include <gelmpm/io/statistics_file.h>
 
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
@@ -11,17 +14,41 @@ namespace GelMPM
   void
   StatisticsFile::open(const std::string &file_name, const std::vector<std::string> &columns)
   {
-    file.open(file_name);
+    name  = file_name;
+    errno = 0;
+    file.open(file_name, std::ios::binary | std::ios::trunc);
     if (!file)
-      throw std::runtime_error("cannot write " + file_name);
+      throw std::runtime_error(write_failure(file_name, errno));
+    complete = 0;
     columns_ = columns;
     index.clear();
     for (unsigned int i = 0; i < columns.size(); ++i)
       index[columns[i]] = i;
     current.assign(columns.size(), "");
-    for (unsigned int i = 0; i < columns.size(); ++i)
-      file << (i ? "," : "") << columns[i];
-    file << std::endl;
+    append_line(columns);
+  }
+
+
+  void
+  StatisticsFile::append_line(const std::vector<std::string> &fields)
+  {
+    std::string line;
+    for (unsigned int i = 0; i < fields.size(); ++i)
+      line += (i ? "," : "") + fields[i];
+    line += '\n';
+    errno = 0;
+    file.write(line.data(), line.size());
+    file.flush();
+    if (!file)
+      {
+        // A full disk may take part of the line: cut the file back to its last complete line.
+        const int error = errno;
+        file.close();
+        std::error_code ignored;
+        std::filesystem::resize_file(name, complete, ignored);
+        throw std::runtime_error(write_failure(name, error));
+      }
+    complete += line.size();
   }
 
 
@@ -50,9 +77,7 @@ namespace GelMPM
   void
   StatisticsFile::write_row()
   {
-    for (unsigned int i = 0; i < current.size(); ++i)
-      file << (i ? "," : "") << current[i];
-    file << std::endl;
+    append_line(current);
     rows_.push_back(current);
     current.assign(columns_.size(), "");
   }

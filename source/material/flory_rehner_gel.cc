@@ -3,12 +3,25 @@
 
 #include <deal.II/base/tensor.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <sstream>
 
 namespace GelMPM
 {
+  namespace
+  {
+    std::string
+    number(const double x)
+    {
+      std::ostringstream text;
+      text << x;
+      return text.str();
+    }
+  } // namespace
+
+
   using dealii::Tensor;
 
   namespace
@@ -60,7 +73,9 @@ namespace GelMPM
       "Flory-Huggins chi",
       "0.1",
       Patterns::Double(),
-      "chi, the Flory-Huggins polymer-solvent interaction parameter (Table 1: 0.1).");
+      "chi, the Flory-Huggins polymer-solvent interaction parameter (Table 1: 0.1). Accepted: "
+      "0 <= chi <= chi_max, where with 'Initial state = stretch' chi_max makes the initial "
+      "state the swollen equilibrium in pure solvent (mu_0 = 0).");
     prm.declare_entry("N nu",
                       "7.299e-3",
                       Patterns::Double(),
@@ -115,6 +130,12 @@ namespace GelMPM
             "must be positive, but is " + std::to_string(diffusivity_),
             "give the solvent diffusivity D > 0");
     require(std::isfinite(chi_), "Material/Flory-Huggins chi", "is not finite", "give a number");
+    // Flory-Huggins theory (e.g. the solubility-parameter estimate chi = 0.34 + ...) gives
+    // chi >= 0 for a polymer and a solvent without specific interactions.
+    require(chi_ >= 0.,
+            "Material/Flory-Huggins chi",
+            "is negative (" + number(chi_) + "), outside the physical range chi >= 0",
+            "give 0 <= chi (Table 1: 0.1)");
     if (by_stretch)
       {
         require(stretch > 1.,
@@ -122,9 +143,49 @@ namespace GelMPM
                 "must be larger than 1 (a gel holds solvent), but is " + std::to_string(stretch),
                 "give lambda_0 > 1 (Table 1: 1.2801)");
         lambda_0_ = stretch;
+        check_initial_bath(stretch);
       }
     else
       lambda_0_ = lambda_0_from_mu_0(mu0, chi_, N_nu_);
+  }
+
+
+  template <int dim>
+  void
+  FloryRehnerGel<dim>::check_initial_bath(const double stretch) const
+  {
+    // The stress-free initial state is the equilibrium of the gel in a bath at mu_0 (eq. (22)); a
+    // bath above pure solvent (mu_0 > 0) would be solvent under pressure.
+    const double l6      = std::pow(stretch, 6);
+    const double chi_max = chi_ - l6 * mu_0_from_lambda_0(stretch, chi_, N_nu_);
+    require(chi_ <= chi_max,
+            "Material/Flory-Huggins chi",
+            "is " + number(chi_) + ", above chi_max = " + number(chi_max) +
+              " for 'Initial stretch' = " + number(stretch) + " and 'N nu' = " + number(N_nu_) +
+              ": the initial state would be in equilibrium only with solvent above the pure "
+              "solvent's chemical potential (mu_0/(k_BT) = " +
+              number(mu_0_from_lambda_0(stretch, chi_, N_nu_)) + " > 0)",
+            "give 0 <= chi <= " + number(chi_max) + " or a smaller 'Initial stretch'");
+  }
+
+
+  template <int dim>
+  double
+  FloryRehnerGel<dim>::largest_swelling_chemical_potential() const
+  {
+    // Plane strain: mu of P_11 = 0 at in-plane stretch a, J = lambda_0^3 a^2, tends to
+    // N nu / lambda_0^3 for large a; isotropic: eq. (22), which tends to 0.
+    const auto mu_at = [&](const double a) {
+      if (dim == 3)
+        return mu_0_from_lambda_0(a, chi_, N_nu_);
+      const double J = std::pow(lambda_0_, 3) * a * a;
+      return N_nu_ * (a * a - 1.) / J + std::log1p(-1. / J) + 1. / J + chi_ / (J * J);
+    };
+    const double dry     = (dim == 3) ? 1. : std::pow(lambda_0_, -1.5);
+    double       largest = (dim == 3) ? 0. : N_nu_ / std::pow(lambda_0_, 3);
+    for (unsigned int k = 0; k <= 4000; ++k)
+      largest = std::max(largest, mu_at(dry * (1. + std::pow(10., -6. + 10. * k / 4000.))));
+    return largest;
   }
 
 
@@ -342,6 +403,11 @@ namespace GelMPM
     };
     // Walk up the increasing branch of eq. (22) until it passes mu_0.
     double lo = 1. + 1e-14, hi = 1.001;
+    require(f(lo) < 0.,
+            "Material/Flory-Huggins chi",
+            "is " + number(chi) + ": at 'Initial chemical potential' = " + number(mu_0) +
+              " the gel would hold no solvent (eq. (22) has no swollen state)",
+            "give a smaller chi (Table 1: 0.1) or a larger 'Initial chemical potential'");
     while (f(hi) < 0.)
       {
         const double next = hi * 1.05;

@@ -52,6 +52,33 @@ namespace GelMPM
       out << "(" << p << ")";
       return out.str();
     }
+
+    /**
+     * Throw InputError if piece @p i selects surface points that an earlier piece takes: a point
+     * belongs to the first piece that selects it, so the later one is left without points.
+     */
+    template <int dim, typename Elements>
+    void
+    check_not_overlapped(const Elements                &elements,
+                         const BoundaryConditions<dim> &boundary_conditions,
+                         const unsigned int             i)
+    {
+      const auto &piece = boundary_conditions.piece(i);
+      for (const auto &e : elements)
+        {
+          const dealii::Tensor<1, dim> normal = e.normal_area / e.normal_area.norm();
+          if (!piece.selects(e.centre, normal))
+            continue;
+          const auto &first =
+            boundary_conditions.piece(boundary_conditions.piece_of(e.centre, normal));
+          throw InputError("Boundary conditions/" + piece.name + "/Selector",
+                           "overlaps the selector of the earlier piece '" + first.name +
+                             "', which takes all its points, e.g. the one at " + text(e.centre) +
+                             " (a point belongs to the first piece that selects it)",
+                           "make the selectors of '" + first.name + "' and '" + piece.name +
+                             "' disjoint");
+        }
+    }
   } // namespace
 
 
@@ -93,6 +120,7 @@ namespace GelMPM
         n_sub *= n;
         n_cells *= grid.n_cells[d];
       }
+    bool in_boxes = false;
     for (unsigned int c = 0; c < n_cells; ++c)
       for (unsigned int s = 0; s < n_sub; ++s)
         {
@@ -105,6 +133,7 @@ namespace GelMPM
               rest_s /= n;
               x[d] = grid.lower[d] + (ic + (is + 0.5) / n) * grid.cell_size(d);
             }
+          in_boxes |= geometry.inside_boxes(x);
           if (!geometry.inside(x))
             continue;
           std::fill(properties.begin(), properties.end(), 0.);
@@ -113,6 +142,11 @@ namespace GelMPM
           properties[Layout::measure_0] = properties[Layout::measure_n] = sub_volume;
           insert(x);
         }
+    require(next_id > 0 || !in_boxes,
+            "Geometry/Holes",
+            "leaves nothing of the body: the holes remove the whole body (no volume point of "
+            "'Geometry/Boxes' lies outside them)",
+            "make the holes smaller or move them off the body ('Geometry/Boxes')");
     require(next_id > 0,
             "Geometry/Boxes",
             "places no volume point inside the background grid",
@@ -153,6 +187,9 @@ namespace GelMPM
                 e.normal_area[d];
             insert(e.centre);
           }
+        for (unsigned int i = 0; i < boundary_conditions.n_pieces(); ++i)
+          if (count[i] == 0)
+            check_not_overlapped(elements, boundary_conditions, i);
         for (unsigned int i = 0; i < boundary_conditions.n_pieces(); ++i)
           require(count[i] > 0,
                   "Boundary conditions/" + boundary_conditions.piece(i).name + "/Selector",

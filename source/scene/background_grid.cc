@@ -4,6 +4,10 @@
 
 #include <deal.II/grid/grid_generator.h>
 
+#include <cmath>
+#include <sstream>
+#include <unistd.h>
+
 namespace GelMPM
 {
   template <int dim>
@@ -20,7 +24,8 @@ namespace GelMPM
                       dim == 2 ? "1, 1" : "1, 1, 1",
                       Patterns::List(Patterns::Double(), dim, dim),
                       "Upper corner of the background grid. The body must stay inside the grid for "
-                      "the whole run (it swells).");
+                      "the whole run (it swells): a face that reaches the edge of the grid stops "
+                      "the run unless a roller or a fixed condition holds it there.");
     prm.declare_entry("Cells",
                       dim == 2 ? "10, 10" : "10, 10, 10",
                       Patterns::List(Patterns::Integer(1), dim, dim),
@@ -39,6 +44,7 @@ namespace GelMPM
     const auto hi = get_double_list(prm, "Upper corner", "Background grid/Upper corner", dim);
     const auto n  = get_double_list(prm, "Cells", "Background grid/Cells", dim);
     prm.leave_subsection();
+    check_memory(n);
     for (unsigned int d = 0; d < dim; ++d)
       {
         lower[d]   = lo[d];
@@ -49,6 +55,28 @@ namespace GelMPM
                 "is not above 'Lower corner' in direction " + std::to_string(d),
                 "give an upper corner larger than the lower corner in every coordinate");
       }
+  }
+
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::check_memory(const std::vector<double> &cells) const
+  {
+    // A lower bound: the cell of the triangulation, its points, its rows of the tangent. Above
+    // the machine's memory the allocation fails late, with nothing that names the entry.
+    const double bytes_per_cell = dim == 2 ? 1024. : 4096.;
+    double       n              = 1.;
+    for (const double c : cells)
+      n *= c;
+    const double physical =
+      static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
+    if (!(physical > 0.) || n * bytes_per_cell <= physical)
+      return;
+    std::ostringstream problem;
+    problem.precision(3);
+    problem << "asks for " << n << " cells, which need at least " << n * bytes_per_cell / 1e9
+            << " GB of memory, more than this machine's " << physical / 1e9 << " GB";
+    throw InputError("Background grid/Cells", problem.str(), "give fewer cells per direction");
   }
 
 

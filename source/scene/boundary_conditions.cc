@@ -5,6 +5,9 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/lac/vector.h>
 
+#include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <iostream>
 #include <sstream>
 
@@ -39,6 +42,87 @@ namespace GelMPM
       std::ostringstream sink;
       std::streambuf    *saved;
     };
+
+    bool
+    is_name(const std::string &name)
+    {
+      if (name.empty() || !(std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_'))
+        return false;
+      for (const char c : name)
+        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_'))
+          return false;
+      return true;
+    }
+
+    /**
+     * The constants 'name=value, ...' of @p text, checked here because deal.II's expression
+     * parser aborts the program on a name that is not an identifier or that shadows a variable.
+     */
+    std::map<std::string, double>
+    parse_constants(const std::string &text,
+                    const std::string &variable_names,
+                    const std::string &entry)
+    {
+      const auto variables = dealii::Utilities::split_string_list(variable_names);
+      std::map<std::string, double> constants;
+      for (const auto &item : dealii::Utilities::split_string_list(text, ','))
+        {
+          const auto kv = dealii::Utilities::split_string_list(item, '=');
+          require(kv.size() == 2,
+                  entry,
+                  "has the item '" + item + "' that is not 'name=value'",
+                  "write e.g. 'H=1, tol=1e-9'");
+          require(is_name(kv[0]),
+                  entry,
+                  "has the constant name '" + kv[0] + "', which is not a name",
+                  "start the name with a letter and use letters, digits and '_' only");
+          require(std::find(variables.begin(), variables.end(), kv[0]) == variables.end(),
+                  entry,
+                  "has the constant '" + kv[0] + "', which is also a variable (" + variable_names +
+                    ")",
+                  "rename the constant");
+          require(constants.count(kv[0]) == 0,
+                  entry,
+                  "gives the constant '" + kv[0] + "' twice",
+                  "give each constant once");
+          double value;
+          try
+            {
+              value = dealii::Utilities::string_to_double(kv[1]);
+            }
+          catch (...)
+            {
+              throw InputError(entry, "has a non-number in '" + item + "'", "give numbers");
+            }
+          require(std::isfinite(value),
+                  entry,
+                  "has the value '" + kv[1] + "', which is not finite, in '" + item + "'",
+                  "give a finite number");
+          constants[kv[0]] = value;
+        }
+      return constants;
+    }
+
+    std::string
+    number(const double x)
+    {
+      if (std::isnan(x))
+        return "NaN";
+      std::ostringstream text;
+      text << x;
+      return text.str();
+    }
+
+    std::string
+    format_point(const double *x, const unsigned int n)
+    {
+      std::ostringstream text;
+      text << '(';
+      for (unsigned int d = 0; d < n; ++d)
+        text << (d ? ", " : "") << x[d];
+      text << ')';
+      return text.str();
+    }
 
     const char *function_names[] = {"Displacement value",
                                     "Traction",
@@ -115,6 +199,18 @@ namespace GelMPM
         *targets[f] = std::make_unique<dealii::Functions::ParsedFunction<dim>>(n_components[f]);
         try
           {
+            parse_constants(prm.get("Function constants"),
+                            prm.get("Variable names"),
+                            where + "/" + function_names[f] + "/Function constants");
+          }
+        catch (...)
+          {
+            prm.leave_subsection();
+            prm.leave_subsection();
+            throw;
+          }
+        try
+          {
             const QuietCerr quiet;
             (*targets[f])->parse_parameters(prm);
             // Evaluate once: the parser compiles lazily.
@@ -135,25 +231,8 @@ namespace GelMPM
       }
     prm.leave_subsection();
 
-    std::map<std::string, double> constants;
-    for (const auto &item : dealii::Utilities::split_string_list(selector_constants, ','))
-      {
-        const auto kv = dealii::Utilities::split_string_list(item, '=');
-        require(kv.size() == 2,
-                where + "/Selector constants",
-                "has the item '" + item + "' that is not 'name=value'",
-                "write e.g. 'H=1, tol=1e-9'");
-        try
-          {
-            constants[kv[0]] = dealii::Utilities::string_to_double(kv[1]);
-          }
-        catch (...)
-          {
-            throw InputError(where + "/Selector constants",
-                             "has a non-number in '" + item + "'",
-                             "give numbers");
-          }
-      }
+    const auto constants =
+      parse_constants(selector_constants, variables(dim, true), where + "/Selector constants");
     selector = std::make_unique<dealii::FunctionParser<3>>(1);
     try
       {
@@ -184,7 +263,13 @@ namespace GelMPM
         p[2] = normal[0];
         selector->set_time(normal[1]);
       }
-    return selector->value(p) != 0.;
+    const double value = selector->value(p);
+    if (!std::isfinite(value))
+      throw InputError("Boundary conditions/" + name + "/Selector",
+                       "is not a number (" + number(value) + ") at the surface point " +
+                         format_point(&p[0], dim) + " with normal " + format_point(&normal[0], dim),
+                       "write a condition that is 0 or 1 everywhere, e.g. 'ny > 0.5'");
+    return value != 0.;
   }
 
 
@@ -244,6 +329,48 @@ namespace GelMPM
     traction_->set_time(t);
     chemical_potential_value_->set_time(t);
     flux_->set_time(t);
+  }
+
+
+  template <int dim>
+  void
+  BoundaryPiece<dim>::check_values(const std::vector<dealii::Point<dim>> &points,
+                                   const std::vector<double>             &times,
+                                   const double                           largest_mu)
+  {
+    const dealii::Functions::ParsedFunction<dim> *functions[] = {displacement_value_.get(),
+                                                                 traction_.get(),
+                                                                 chemical_potential_value_.get(),
+                                                                 flux_.get()};
+    for (unsigned int f = 0; f < 4; ++f)
+      {
+        dealii::Vector<double> values(functions[f]->n_components);
+        for (const double t : times)
+          {
+            set_time(t);
+            for (const auto &x : points)
+              {
+                functions[f]->vector_value(x, values);
+                std::ostringstream where_when;
+                where_when << " at x = " << format_point(&x[0], dim) << ", t = " << t;
+                for (const double v : values)
+                  require(std::isfinite(v),
+                          "Boundary conditions/" + name + "/" + function_names[f],
+                          "is not finite (" + number(v) + ")" + where_when.str(),
+                          "give an expression that is finite on the piece for 0 <= t <= 'Time "
+                          "stepping/End time' (guard divisions and logarithms)");
+                if (f == 2 && chemical_potential_prescribed())
+                  require(values[0] <= largest_mu,
+                          "Boundary conditions/" + name + "/Chemical potential value",
+                          "is " + number(values[0]) + where_when.str() +
+                            ", above mu/(k_BT) = " + number(largest_mu) +
+                            ", the largest at which the gel has a swollen equilibrium (it would "
+                            "absorb solvent without bound)",
+                          "prescribe mu/(k_BT) <= " + number(largest_mu) + " (0: pure solvent)");
+              }
+          }
+      }
+    set_time(0.);
   }
 
 

@@ -22,7 +22,8 @@ namespace GelMPM
               entry,
               "has the item '" + item + "' with " + std::to_string(parts.size()) +
                 " numbers where " + std::to_string(n) + " are expected",
-              "see the entry's documentation (gelmpm --print-parameters)");
+              "give " + std::to_string(n) + " comma-separated number(s) there, e.g. '" +
+                std::string(n == 1 ? "0.2" : (n == 2 ? "0.5, 0.5" : "0.5, 0.5, 0.5")) + "'");
       std::vector<double> values;
       for (const auto &p : parts)
         try
@@ -35,6 +36,11 @@ namespace GelMPM
                              "has the non-number '" + p + "' in '" + item + "'",
                              "give numbers");
           }
+      for (const double v : values)
+        require(std::isfinite(v),
+                entry,
+                "has a number that is not finite in '" + item + "'",
+                "give finite numbers");
       return values;
     }
   } // namespace
@@ -138,6 +144,14 @@ namespace GelMPM
     for (const auto &[centre, radius] : holes)
       if (p.distance(centre) < radius)
         return false;
+    return inside_boxes(p);
+  }
+
+
+  template <int dim>
+  bool
+  Geometry<dim>::inside_boxes(const dealii::Point<dim> &p) const
+  {
     for (const auto &[lower, upper] : boxes)
       {
         bool in = true;

@@ -1,5 +1,7 @@
 #include <gelmpm/core/input_error.h>
+#include <gelmpm/core/stop_request.h>
 #include <gelmpm/core/version.h>
+#include <gelmpm/io/file_writing.h>
 #include <gelmpm/particles/point_location.h>
 #include <gelmpm/simulator/simulator.h>
 
@@ -13,6 +15,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <regex>
 #include <sstream>
 
 namespace GelMPM
@@ -76,10 +79,91 @@ namespace GelMPM
     // bad input, found here.
     spaces = std::make_unique<DiscreteSpaces<dim>>(grid, discretisation);
     create_material_points();
+    check_grid_resolves_body();
+    check_boundary_values();
+    check_output_directory();
 
     std::ostringstream used;
     prm.print_parameters(used, dealii::ParameterHandler::ShortPRM);
     parameters_as_used = used.str();
+  }
+
+
+  template <int dim>
+  void
+  Simulator<dim>::check_grid_resolves_body()
+  {
+    // The first step builds the extended bases of the initial configuration: build them here,
+    // where a grid too coarse for the body is still bad input.
+    const auto volume_points = GridOutput<dim>::count_volume_points(particles, spaces->u_space());
+    std::vector<bool> has_material(volume_points.size());
+    for (unsigned int c = 0; c < has_material.size(); ++c)
+      has_material[c] = volume_points[c] > 0;
+    try
+      {
+        spaces->reinit(has_material);
+      }
+    catch (const std::runtime_error &e)
+      {
+        throw InputError("Background grid/Cells",
+                         "cannot carry the body's initial configuration: " + std::string(e.what()),
+                         "refine the grid or enlarge it ('Background grid/Upper corner')");
+      }
+  }
+
+
+  template <int dim>
+  void
+  Simulator<dim>::check_boundary_values()
+  {
+    // Up to 64 surface points spread over each piece and times over the run: enough to catch
+    // an expression that is not finite (1/0, log(-1)) before the run cuts its steps without
+    // saying why.
+    std::vector<std::vector<dealii::Point<dim>>> points(boundary_conditions.n_pieces());
+    for (const auto &p : particles)
+      {
+        const auto props = p.get_properties();
+        const int  piece = static_cast<int>(std::lround(props[PropertyLayout<dim>::piece]));
+        if (piece < 0)
+          continue;
+        dealii::Point<dim> x;
+        for (unsigned int d = 0; d < dim; ++d)
+          x[d] = props[PropertyLayout<dim>::position_0 + d];
+        points[piece].push_back(x);
+      }
+    std::vector<std::vector<dealii::Point<dim>>> samples(points.size());
+    for (unsigned int i = 0; i < points.size(); ++i)
+      {
+        const std::size_t stride = points[i].size() / 64 + 1;
+        for (std::size_t k = 0; k < points[i].size(); k += stride)
+          samples[i].push_back(points[i][k]);
+      }
+    std::vector<double> times;
+    for (unsigned int k = 0; k <= 8; ++k)
+      times.push_back(time_stepping.end_time * k / 8.);
+    const double largest_mu = material.largest_swelling_chemical_potential();
+    for (unsigned int i = 0; i < boundary_conditions.n_pieces(); ++i)
+      boundary_conditions.piece(i).check_values(samples[i], times, largest_mu);
+  }
+
+
+  template <int dim>
+  void
+  Simulator<dim>::check_output_directory() const
+  {
+    namespace fs = std::filesystem;
+    std::error_code error;
+    const fs::path  scene_directory = fs::absolute(scene_file, error).parent_path();
+    // A run removes an earlier run's files from its directory and rewrites original.prm: run in
+    // a result's directory, it would destroy the result it was started from.
+    require(!fs::exists(output_settings.directory, error) ||
+              !fs::equivalent(output_settings.directory, scene_directory, error),
+            "Output/Directory",
+            "'" + output_settings.directory + "' is the directory of the scene file '" +
+              scene_file +
+              "', whose results (parameters.prm, original.prm, statistics.csv, "
+              ".vtu files) the run would overwrite",
+            "give the run another directory, e.g. --set \"Output/Directory=rerun\"");
   }
 
 
@@ -120,10 +204,31 @@ namespace GelMPM
             "Output/Directory",
             "'" + output_settings.directory + "' cannot be created (" + error.message() + ")",
             "choose a directory you can write to");
-    std::ofstream(output_settings.directory + "/parameters.prm") << parameters_as_used;
+    remove_earlier_output();
+    {
+      const std::string path = output_settings.directory + "/parameters.prm";
+      std::ofstream     out  = open_partial(path + ".tmp", path);
+      out << parameters_as_used;
+      commit_file(out, path + ".tmp", path);
+    }
     std::filesystem::copy_file(scene_file,
                                output_settings.directory + "/original.prm",
                                std::filesystem::copy_options::overwrite_existing);
+  }
+
+
+  template <int dim>
+  void
+  Simulator<dim>::remove_earlier_output() const
+  {
+    // Only the names this program writes: a particles-00042.vtu of a longer earlier run would
+    // otherwise sit next to this run's series as if it belonged to it.
+    const std::regex ours("(particles|grid|mode)(-[0-9]{5}\\.vtu|\\.pvd)(\\.tmp)?|"
+                          "(statistics|stability|events)\\.csv|parameters\\.prm|original\\.prm");
+    std::error_code  error;
+    for (const auto &entry : std::filesystem::directory_iterator(output_settings.directory, error))
+      if (entry.is_regular_file() && std::regex_match(entry.path().filename().string(), ours))
+        std::filesystem::remove(entry.path(), error);
   }
 
 
@@ -454,6 +559,7 @@ namespace GelMPM
   Simulator<dim>::write_output()
   {
     dealii::TimerOutput::Scope scope(timer, "output");
+    output_step = step;
     if (output_settings.write_particles)
       particle_output->write(particles, time);
     if (grid_output)
@@ -671,7 +777,16 @@ namespace GelMPM
         {
           dealii::TimerOutput::Scope scope(timer, "update");
           const auto                 n_before = particles.n_global_particles();
-          system->update_particles(solution);
+          try
+            {
+              system->update_particles(solution);
+            }
+          catch (const std::runtime_error &e)
+            {
+              std::ostringstream when;
+              when << "at t/tau_d = " << t_begin + step_dt << ", " << e.what();
+              throw std::runtime_error(when.str());
+            }
           sort_into_cells(particles, grid, triangulation);
           if (particles.n_global_particles() != n_before)
             throw std::runtime_error(std::to_string(n_before - particles.n_global_particles()) +
@@ -720,12 +835,34 @@ namespace GelMPM
 
   template <int dim>
   int
-  Simulator<dim>::run()
+  Simulator<dim>::advance_to_end()
   {
-    print_header();
-    prepare_output_directory();
-    pcout << "  material points: " << n_volume_points << " volume, " << n_surface_points
-          << " surface; body volume " << body_volume << '\n';
+    while (!control->finished())
+      {
+        if (const int signal = stop_signal())
+          return stop_on_signal(signal);
+        if (control->out_of_steps())
+          {
+            pcout << "gelmpm: stopped after 'Time stepping/Maximum steps' = "
+                  << time_stepping.maximum_steps << " steps at t/tau_d = " << time << std::endl;
+            return 1;
+          }
+        if (!advance())
+          {
+            pcout << "gelmpm: the run cannot converge beyond t/tau_d = " << time
+                  << "; results up to there are in " << output_settings.directory << std::endl;
+            write_output();
+            return 1;
+          }
+      }
+    return 0;
+  }
+
+
+  template <int dim>
+  void
+  Simulator<dim>::start()
+  {
     system = std::make_unique<MixedSystem<dim>>(material, boundary_conditions, nitsche, *spaces);
     if (contact.enabled())
       {
@@ -756,25 +893,42 @@ namespace GelMPM
     statistics.set("dt", 0.);
     record_statistics(NewtonReport(), 0, nullptr);
     write_output();
+  }
 
+
+  template <int dim>
+  int
+  Simulator<dim>::stop_on_signal(const int signal)
+  {
+    if (output_step != step)
+      write_output();
+    std::cerr << "gelmpm: " << signal_name(signal) << " received: stopped after step " << step
+              << " at t/tau_d = " << time << " with a complete last output; the results are in "
+              << output_settings.directory << std::endl;
+    return 128 + signal;
+  }
+
+
+  template <int dim>
+  int
+  Simulator<dim>::run()
+  {
+    print_header();
+    prepare_output_directory();
+    pcout << "  material points: " << n_volume_points << " volume, " << n_surface_points
+          << " surface; body volume " << body_volume << '\n';
     int status = 0;
-    while (!control->finished())
+    try
       {
-        if (control->out_of_steps())
-          {
-            pcout << "gelmpm: stopped after 'Time stepping/Maximum steps' = "
-                  << time_stepping.maximum_steps << " steps at t/tau_d = " << time << std::endl;
-            status = 1;
-            break;
-          }
-        if (!advance())
-          {
-            pcout << "gelmpm: the run cannot converge beyond t/tau_d = " << time
-                  << "; results up to there are in " << output_settings.directory << std::endl;
-            write_output();
-            status = 1;
-            break;
-          }
+        start();
+        status = advance_to_end();
+      }
+    catch (const std::runtime_error &e)
+      {
+        std::cerr << "gelmpm: the run stopped: " << e.what()
+                  << "; what was written up to t/tau_d = " << time << " is kept in "
+                  << output_settings.directory << std::endl;
+        status = 1;
       }
     if (status == 0)
       pcout << "gelmpm: reached t/tau_d = " << time << " in " << step << " steps" << std::endl;

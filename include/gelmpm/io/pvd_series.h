@@ -1,6 +1,8 @@
 #ifndef gelmpm_io_pvd_series_h
 #define gelmpm_io_pvd_series_h
 
+#include <functional>
+#include <ostream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -12,8 +14,9 @@ namespace GelMPM
    * from 0 in the order they are written, and the series file `<name>.pvd` that lists them with
    * their simulated times (deal.II DataOutBase::write_pvd_record).
    *
-   * The .pvd file is rewritten after every addition, atomically (written to a temporary file,
-   * then renamed), so that it only ever lists complete files, also when a run stops early.
+   * Each .vtu file and the .pvd file are written under a temporary name and renamed when
+   * complete, and a file joins the .pvd only after that: the series only ever lists complete
+   * files, also when a run stops early or the disk is full.
    */
   class PvdSeries
   {
@@ -29,6 +32,14 @@ namespace GelMPM
     std::string
     next_path() const;
 
+    /**
+     * Write next_file_name() for @p time with @p writer, under a temporary name renamed when
+     * complete, then add it to the series. Throws std::runtime_error (saying "disk full" when it
+     * is) if writing fails; the series then lists only the files written before.
+     */
+    void
+    write(const double time, const std::function<void(std::ostream &)> &writer);
+
     /** Record that next_file_name() has been written for @p time and rewrite the .pvd file. */
     void
     add(const double time);
@@ -38,6 +49,10 @@ namespace GelMPM
     times_and_names() const;
 
   private:
+    /** Write @p path with @p writer under a temporary name and rename it when complete. */
+    void
+    write_file(const std::string &path, const std::function<void(std::ostream &)> &writer) const;
+
     std::string                                 directory;
     std::string                                 name;
     std::vector<std::pair<double, std::string>> series;

@@ -1,6 +1,7 @@
 #ifndef gelmpm_io_statistics_file_h
 #define gelmpm_io_statistics_file_h
 
+#include <cstdint>
 #include <fstream>
 #include <map>
 #include <string>
@@ -12,7 +13,8 @@ namespace GelMPM
    * @brief statistics.csv: one row per converged step, one column per quantity.
    *
    * The columns are fixed when the file is opened (a header row names them); each row is
-   * flushed as soon as it is complete, so that a run that stops early keeps every row it had.
+   * written in one piece and flushed as soon as it is complete, so that a run that stops early
+   * keeps every row it had; a row that a full disk cuts short is removed again.
    * Numbers are written with 10 significant digits.
    */
   class StatisticsFile
@@ -43,6 +45,15 @@ namespace GelMPM
     rows() const;
 
   private:
+    /**
+     * Write @p fields as one line and flush; if that fails, cut the file back to its last
+     * complete line and throw std::runtime_error (write_failure()).
+     */
+    void
+    append_line(const std::vector<std::string> &fields);
+
+    std::string                           name;
+    std::uintmax_t                        complete = 0; // bytes of complete lines
     std::ofstream                         file;
     std::vector<std::string>              columns_;
     std::map<std::string, unsigned int>   index;

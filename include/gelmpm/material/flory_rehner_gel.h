@@ -131,6 +131,14 @@ namespace GelMPM
                 const double                  mu,
                 const dealii::Tensor<2, dim> &F_p) const;
 
+    /**
+     * The largest mu/(k_BT) at which the gel has a stress-free swollen state (plane strain with
+     * F33 = lambda_0 in 2D, isotropic in 3D): in a bath above it the gel absorbs solvent without
+     * bound.
+     */
+    double
+    largest_swelling_chemical_potential() const;
+
     /** Eq. (22): mu_0/(k_BT) of the stress-free isotropic swelling lambda_0. */
     static double
     mu_0_from_lambda_0(const double lambda_0, const double chi, const double N_nu);
@@ -157,6 +165,10 @@ namespace GelMPM
     constrained_swelling_stretch(const double mu) const;
 
   private:
+    /** Throw InputError unless the initial stretch is a swelling equilibrium with mu_0 <= 0. */
+    void
+    check_initial_bath(const double stretch) const;
+
     /** d psi/dJ and d^2 psi/dJ^2 of the mixing and solvent part psi(J). */
     void
     volumetric_derivatives(const double J, const double mu, double &dpsi, double &d2psi) const;

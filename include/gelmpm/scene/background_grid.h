@@ -32,6 +32,10 @@ namespace GelMPM
     double
     cell_size(const unsigned int d) const;
 
+    /** Throw InputError if @p cells (per direction) cannot fit in the machine's memory. */
+    void
+    check_memory(const std::vector<double> &cells) const;
+
     /** True if @p p lies in the closed box of the grid (with a round-off tolerance). */
     bool
     contains(const dealii::Point<dim> &p) const;

@@ -75,6 +75,17 @@ namespace GelMPM
     void
     set_time(const double t);
 
+    /**
+     * Evaluate every function of the piece at @p points (initial positions) and @p times (in
+     * tau_d): throw InputError naming the function if a value is not finite, or if a prescribed
+     * chemical potential exceeds @p largest_mu, above which the gel has no swollen equilibrium.
+     * Leaves the functions at time 0.
+     */
+    void
+    check_values(const std::vector<dealii::Point<dim>> &points,
+                 const std::vector<double>             &times,
+                 const double                           largest_mu);
+
     std::string           name;
     DisplacementCondition displacement_condition = DisplacementCondition::free;
     ChemicalCondition     chemical_condition     = ChemicalCondition::flux;

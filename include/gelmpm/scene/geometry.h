@@ -44,6 +44,10 @@ namespace GelMPM
     bool
     inside(const dealii::Point<dim> &p) const;
 
+    /** Whether @p p lies in one of the boxes, holes disregarded. */
+    bool
+    inside_boxes(const dealii::Point<dim> &p) const;
+
     /**
      * The boundary of the body cut into elements of length at most @p spacing (2D): the parts of
      * box edges that are not inside another box or a hole, and the arcs of hole boundaries that

@@ -92,10 +92,37 @@ namespace GelMPM
     print_header();
     void
     prepare_output_directory() const;
+    /** Remove the files an earlier run wrote to the output directory (only names gelmpm writes). */
+    void
+    remove_earlier_output() const;
     void
     create_material_points();
+    /** InputError if the extended bases cannot be built on the initial configuration. */
+    void
+    check_grid_resolves_body();
+    /** InputError if a boundary function is not finite on its piece during the run. */
+    void
+    check_boundary_values();
+    /** InputError if the run would overwrite the scene file's own directory. */
+    void
+    check_output_directory() const;
     void
     open_statistics();
+    /** Create the system and the output files; write the initial state. */
+    void
+    start();
+    /**
+     * End the run on @p signal after the current step: write its output unless written, say
+     * so, and return the conventional status 128 + @p signal.
+     */
+    int
+    stop_on_signal(const int signal);
+    /**
+     * Steps until the end time: 0, 1 if the run stopped early, 128 + the signal if a signal
+     * asked it to stop (printed).
+     */
+    int
+    advance_to_end();
     /** Take one converged step; returns false if the step size fell below the minimum. */
     bool
     advance();
@@ -198,6 +225,7 @@ namespace GelMPM
     double       body_volume      = 0.;
     double       time             = 0.; // in tau_d
     unsigned int step             = 0;
+    unsigned int output_step      = dealii::numbers::invalid_unsigned_int; // of the last output
     double       tau_d            = 1.; // L^2 / D, physical time of one tau_d
     double       scale_u          = 1.;
     double       scale_mu         = 1.;
