@@ -9,18 +9,18 @@ Each --run is one output directory (statistics.csv with pore_ratio_k, pore_curva
 mu_boundary; events.csv). The first run is the reference.
 
 Outputs (into --output DIR):
-  fig12a_pore_ratio.png     the pores' extent ratios pore_ratio_1 ... _4 of the first run against
-                            t/tau_d (logarithmic), the boundary mu on a second axis, the events
-                            (bifurcation, self_contact, crease) marked
-  fig12b_curvature.png      the largest surface curvature times R of pore 1 against t/tau_d, one
-                            curve per run, crease events marked
-  fig11_mu.png              with --snapshots DIR: the material points of DIR's particles.pvd at
-                            the output times nearest to --times, coloured by mu/k_BT, the cell
-                            mirrored into a 3 x 3 array as the paper draws it
-  fig12c_crease.png         with --snapshots DIR: the surface points of pore 1 at the three output
-                            times around its first crease
-  fig13_final.png           the last data set of every run: the single cell, volume points (blue)
-                            and surface points (red), one panel per run
+  porous_gel_fig12a.png   the pores' extent ratios pore_ratio_1 ... _4 of the first run against
+                          t/tau_d (logarithmic), the boundary mu on a second axis, the events
+                          (bifurcation, self_contact, crease) marked
+  porous_gel_fig12b.png   the largest surface curvature times R of pore 1 against t/tau_d, one
+                          curve per run, crease events marked
+  porous_gel_fig11.png    with --snapshots DIR: the material points of DIR's particles.pvd at
+                          the output times nearest to --times, coloured by mu/k_BT, the cell
+                          mirrored into a 3 x 3 array as the paper draws it
+  porous_gel_fig12c.png   with --snapshots DIR: the surface points of pore 1 at the three output
+                          times around its first crease
+  porous_gel_fig13.png    the last data set of every run: the single cell, volume points (blue)
+                          and surface points (red), one panel per run
 """
 import argparse
 import os
@@ -81,7 +81,7 @@ def figure_12a(directory, output):
     right.plot(t[keep], data["mu_boundary"][keep], color="0.6", linewidth=0.8)
     right.set_ylabel("mu on the holes / k_BT (grey)")
     fig.tight_layout()
-    fig.savefig(os.path.join(output, "fig12a_pore_ratio.png"), dpi=150)
+    fig.savefig(os.path.join(output, "porous_gel_fig12a.png"), dpi=150)
     plt.close(fig)
 
 
@@ -99,7 +99,7 @@ def figure_12b(runs, output):
     mark_events(ax, read_events(runs[0][1]), kinds=("self_contact", "crease"))
     ax.legend(fontsize=7)
     fig.tight_layout()
-    fig.savefig(os.path.join(output, "fig12b_curvature.png"), dpi=150)
+    fig.savefig(os.path.join(output, "porous_gel_fig12b.png"), dpi=150)
     plt.close(fig)
 
 
@@ -143,7 +143,7 @@ def figure_11(directory, times, output):
         ax.set_ylim(-CELL, 2 * CELL)
         ax.set_title(f"t = {t:.4g} tau_d", fontsize=9)
     fig.tight_layout()
-    fig.savefig(os.path.join(output, "fig11_mu.png"), dpi=150)
+    fig.savefig(os.path.join(output, "porous_gel_fig11.png"), dpi=150)
     plt.close(fig)
 
 
@@ -171,7 +171,7 @@ def figure_12c(directory, output):
     line = lines[min(1, len(lines) - 1)][1]
     d = np.diff(line[:, :2], axis=0)
     turning = np.abs(np.arctan2(d[:-1, 0] * d[1:, 1] - d[:-1, 1] * d[1:, 0],
-                                (d[:-1] * d[1:]).sum(axis=1)))
+                              (d[:-1] * d[1:]).sum(axis=1)))
     centre = line[1 + np.argmax(turning), :2]
     half = 0.3
     fig, axes = plt.subplots(1, len(chosen), figsize=(3.6 * len(chosen), 3.6), squeeze=False)
@@ -183,7 +183,7 @@ def figure_12c(directory, output):
         ax.set_ylim(centre[1] - half, centre[1] + half)
         ax.set_title(f"pore 1, t = {t:.4g} tau_d", fontsize=9)
     fig.tight_layout()
-    fig.savefig(os.path.join(output, "fig12c_crease.png"), dpi=150)
+    fig.savefig(os.path.join(output, "porous_gel_fig12c.png"), dpi=150)
     plt.close(fig)
 
 
@@ -200,20 +200,20 @@ def figure_13(runs, output):
         ax.set_ylim(0, CELL)
         ax.set_title(f"{label}, t = {t:.4g} tau_d", fontsize=9)
     fig.tight_layout()
-    fig.savefig(os.path.join(output, "fig13_final.png"), dpi=150)
+    fig.savefig(os.path.join(output, "porous_gel_fig13.png"), dpi=150)
     plt.close(fig)
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__,
-                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+                                   formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--run", action="append", required=True, help="LABEL=DIR")
     parser.add_argument("--snapshots", help="output directory whose particles.pvd Fig. 11 shows")
-    parser.add_argument("--times", default="0,9.8,30,100,125,170,300,576.3",
+    parser.add_argument("--times", default="0,9.8,31,103,127,144,165,576.3",
                         help="t/tau_d of the Fig. 11 panels (nearest output times)")
     parser.add_argument("--output", required=True)
     arguments = parser.parse_args()
-    runs = [tuple(run.split("=", 1)) for run in arguments.run]
+    runs = [tuple(run.rsplit("=", 1)) for run in arguments.run]
     os.makedirs(arguments.output, exist_ok=True)
     figure_12a(runs[0][1], arguments.output)
     figure_12b(runs, arguments.output)

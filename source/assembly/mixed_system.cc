@@ -843,18 +843,22 @@ namespace GelMPM
               props[Layout::normal_area_n + d] = na[d];
             props[Layout::measure_n] = na.norm();
           }
-        // A point held normal to a grid edge (a roller or a fixed piece on the edge) crosses it
-        // by the small violation of the weakly imposed condition: keep it on the edge. Any other
+        // A point held normal to a grid edge (a roller or a fixed piece on the edge, or a contact
+        // plane there) crosses it by the small violation of the weakly imposed condition: keep it
+        // on the edge. So are volume points next to such an edge; where the edge is a free face,
+        // its surface points lie beyond the volume points and report the crossing. Any other
         // point beyond the edge is material the grid cannot carry.
         Point<dim> x = r.x + du;
         for (unsigned int d = 0; d < dim; ++d)
           {
             const auto  &basis     = spaces_.u_space().basis_1d(d);
             const double tolerance = 0.25 * basis.cell_size();
-            const bool   held      = r.projector[d][d] > 0.5;
-            if (held && x[d] < basis.x_min() && x[d] > basis.x_min() - tolerance)
+            const bool   held      = r.kind == PointKind::volume || r.projector[d][d] > 0.5;
+            if ((held || on_contact_plane(d, -1.)) && x[d] < basis.x_min() &&
+                x[d] > basis.x_min() - tolerance)
               x[d] = basis.x_min();
-            if (held && x[d] > basis.x_max() && x[d] < basis.x_max() + tolerance)
+            if ((held || on_contact_plane(d, 1.)) && x[d] > basis.x_max() &&
+                x[d] < basis.x_max() + tolerance)
               x[d] = basis.x_max();
             if (x[d] < basis.x_min() || x[d] > basis.x_max())
               throw std::runtime_error(
@@ -1008,6 +1012,16 @@ namespace GelMPM
         upper[d] = spaces_.u_space().basis_1d(d).x_max();
       }
     contact_planes = settings.planes(lower, upper);
+  }
+
+
+  template <int dim>
+  bool
+  MixedSystem<dim>::on_contact_plane(const unsigned int axis, const double sign) const
+  {
+    return std::any_of(contact_planes.begin(), contact_planes.end(), [&](const auto &plane) {
+      return plane.axis == axis && plane.sign == sign;
+    });
   }
 
 

@@ -280,6 +280,11 @@ namespace GelMPM
                              ScratchData                  &scratch,
                              CopyData                     &copy) const;
 
+    /** Whether the grid side of direction @p axis, lower (@p sign -1) or upper (+1), is a
+     * contact plane. */
+    bool
+    on_contact_plane(const unsigned int axis, const double sign) const;
+
     /** The contact terms of a surface point of a free piece (ContactSettings). */
     void
     add_plane_contact(const PointRecord &point,
