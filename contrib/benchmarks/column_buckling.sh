@@ -38,36 +38,25 @@ scene="${top}/prm/column_buckling.prm"
 echo "run,exit_status,wall_seconds" > "${out}/runs.csv"
 echo "column_buckling.sh: about $((2 + 10 * paper)) minutes on a 2-core machine; results in ${out}"
 
-run() {
-  local name="$1"
-  shift
-  local start status
-  start=$(date +%s%N)
-  set +e
-  "${build_dir}/gelmpm" "${scene}" --set "Output/Directory=${out}/${name}" "$@" > "${out}/${name}.log" 2>&1
-  status=$?
-  set -e
-  local wall
-  wall=$(awk -v a="${start}" -v b="$(date +%s%N)" 'BEGIN { printf "%.1f", (b - a) / 1e9 }')
-  echo "${name},${status},${wall}" >> "${out}/runs.csv"
-  echo "  ${name}: exit ${status}, ${wall} s; $(grep -m1 'loss of stability between' "${out}/${name}.log" || echo 'no onset bracketed')"
-}
+summary_pattern="loss of stability between"
+# shellcheck source=timed_run.sh
+source "${top}/contrib/benchmarks/timed_run.sh"
 
 coarse=(--set "Background grid/Cells=140, 80" --set "Material points/Points per cell=3"
         --set "Time stepping/Stop at times=0.2, 0.25, 0.3, 0.4, 0.6, 1, 2, 5, 10"
         --set "Time stepping/End time=20")
 for amplitude in 1e-4 1e-3 1e-2; do
-  run "amplitude_${amplitude}" "${coarse[@]}" --set "Stability/Perturbation amplitude=${amplitude}"
+  run_scene "amplitude_${amplitude}" "${coarse[@]}" --set "Stability/Perturbation amplitude=${amplitude}"
 done
-run onset_h0.1 --set "Background grid/Upper corner=18, 10" --set "Background grid/Cells=180, 100" \
+run_scene onset_h0.1 --set "Background grid/Upper corner=18, 10" --set "Background grid/Cells=180, 100" \
   --set "Material points/Points per cell=4" --set "Time stepping/End time=0.3"
 runs=(--run "1e-3 H=${out}/amplitude_1e-3" --run "1e-4 H=${out}/amplitude_1e-4"
       --run "1e-2 H=${out}/amplitude_1e-2")
 snapshots="${out}/amplitude_1e-3"
 times="0.2,0.25,0.3,0.4,0.6,1"
 if ((paper)); then
-  run paper
-  run onset_h0.025 --set "Background grid/Cells=700, 400" --set "Material points/Points per cell=4" \
+  run_scene paper
+  run_scene onset_h0.025 --set "Background grid/Cells=700, 400" --set "Material points/Points per cell=4" \
     --set "Time stepping/End time=0.27" --set "Time stepping/Stop at times=0.1, 0.2"
   runs=(--run "paper grid=${out}/paper" "${runs[@]}")
   snapshots="${out}/paper"
