@@ -55,14 +55,15 @@ namespace GelMPM
                       "configuration (a pore cut by the grid's edge, e.g. a quarter hole, is given "
                       "by its full circle's centre). Each surface point of the piece belongs to "
                       "the pore whose centre is nearest its initial position.");
-    prm.declare_entry("Crease angle",
-                      "60",
-                      dealii::Patterns::Double(0., 180.),
-                      "With 'Pore piece': a pore creases (event 'crease' in events.csv) when the "
-                      "polyline of its surface points turns by more than this angle (degrees) at "
-                      "one point, or crosses itself. Points d apart on a smooth surface of "
-                      "curvature radius r turn by d/r (a few degrees); a crease turns at once "
-                      "(column pore_turning_k).");
+    prm.declare_entry(
+      "Crease angle",
+      "60",
+      dealii::Patterns::Double(0., 180.),
+      "With 'Pore piece': a pore creases (event 'crease' in events.csv) when the "
+      "polyline of its surface points turns by more than this angle (degrees) at "
+      "a new place (column pore_creases_k counts them), or crosses itself. Points d apart on a smooth surface of "
+      "curvature radius r turn by d/r (a few degrees); a crease turns at once "
+      "(column pore_turning_k).");
     prm.declare_entry("Volume ratio range",
                       "false",
                       dealii::Patterns::Bool(),
@@ -191,6 +192,8 @@ namespace GelMPM
           c.push_back("pore_curvature_" + std::to_string(k + 1));
         for (unsigned int k = 0; k < pore_centres.size(); ++k)
           c.push_back("pore_turning_" + std::to_string(k + 1));
+        for (unsigned int k = 0; k < pore_centres.size(); ++k)
+          c.push_back("pore_creases_" + std::to_string(k + 1));
         if (!contact_planes.empty())
           for (unsigned int k = 0; k < pore_centres.size(); ++k)
             c.push_back("pore_contact_" + std::to_string(k + 1));
@@ -240,6 +243,7 @@ namespace GelMPM
             statistics.set("pore_ratio_" + number, shapes[k].ratio);
             statistics.set("pore_curvature_" + number, shapes[k].curvature);
             statistics.set("pore_turning_" + number, shapes[k].turning * 180. / M_PI);
+            statistics.set("pore_creases_" + number, shapes[k].creases);
             if (!contact_planes.empty())
               statistics.set("pore_contact_" + number, shapes[k].contact_points);
           }
@@ -357,8 +361,8 @@ namespace GelMPM
         const double R      = radius[k] / ordered[k].size();
         shapes[k].curvature = PoreGeometry::largest_curvature(polyline) * R;
         shapes[k].turning   = PoreGeometry::largest_turning(polyline);
-        shapes[k].crease =
-          shapes[k].turning > crease_angle || PoreGeometry::self_intersects(polyline);
+        shapes[k].creases   = std::max(PoreGeometry::sharp_corners(polyline, crease_angle),
+                                     PoreGeometry::self_intersects(polyline) ? 1u : 0u);
       }
     return shapes;
   }
@@ -374,15 +378,16 @@ namespace GelMPM
     double     mu_mean = 0.;
     const auto shapes  = pore_shapes(particles, mu_mean);
     contact_seen.resize(shapes.size(), false);
-    crease_seen.resize(shapes.size(), false);
+    creases_seen.resize(shapes.size(), 0);
     for (unsigned int k = 0; k < shapes.size(); ++k)
       {
         if (shapes[k].contact_points > 0 && !contact_seen[k])
           events.emplace_back("self_contact", k + 1);
-        if (shapes[k].crease && !crease_seen[k])
+        // A crease is new when the pore has more sharp corners than it ever had.
+        for (unsigned int c = creases_seen[k]; c < shapes[k].creases; ++c)
           events.emplace_back("crease", k + 1);
         contact_seen[k] = contact_seen[k] || shapes[k].contact_points > 0;
-        crease_seen[k]  = crease_seen[k] || shapes[k].crease;
+        creases_seen[k] = std::max(creases_seen[k], shapes[k].creases);
       }
     return events;
   }

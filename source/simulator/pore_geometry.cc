@@ -27,6 +27,17 @@ namespace GelMPM
         const double d3 = cross(s - r, p - r), d4 = cross(s - r, q - r);
         return d1 * d2 < 0. && d3 * d4 < 0.;
       }
+
+      /** The angle (0 ... pi) between the segments before and after point @p i. */
+      double
+      turning_at(const std::vector<dealii::Point<2>> &polyline, const unsigned int i)
+      {
+        const auto a = polyline[i] - polyline[i - 1];
+        const auto b = polyline[i + 1] - polyline[i];
+        if (a.norm() == 0. || b.norm() == 0.)
+          return 0.;
+        return std::atan2(std::abs(cross(a, b)), a * b);
+      }
     } // namespace
 
 
@@ -52,13 +63,23 @@ namespace GelMPM
     {
       double largest = 0.;
       for (unsigned int i = 1; i + 1 < polyline.size(); ++i)
-        {
-          const auto a = polyline[i] - polyline[i - 1];
-          const auto b = polyline[i + 1] - polyline[i];
-          if (a.norm() > 0. && b.norm() > 0.)
-            largest = std::max(largest, std::atan2(std::abs(cross(a, b)), a * b));
-        }
+        largest = std::max(largest, turning_at(polyline, i));
       return largest;
+    }
+
+
+    unsigned int
+    sharp_corners(const std::vector<dealii::Point<2>> &polyline, const double angle)
+    {
+      unsigned int corners  = 0;
+      bool         in_sharp = false;
+      for (unsigned int i = 1; i + 1 < polyline.size(); ++i)
+        {
+          const bool sharp = turning_at(polyline, i) > angle;
+          corners += sharp && !in_sharp;
+          in_sharp = sharp;
+        }
+      return corners;
     }
 
 

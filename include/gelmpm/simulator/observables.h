@@ -30,14 +30,14 @@ namespace GelMPM
    *   pieces = bottom, top", the vector between the mean positions of the two pieces' surface
    *   points minus its initial value, and its length (paper §4.3, Fig. 10a).
    * - Pore shapes (columns pore_ratio_1 ... pore_ratio_N, pore_curvature_1 ... _N,
-   *   pore_turning_1 ... _N, (pore_contact_1 ... _N), mu_boundary): with "Pore piece" and "Pore
-   * centres", each pore's extent along x over its extent along y, from the current positions of the
-   * piece's surface points nearest (initially) to its centre; the largest curvature of the polyline
-   * of these points, ordered by their initial angle about the centre, times the pore's initial
-   * radius (PoreGeometry, Fig. 12b), and its largest turning angle in degrees (pore_turning_k, a
-   *   crease beyond 'Crease angle'); with contact planes, the number of its points on a plane; and
-   * the mean mu over the piece (paper §4.4: the holes turning into alternating ellipses, closing
-   *   and creasing).
+   *   pore_turning_1 ... _N, pore_creases_1 ... _N, (pore_contact_1 ... _N), mu_boundary): with
+   * "Pore piece" and "Pore centres", each pore's extent along x over its extent along y, from the
+   * current positions of the piece's surface points nearest (initially) to its centre; the largest
+   * curvature of the polyline of these points, ordered by their initial angle about the centre,
+   * times the pore's initial radius (PoreGeometry, Fig. 12b), and its largest turning angle in
+   * degrees (pore_turning_k, a crease beyond 'Crease angle'); with contact planes, the number of
+   * its points on a plane; and the mean mu over the piece (paper §4.4: the holes turning into
+   * alternating ellipses, closing and creasing).
    * - Volume ratio range (columns J_min, J_mean, J_max): the extremes and the V_0-weighted mean of
    *   J (dry state to current) over the volume points; the spread measures how far a state is
    *   from homogeneous (patch tests).
@@ -90,7 +90,8 @@ namespace GelMPM
     /**
      * With 'Pore piece': the events of the pores that happened since the last call, as (name,
      * pore number from 1): 'self_contact' when a pore first touches a contact plane, 'crease' when
-     * its surface polyline first turns by more than 'Crease angle' at a point or crosses itself.
+     * its surface polyline turns by more than 'Crease angle' at one more place than ever before (or
+     * first crosses itself).
      */
     std::vector<std::pair<std::string, unsigned int>>
     new_events(const dealii::Particles::ParticleHandler<dim> &particles);
@@ -102,7 +103,7 @@ namespace GelMPM
       double       ratio          = 0.;
       double       curvature      = 0.;
       double       turning        = 0.; // radians
-      bool         crease         = false;
+      unsigned int creases        = 0;  // sharp corners of its surface polyline
       unsigned int contact_points = 0;
     };
 
@@ -134,7 +135,8 @@ namespace GelMPM
     std::vector<dealii::Point<dim>>     pore_centres;
     std::vector<ContactSettings::Plane> contact_planes;
     double                              contact_tolerance = 0.;
-    std::vector<bool>                   contact_seen, crease_seen;
+    std::vector<bool>                   contact_seen;
+    std::vector<unsigned int>           creases_seen;
     double                              crease_angle        = M_PI / 3.;
     unsigned int                        thickness_direction = 1;
     bool                                volume_ratio_range  = false;

@@ -30,6 +30,13 @@ namespace GelMPM
     double
     largest_turning(const std::vector<dealii::Point<2>> &polyline);
 
+    /**
+     * The number of sharp corners: runs of consecutive points at which the polyline turns by more
+     * than @p angle (radians); a corner resolved by several points counts once.
+     */
+    unsigned int
+    sharp_corners(const std::vector<dealii::Point<2>> &polyline, const double angle);
+
     /** Whether two segments of the polyline that do not share a point cross each other. */
     bool
     self_intersects(const std::vector<dealii::Point<2>> &polyline);
