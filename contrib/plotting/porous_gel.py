@@ -143,7 +143,7 @@ def figure_11(directory, times, output):
         ax.set_ylim(-CELL, 2 * CELL)
         ax.set_title(f"t = {t:.4g} tau_d", fontsize=9)
     fig.tight_layout()
-    fig.savefig(os.path.join(output, "porous_gel_fig11.png"), dpi=150)
+    fig.savefig(os.path.join(output, "porous_gel_fig11.png"), dpi=90)
     plt.close(fig)
 
 
@@ -200,7 +200,7 @@ def figure_13(runs, output):
         ax.set_ylim(0, CELL)
         ax.set_title(f"{label}, t = {t:.4g} tau_d", fontsize=9)
     fig.tight_layout()
-    fig.savefig(os.path.join(output, "porous_gel_fig13.png"), dpi=150)
+    fig.savefig(os.path.join(output, "porous_gel_fig13.png"), dpi=100)
     plt.close(fig)
 
 
