@@ -116,10 +116,30 @@ namespace GelMPM
   void
   MixedSystem<dim>::setup(dealii::Particles::ParticleHandler<dim> &particle_handler)
   {
-    using Layout        = PropertyLayout<dim>;
-    const auto &u_space = spaces_.u_space();
+    classify_cells(particle_handler);
 
-    // Pass 1: the cells that hold volume points decide the classification (§3.5).
+    std::vector<PointRecord>                                                         unsorted;
+    std::vector<typename dealii::Particles::ParticleHandler<dim>::particle_iterator> its;
+    std::vector<unsigned int>                                                        cells;
+    unsorted.reserve(particle_handler.n_locally_owned_particles());
+    for (auto particle = particle_handler.begin(); particle != particle_handler.end(); ++particle)
+      {
+        unsorted.push_back(unpack_point(*particle));
+        its.push_back(particle);
+        cells.push_back(cell_of_point(unsorted.back()));
+      }
+    group_points(unsorted, its, cells);
+    evaluate_shape_functions();
+    build_sparsity_pattern();
+  }
+
+
+  template <int dim>
+  void
+  MixedSystem<dim>::classify_cells(const dealii::Particles::ParticleHandler<dim> &particle_handler)
+  {
+    // The cells that hold volume points decide the classification (§3.5).
+    const auto       &u_space = spaces_.u_space();
     std::vector<bool> has_material(u_space.n_cells(), false);
     for (const auto &particle : particle_handler)
       {
@@ -135,71 +155,87 @@ namespace GelMPM
                                      " has left the background grid; enlarge 'Background "
                                      "grid/Lower corner' and 'Upper corner'");
           }
-        if (static_cast<PointKind>(std::lround(particle.get_properties()[Layout::kind])) ==
-            PointKind::volume)
+        if (kind_of(particle.get_properties()) == PointKind::volume)
           has_material[cell] = true;
       }
     spaces_.reinit(has_material);
     n_active_cells_ = std::count(has_material.begin(), has_material.end(), true);
+  }
 
-    // Pass 2: one record per point, grouped by displacement cell.
-    std::vector<PointRecord>                                                         unsorted;
-    std::vector<typename dealii::Particles::ParticleHandler<dim>::particle_iterator> its;
-    std::vector<unsigned int>                                                        cells;
-    unsorted.reserve(particle_handler.n_locally_owned_particles());
-    for (auto particle = particle_handler.begin(); particle != particle_handler.end(); ++particle)
+
+  template <int dim>
+  typename MixedSystem<dim>::PointRecord
+  MixedSystem<dim>::unpack_point(const dealii::Particles::ParticleAccessor<dim> &particle) const
+  {
+    using Layout      = PropertyLayout<dim>;
+    const auto  props = particle.get_properties();
+    PointRecord r;
+    r.kind    = kind_of(props);
+    r.piece   = piece_of(props);
+    r.measure = props[Layout::measure_n];
+    r.x       = particle.get_location();
+    for (unsigned int d = 0; d < dim; ++d)
       {
-        const auto  props = particle->get_properties();
-        PointRecord r;
-        r.kind    = static_cast<PointKind>(std::lround(props[Layout::kind]));
-        r.piece   = static_cast<int>(std::lround(props[Layout::piece]));
-        r.measure = props[Layout::measure_n];
-        r.x       = particle->get_location();
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            r.u_n[d]     = r.x[d] - props[Layout::position_0 + d];
-            r.du_last[d] = props[Layout::increment + d];
-          }
-        for (unsigned int i = 0; i < dim; ++i)
-          for (unsigned int j = 0; j < dim; ++j)
-            r.F_p[i][j] = props[Layout::F + i * dim + j];
-        r.mu_n      = props[Layout::mu];
-        r.mobility  = material.mobility(r.F_p);
-        r.assembled = (r.kind == PointKind::volume) || (r.piece >= 0);
-        if (r.kind != PointKind::volume)
-          {
-            Tensor<1, dim> na;
-            for (unsigned int d = 0; d < dim; ++d)
-              na[d] = props[Layout::normal_area_n + d];
-            r.measure = na.norm();
-            r.normal  = na / r.measure;
-            if (r.piece >= 0)
-              {
-                // A roller or a tangential constraint acts along the wall the surface started
-                // on: the directions come from the reference normal N_0 and apply to the total
-                // displacement. With the current normal N_n instead, a tilt of the surface by
-                // round-off turns part of the accumulated displacement into a lateral gap, and
-                // the correction tilts the surface further: a growing mode (doc/method.md).
-                Tensor<1, dim> na0;
-                for (unsigned int d = 0; d < dim; ++d)
-                  na0[d] = props[Layout::normal_area_0 + d];
-                r.projector = constraint_projector<dim>(
-                  boundary_conditions.piece(r.piece).displacement_condition,
-                  na0 / na0.norm());
-              }
-          }
-        const unsigned int cell = (r.kind == PointKind::volume)
-                                    ? u_space.cell_containing(r.x)
-                                    : spaces_.active_u_cell_containing(r.x);
-        if (cell == dealii::numbers::invalid_unsigned_int)
-          throw std::runtime_error("the surface point at " + format_point(r.x) +
-                                   " lies in no background cell that holds volume points; the "
-                                   "surface has separated from the bulk");
-        unsorted.push_back(r);
-        its.push_back(particle);
-        cells.push_back(cell);
+        r.u_n[d]     = r.x[d] - props[Layout::position_0 + d];
+        r.du_last[d] = props[Layout::increment + d];
       }
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        r.F_p[i][j] = props[Layout::F + i * dim + j];
+    r.mu_n      = props[Layout::mu];
+    r.mobility  = material.mobility(r.F_p);
+    r.assembled = (r.kind == PointKind::volume) || (r.piece >= 0);
+    if (r.kind != PointKind::volume)
+      {
+        Tensor<1, dim> na;
+        for (unsigned int d = 0; d < dim; ++d)
+          na[d] = props[Layout::normal_area_n + d];
+        r.measure = na.norm();
+        r.normal  = na / r.measure;
+        if (r.piece >= 0)
+          {
+            // A roller or a tangential constraint acts along the wall the surface started
+            // on: the directions come from the reference normal N_0 and apply to the total
+            // displacement. With the current normal N_n instead, a tilt of the surface by
+            // round-off turns part of the accumulated displacement into a lateral gap, and
+            // the correction tilts the surface further: a growing mode (doc/method.md).
+            Tensor<1, dim> na0;
+            for (unsigned int d = 0; d < dim; ++d)
+              na0[d] = props[Layout::normal_area_0 + d];
+            r.projector =
+              constraint_projector<dim>(boundary_conditions.piece(r.piece).displacement_condition,
+                                        na0 / na0.norm());
+          }
+      }
+    return r;
+  }
 
+
+  template <int dim>
+  unsigned int
+  MixedSystem<dim>::cell_of_point(const PointRecord &r) const
+  {
+    // A surface point may sit in a cell without volume points; it belongs to the active cell
+    // next to it, whose extended functions reach it.
+    const unsigned int cell = (r.kind == PointKind::volume) ? spaces_.u_space().cell_containing(r.x)
+                                                            : spaces_.active_u_cell_containing(r.x);
+    if (cell == dealii::numbers::invalid_unsigned_int)
+      throw std::runtime_error("the surface point at " + format_point(r.x) +
+                               " lies in no background cell that holds volume points; the "
+                               "surface has separated from the bulk");
+    return cell;
+  }
+
+
+  template <int dim>
+  void
+  MixedSystem<dim>::group_points(
+    const std::vector<PointRecord> &unsorted,
+    const std::vector<typename dealii::Particles::ParticleHandler<dim>::particle_iterator> &its,
+    const std::vector<unsigned int>                                                        &cells)
+  {
+    // Stable: within a cell the points keep the handler's order, so that sums over them (and
+    // with them the results) do not depend on the sort.
     std::vector<unsigned int> order(unsorted.size());
     std::iota(order.begin(), order.end(), 0u);
     std::stable_sort(order.begin(), order.end(), [&](const unsigned int a, const unsigned int b) {
@@ -228,12 +264,17 @@ namespace GelMPM
         particles.push_back(its[i]);
         blocks.back().end = points.size();
       }
-
-    // Shape data: fixed over the Newton iterations of the step.
     u_values.resize(n_u_shapes);
     u_gradients.resize(n_u_shapes);
     mu_values.resize(n_mu_shapes);
     mu_gradients.resize(n_mu_shapes);
+  }
+
+
+  template <int dim>
+  void
+  MixedSystem<dim>::evaluate_shape_functions()
+  {
     // Every point writes its own ranges of the arrays: evaluate them in parallel.
     dealii::parallel::apply_to_subranges(
       0u,
@@ -266,8 +307,14 @@ namespace GelMPM
           }
       },
       256);
+  }
 
-    // Sparsity: every unknown of a cell with points couples with every other one of that cell.
+
+  template <int dim>
+  void
+  MixedSystem<dim>::build_sparsity_pattern()
+  {
+    // Every unknown of a cell with points couples with every other one of that cell.
     const unsigned int                           n_u = spaces_.n_u_dofs();
     dealii::DynamicSparsityPattern               pattern(spaces_.n_dofs(), spaces_.n_dofs());
     std::vector<dealii::types::global_dof_index> dofs;

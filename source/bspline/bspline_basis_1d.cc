@@ -1,4 +1,5 @@
 #include <gelmpm/bspline/bspline_basis_1d.h>
+#include <gelmpm/core/round_off.h>
 
 #include <deal.II/lac/lapack_full_matrix.h>
 
@@ -61,7 +62,7 @@ namespace GelMPM
   unsigned int
   BSplineBasis1D::cell_of(const double x) const
   {
-    const double tolerance = 1e-12 * (x_max_ - x_min_);
+    const double tolerance = relative_position_tolerance * (x_max_ - x_min_);
     if (!(x >= x_min_ - tolerance && x <= x_max_ + tolerance))
       throw std::out_of_range("point outside the B-spline interval");
     const double s = std::floor((x - x_min_) / h);

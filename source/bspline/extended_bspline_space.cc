@@ -197,11 +197,13 @@ namespace GelMPM
                   const double offset = kk[d] - (l[d] + 0.5 * q);
                   centre += offset * offset;
                 }
-              // Strictly better, or equal and lexicographically earlier (x fastest).
-              bool better = distance < best_distance - 1e-12 ||
-                            (distance < best_distance + 1e-12 && centre < best_centre - 1e-12);
-              if (!better && found && std::abs(distance - best_distance) < 1e-12 &&
-                  std::abs(centre - best_centre) < 1e-12)
+              // Strictly better, or equal and lexicographically earlier (x fastest). Both
+              // measures are sums of squared (half-)integers, so a tie is exact up to round-off.
+              constexpr double tie    = 1e-12;
+              bool             better = distance < best_distance - tie ||
+                            (distance < best_distance + tie && centre < best_centre - tie);
+              if (!better && found && std::abs(distance - best_distance) < tie &&
+                  std::abs(centre - best_centre) < tie)
                 for (int d = dim - 1; d >= 0; --d)
                   if (l[d] != best[d])
                     {
@@ -362,14 +364,6 @@ namespace GelMPM
   ExtendedBSplineSpace<dim>::cell_dofs(const unsigned int cell) const
   {
     return dofs_of_cell[cell];
-  }
-
-
-  template <int dim>
-  const dealii::FullMatrix<double> &
-  ExtendedBSplineSpace<dim>::cell_extension_matrix(const unsigned int cell) const
-  {
-    return matrix_of_cell[cell];
   }
 
 

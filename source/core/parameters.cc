@@ -158,6 +158,14 @@ namespace GelMPM
       return message.substr(begin + 1, end - begin - 1);
     }
 
+    /** Leave @p n subsections of @p prm (the sections an override entered). */
+    void
+    leave_sections(dealii::ParameterHandler &prm, const std::size_t n)
+    {
+      for (std::size_t i = 0; i < n; ++i)
+        prm.leave_subsection();
+    }
+
     /** A fix for what deal.II reported in @p message, as specific as the message allows. */
     std::string
     fix_for(const dealii::ParameterHandler &prm, const std::string &message)
@@ -374,24 +382,6 @@ namespace GelMPM
         throw InputError("", "in scene file: " + describe(e), fix_for(prm, describe(e)));
       }
     apply_overrides(prm, overrides, skip_undefined);
-  }
-
-
-  unsigned int
-  enter_sections(dealii::ParameterHandler &prm, const std::string &path)
-  {
-    const auto parts = dealii::Utilities::split_string_list(path, '/');
-    for (const auto &p : parts)
-      prm.enter_subsection(p);
-    return parts.size();
-  }
-
-
-  void
-  leave_sections(dealii::ParameterHandler &prm, const unsigned int n)
-  {
-    for (unsigned int i = 0; i < n; ++i)
-      prm.leave_subsection();
   }
 
 

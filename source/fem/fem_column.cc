@@ -1,3 +1,4 @@
+#include <gelmpm/core/round_off.h>
 #include <gelmpm/fem/fem_column.h>
 
 #include <deal.II/grid/grid_generator.h>
@@ -70,7 +71,7 @@ namespace GelMPM
   {
     // Times are in tau_d of the width; another length would silently rescale the ramp.
     if (std::abs(time_stepping.characteristic_length - characteristic_length()) >
-        1e-12 * characteristic_length())
+        relative_position_tolerance * characteristic_length())
       throw std::invalid_argument("the column's times are in tau_d = (H/2)^2/D: 'Characteristic "
                                   "length' must be " +
                                   std::to_string(characteristic_length()));

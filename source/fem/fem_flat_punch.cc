@@ -1,3 +1,4 @@
+#include <gelmpm/core/round_off.h>
 #include <gelmpm/fem/fem_flat_punch.h>
 
 #include <deal.II/grid/grid_generator.h>
@@ -124,7 +125,7 @@ namespace GelMPM
       return a.X[0] < b.X[0];
     });
     // Face ends appear once per face: keep one.
-    const double tolerance = 1e-12 * parameters.size;
+    const double tolerance = relative_position_tolerance * parameters.size;
     samples.erase(std::unique(samples.begin(),
                               samples.end(),
                               [&](const auto &a, const auto &b) {

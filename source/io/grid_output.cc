@@ -31,8 +31,7 @@ namespace GelMPM
   {
     std::vector<unsigned int> count(space.n_cells(), 0);
     for (const auto &particle : particles)
-      if (std::lround(particle.get_properties()[PropertyLayout<dim>::kind]) ==
-          static_cast<long>(PointKind::volume))
+      if (kind_of(particle.get_properties()) == PointKind::volume)
         ++count[space.cell_containing(particle.get_location())];
     return count;
   }

@@ -26,6 +26,12 @@ namespace GelMPM
 
   namespace
   {
+    /**
+     * Relative distance above the dry state (J = 1) at which a bracket for a swelling stretch
+     * starts: the energy is undefined at J = 1 itself, and the stretch sought is far above it.
+     */
+    constexpr double above_dry_state = 1e-12;
+
     /** Root of a continuous function increasing on [lo, hi] with f(lo) < 0 < f(hi). */
     double
     bisect(const std::function<double(double)> &f, double lo, double hi)
@@ -434,7 +440,7 @@ namespace GelMPM
         F[d][d] = lambda_0_ * l;
       return stress(F, mu)[0][0];
     };
-    double lo = std::pow(lambda_0_, -3. / dim) * (1. + 1e-12), hi = 2.;
+    double lo = std::pow(lambda_0_, -3. / dim) * (1. + above_dry_state), hi = 2.;
     while (P11(hi) < 0.)
       hi *= 2.;
     return bisect(P11, lo, hi);
@@ -452,7 +458,7 @@ namespace GelMPM
       F[1][1] = lambda_0_ * l;
       return stress(F, mu)[1][1];
     };
-    double lo = std::pow(lambda_0_, -3.) * (1. + 1e-12), hi = 2.;
+    double lo = std::pow(lambda_0_, -3.) * (1. + above_dry_state), hi = 2.;
     while (P22(hi) < 0.)
       hi *= 2.;
     return bisect(P22, lo, hi);

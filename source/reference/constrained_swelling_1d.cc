@@ -18,6 +18,18 @@ dgtsv_(const int *n,
 
 namespace GelMPM
 {
+  namespace
+  {
+    /**
+     * Relative tolerance of "the step reached its full size": the reference is independent of the
+     * solvers module on purpose, so it keeps its own copy of their time tolerance.
+     */
+    constexpr double relative_time_tolerance = 1e-12;
+
+    /** How far above J = 1 (the mixing energy's domain) a damped Newton state must stay. */
+    constexpr double above_dry_state = 1e-12;
+  } // namespace
+
   ConstrainedSwelling1D::ConstrainedSwelling1D(const Parameters &parameters)
     : parameters(parameters)
     , dt_next(parameters.first_step)
@@ -69,7 +81,7 @@ namespace GelMPM
       hi *= 2.;
     for (unsigned int k = 0; k < 200 && hi - lo > 1e-15 * hi; ++k)
       {
-        const double mid = 0.5 * (lo + hi);
+        const double mid                         = 0.5 * (lo + hi);
         (chemical_potential(mid) < mu ? lo : hi) = mid;
       }
     return 0.5 * (lo + hi);
@@ -103,7 +115,7 @@ namespace GelMPM
           dt = std::min(dt, 2. * dt_old);
         if (t_end - t - dt < 1e-3 * dt)
           dt = t_end - t;
-        const bool full = dt >= dt_next * (1. - 1e-12);
+        const bool full = dt >= dt_next * (1. - relative_time_tolerance);
         step(dt);
         if (full)
           dt_next *= parameters.growth;
@@ -153,11 +165,12 @@ namespace GelMPM
         // Fluxes q_{i+1/2} = k_mid (mu_{i+1} - mu_i) / (Y_{i+1} - Y_i) between nodes i, i+1.
         for (unsigned int i = 0; i < n; ++i)
           {
-            const double h      = Y[i + 1] - Y[i];
-            const double k_mid  = 0.5 * (k[i] + k[i + 1]);
-            const double q      = k_mid * (mu[i + 1] - mu[i]) / h;
-            const double dq_di  = 0.5 * dk[i] * (mu[i + 1] - mu[i]) / h - k_mid * dmu[i] / h;
-            const double dq_di1 = 0.5 * dk[i + 1] * (mu[i + 1] - mu[i]) / h + k_mid * dmu[i + 1] / h;
+            const double h     = Y[i + 1] - Y[i];
+            const double k_mid = 0.5 * (k[i] + k[i + 1]);
+            const double q     = k_mid * (mu[i + 1] - mu[i]) / h;
+            const double dq_di = 0.5 * dk[i] * (mu[i + 1] - mu[i]) / h - k_mid * dmu[i] / h;
+            const double dq_di1 =
+              0.5 * dk[i + 1] * (mu[i + 1] - mu[i]) / h + k_mid * dmu[i + 1] / h;
             residual[i] -= q;
             diagonal[i] -= dq_di;
             if (i + 1 < n)
@@ -171,7 +184,14 @@ namespace GelMPM
         // dgtsv overwrites the diagonals and returns the update in place of the residual.
         const int size = n, one = 1;
         int       info = 0;
-        dgtsv_(&size, &one, lower.data(), diagonal.data(), upper.data(), residual.data(), &size, &info);
+        dgtsv_(&size,
+               &one,
+               lower.data(),
+               diagonal.data(),
+               upper.data(),
+               residual.data(),
+               &size,
+               &info);
         if (info != 0)
           throw std::runtime_error("ConstrainedSwelling1D: singular Jacobian at t = " +
                                    std::to_string(t));
@@ -180,12 +200,14 @@ namespace GelMPM
         const double l03   = std::pow(parameters.lambda_0, 3);
         double       alpha = 1.;
         for (unsigned int i = 0; i < n; ++i)
-          while (l03 * (next[i] - alpha * update[i]) <= 1. + 1e-12)
+          while (l03 * (next[i] - alpha * update[i]) <= 1. + above_dry_state)
             alpha *= 0.5;
         for (unsigned int i = 0; i < n; ++i)
           next[i] -= alpha * update[i];
-        const double largest = std::abs(*std::max_element(
-          update.begin(), update.end(), [](double x, double y) { return std::abs(x) < std::abs(y); }));
+        const double largest =
+          std::abs(*std::max_element(update.begin(), update.end(), [](double x, double y) {
+            return std::abs(x) < std::abs(y);
+          }));
         converged = alpha == 1. && largest < 1e-13 * lambda_top;
       }
     if (!converged)

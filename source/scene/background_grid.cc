@@ -1,5 +1,6 @@
 #include <gelmpm/core/input_error.h>
 #include <gelmpm/core/parameters.h>
+#include <gelmpm/core/round_off.h>
 #include <gelmpm/scene/background_grid.h>
 
 #include <deal.II/grid/grid_generator.h>
@@ -94,7 +95,7 @@ namespace GelMPM
   {
     for (unsigned int d = 0; d < dim; ++d)
       {
-        const double tolerance = 1e-12 * (upper[d] - lower[d]);
+        const double tolerance = relative_position_tolerance * (upper[d] - lower[d]);
         if (p[d] < lower[d] - tolerance || p[d] > upper[d] + tolerance)
           return false;
       }

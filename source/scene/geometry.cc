@@ -1,4 +1,5 @@
 #include <gelmpm/core/input_error.h>
+#include <gelmpm/core/round_off.h>
 #include <gelmpm/scene/geometry.h>
 
 #include <deal.II/base/utilities.h>
@@ -216,7 +217,7 @@ namespace GelMPM
             for (unsigned int k = 0; k + 1 < breaks.size(); ++k)
               {
                 const double length = breaks[k + 1] - breaks[k];
-                if (length <= 1e-12 * L)
+                if (length <= relative_position_tolerance * L)
                   continue;
                 const unsigned int m =
                   std::max(1u, static_cast<unsigned int>(std::ceil(length / spacing - 1e-9)));
@@ -255,7 +256,7 @@ namespace GelMPM
         for (unsigned int k = 0; k + 1 < breaks.size(); ++k)
           {
             const double span = breaks[k + 1] - breaks[k];
-            if (span <= 1e-12)
+            if (span <= relative_position_tolerance) // radians
               continue;
             const unsigned int m =
               std::max(1u, static_cast<unsigned int>(std::ceil(span * radius / spacing - 1e-9)));

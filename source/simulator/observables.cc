@@ -278,7 +278,7 @@ namespace GelMPM
     for (const auto &particle : particles)
       {
         const auto props = particle.get_properties();
-        const int  piece = static_cast<int>(std::lround(props[Layout::piece]));
+        const int  piece = piece_of(props);
         for (unsigned int k = 0; k < 2; ++k)
           if (piece == pair[k])
             {
@@ -316,7 +316,7 @@ namespace GelMPM
     for (const auto &particle : particles)
       {
         const auto props = particle.get_properties();
-        if (static_cast<int>(std::lround(props[Layout::piece])) != pore_piece)
+        if (piece_of(props) != pore_piece)
           continue;
         dealii::Point<dim> X_0;
         for (unsigned int d = 0; d < dim; ++d)
@@ -428,7 +428,7 @@ namespace GelMPM
     for (const auto &particle : particles)
       {
         const auto props = particle.get_properties();
-        if (std::lround(props[Layout::kind]) != static_cast<long>(PointKind::volume))
+        if (kind_of(props) != PointKind::volume)
           continue;
         dealii::Tensor<2, dim> F;
         for (unsigned int i = 0; i < dim; ++i)
@@ -459,7 +459,7 @@ namespace GelMPM
     for (const auto &particle : particles)
       {
         const auto props = particle.get_properties();
-        if (std::lround(props[Layout::kind]) == static_cast<long>(PointKind::volume))
+        if (kind_of(props) == PointKind::volume)
           points.push_back(
             {{props[Layout::position_0 + dim - 1], props[Layout::position_0], props[Layout::mu]}});
       }

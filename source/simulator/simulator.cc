@@ -26,14 +26,7 @@ namespace GelMPM
   {
     SceneStructure::declare_parameters(prm);
     OutputSettings::declare_parameters(prm);
-    FloryRehnerGel<dim>::declare_parameters(prm);
-    BackgroundGrid<dim>::declare_parameters(prm);
-    Geometry<dim>::declare_parameters(prm);
-    BoundaryConditions<dim>::declare_parameters(prm, structure.boundary_pieces);
-    MaterialPointGenerator<dim>::declare_parameters(prm);
-    DiscretisationSettings::declare_parameters(prm);
-    NitscheSettings::declare_parameters(prm);
-    ContactSettings::declare_parameters(prm);
+    Scene<dim>::declare_parameters(prm, structure.boundary_pieces);
     LinearSolver::declare_parameters(prm);
     NewtonSettings::declare_parameters(prm);
     TimeStepping::declare_parameters(prm);
@@ -47,25 +40,18 @@ namespace GelMPM
                             const SceneStructure     &structure,
                             const std::string        &scene_file)
     : structure(structure)
+    , scene(prm, structure.boundary_pieces)
     , scene_file(scene_file)
     , pcout(std::cout, dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
     , timer(pcout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times)
   {
     output_settings.parse_parameters(prm);
-    material.parse_parameters(prm);
-    grid.parse_parameters(prm);
-    geometry.parse_parameters(prm);
-    boundary_conditions.parse_parameters(prm, structure.boundary_pieces);
-    generator.parse_parameters(prm);
-    discretisation.parse_parameters(prm);
-    nitsche.parse_parameters(prm);
-    contact.parse_parameters(prm, dim);
     linear_solver.parse_parameters(prm);
     newton.parse_parameters(prm);
     time_stepping.parse_parameters(prm);
     observables.parse_parameters(prm, structure.boundary_pieces);
     stability.parse_parameters(prm);
-    require(!stability.enabled() || nitsche.symmetry > 0.,
+    require(!stability.enabled() || scene.nitsche.symmetry > 0.,
             "Stability/Inertia",
             "needs a symmetric tangent, but 'Nitsche/Variant = skew-symmetric'",
             "use the symmetric Nitsche variant or switch the stability analysis off");
@@ -77,7 +63,6 @@ namespace GelMPM
     // subdivision are reported here, before anything is written).
     // The material points too: a body outside the grid or a piece that selects nothing is
     // bad input, found here.
-    spaces = std::make_unique<DiscreteSpaces<dim>>(grid, discretisation);
     create_material_points();
     check_grid_resolves_body();
     check_boundary_values();
@@ -95,13 +80,14 @@ namespace GelMPM
   {
     // The first step builds the extended bases of the initial configuration: build them here,
     // where a grid too coarse for the body is still bad input.
-    const auto volume_points = GridOutput<dim>::count_volume_points(particles, spaces->u_space());
+    const auto volume_points =
+      GridOutput<dim>::count_volume_points(scene.particles, scene.spaces->u_space());
     std::vector<bool> has_material(volume_points.size());
     for (unsigned int c = 0; c < has_material.size(); ++c)
       has_material[c] = volume_points[c] > 0;
     try
       {
-        spaces->reinit(has_material);
+        scene.spaces->reinit(has_material);
       }
     catch (const std::runtime_error &e)
       {
@@ -119,11 +105,11 @@ namespace GelMPM
     // Up to 64 surface points spread over each piece and times over the run: enough to catch
     // an expression that is not finite (1/0, log(-1)) before the run cuts its steps without
     // saying why.
-    std::vector<std::vector<dealii::Point<dim>>> points(boundary_conditions.n_pieces());
-    for (const auto &p : particles)
+    std::vector<std::vector<dealii::Point<dim>>> points(scene.boundary_conditions.n_pieces());
+    for (const auto &p : scene.particles)
       {
         const auto props = p.get_properties();
-        const int  piece = static_cast<int>(std::lround(props[PropertyLayout<dim>::piece]));
+        const int  piece = piece_of(props);
         if (piece < 0)
           continue;
         dealii::Point<dim> x;
@@ -141,9 +127,9 @@ namespace GelMPM
     std::vector<double> times;
     for (unsigned int k = 0; k <= 8; ++k)
       times.push_back(time_stepping.end_time * k / 8.);
-    const double largest_mu = material.largest_swelling_chemical_potential();
-    for (unsigned int i = 0; i < boundary_conditions.n_pieces(); ++i)
-      boundary_conditions.piece(i).check_values(samples[i], times, largest_mu);
+    const double largest_mu = scene.material.largest_swelling_chemical_potential();
+    for (unsigned int i = 0; i < scene.boundary_conditions.n_pieces(); ++i)
+      scene.boundary_conditions.piece(i).check_values(samples[i], times, largest_mu);
   }
 
 
@@ -181,8 +167,8 @@ namespace GelMPM
   {
     pcout << "GelMPM: hydrogel scene '" << std::filesystem::path(scene_file).filename().string()
           << "', " << dim << "D" << (dim == 2 ? " (plane strain)" : "") << ", "
-          << discretisation.name() << (discretisation.extension ? ", extended B-splines" : "")
-          << '\n';
+          << scene.discretisation.name()
+          << (scene.discretisation.extension ? ", extended B-splines" : "") << '\n';
     if (!output_settings.test_mode)
       pcout << "  GelMPM " << GELMPM_VERSION << " (" << GELMPM_GIT_REVISION << "), deal.II "
             << DEAL_II_PACKAGE_VERSION << ", "
@@ -236,20 +222,12 @@ namespace GelMPM
   void
   Simulator<dim>::create_material_points()
   {
-    grid.create_triangulation(triangulation);
-    particles.initialize(triangulation, mapping, PropertyLayout<dim>::n_properties);
-    generator.generate(geometry,
-                       grid,
-                       triangulation,
-                       boundary_conditions,
-                       material.lambda_0(),
-                       material.mu_0(),
-                       particles);
+    scene.create_material_points();
 
     unsigned int n_volume = 0, n_surface = 0;
     double       volume = 0.;
-    for (const auto &p : particles)
-      if (std::lround(p.get_properties()[PropertyLayout<dim>::kind]) == 0)
+    for (const auto &p : scene.particles)
+      if (kind_of(p.get_properties()) == PointKind::volume)
         {
           ++n_volume;
           volume += p.get_properties()[PropertyLayout<dim>::measure_0];
@@ -260,9 +238,9 @@ namespace GelMPM
     n_surface_points = n_surface;
     body_volume      = volume;
 
-    tau_d    = std::pow(time_stepping.characteristic_length, 2) / material.diffusivity();
-    scale_u  = material.shear_modulus() * std::pow(volume, (dim - 1.) / dim);
-    scale_mu = material.kT_over_nu() * volume;
+    tau_d    = std::pow(time_stepping.characteristic_length, 2) / scene.material.diffusivity();
+    scale_u  = scene.material.shear_modulus() * std::pow(volume, (dim - 1.) / dim);
+    scale_mu = scene.material.kT_over_nu() * volume;
   }
 
 
@@ -284,7 +262,7 @@ namespace GelMPM
                                         "n_particles"};
     for (const auto &c : stability.columns())
       columns.push_back(c);
-    if (contact.enabled())
+    if (scene.contact.enabled())
       for (const char *name : {"contact_points", "contact_penetration"})
         columns.push_back(name);
     for (const auto &c : observables.columns())
@@ -304,7 +282,7 @@ namespace GelMPM
             bracket_columns.push_back(name);
         stability_file.open(output_settings.directory + "/stability.csv", bracket_columns);
       }
-    if (stability.inertia || observables.boundary_chemical_potential(particles))
+    if (stability.inertia || observables.boundary_chemical_potential(scene.particles))
       events_file.open(output_settings.directory + "/events.csv",
                        {"event", "time", "t_over_tau_d", "mu_boundary", "pore"});
   }
@@ -323,25 +301,25 @@ namespace GelMPM
     statistics.set("attempts", attempts);
     statistics.set("residual_u", report.residual_u);
     statistics.set("residual_mu", report.residual_mu);
-    statistics.set("n_particles", particles.n_global_particles());
-    if (system && step > 0)
+    statistics.set("n_particles", scene.particles.n_global_particles());
+    if (scene.system && step > 0)
       {
-        statistics.set("n_dofs_u", spaces->n_u_dofs());
-        statistics.set("n_dofs_mu", spaces->n_mu_dofs());
-        statistics.set("n_active_cells", system->n_active_cells());
+        statistics.set("n_dofs_u", scene.spaces->n_u_dofs());
+        statistics.set("n_dofs_mu", scene.spaces->n_mu_dofs());
+        statistics.set("n_active_cells", scene.system->n_active_cells());
       }
     std::function<std::pair<double, double>()> dirichlet_errors;
     if (solution != nullptr)
       dirichlet_errors = [&]() {
-        return system->dirichlet_errors(*solution);
+        return scene.system->dirichlet_errors(*solution);
       };
-    if (contact.enabled() && solution != nullptr)
+    if (scene.contact.enabled() && solution != nullptr)
       {
-        const auto [active, penetration] = system->contact_state(*solution);
+        const auto [active, penetration] = scene.system->contact_state(*solution);
         statistics.set("contact_points", active);
         statistics.set("contact_penetration", penetration);
       }
-    observables.evaluate(particles, material, dirichlet_errors, statistics);
+    observables.evaluate(scene.particles, scene.material, dirichlet_errors, statistics);
     statistics.write_row();
     record_pore_events();
   }
@@ -374,8 +352,8 @@ namespace GelMPM
   {
     if (!stability.inertia)
       return StepControl::Verdict::accept;
-    const bool tangent_stable = result.inertia.n_positive == spaces->n_u_dofs() &&
-                                result.inertia.n_negative == spaces->n_mu_dofs() &&
+    const bool tangent_stable = result.inertia.n_positive == scene.spaces->n_u_dofs() &&
+                                result.inertia.n_negative == scene.spaces->n_mu_dofs() &&
                                 result.inertia.n_zero == 0;
     // Until the first onset the drained criterion (K_uu positive definite: no mode grows) brackets
     // it independently of the step; from then on the tangent's signature (no mode grows faster
@@ -436,7 +414,7 @@ namespace GelMPM
     pcout << "    loss of stability between t/tau_d = " << bracket.t_stable << " (stable) and "
           << bracket.t_unstable << ": signature (" << result.inertia.n_positive << ", "
           << result.inertia.n_negative << ", " << result.inertia.n_zero << "), expected ("
-          << spaces->n_u_dofs() << ", " << spaces->n_mu_dofs() << ", 0)";
+          << scene.spaces->n_u_dofs() << ", " << scene.spaces->n_mu_dofs() << ", 0)";
     if (stability.drained_onset)
       pcout << "; K_uu has " << result.drained_inertia.n_negative
             << " negative eigenvalue(s) (drained criterion)";
@@ -446,8 +424,8 @@ namespace GelMPM
     stability_file.set("n_neg_stable", last_stable_inertia.n_negative);
     stability_file.set("n_neg_unstable", result.inertia.n_negative);
     stability_file.set("n_zero_unstable", result.inertia.n_zero);
-    stability_file.set("n_dofs_u", spaces->n_u_dofs());
-    stability_file.set("n_dofs_mu", spaces->n_mu_dofs());
+    stability_file.set("n_dofs_u", scene.spaces->n_u_dofs());
+    stability_file.set("n_dofs_mu", scene.spaces->n_mu_dofs());
     if (!result.eigenvalues.empty())
       {
         stability_file.set("eig_1_stable", last_eigenvalue);
@@ -466,15 +444,16 @@ namespace GelMPM
   void
   Simulator<dim>::note_inexact_extrapolation(const double t_begin)
   {
-    if (spaces->n_inexact_extrapolations() > 0 && !inexact_extrapolation_noted)
+    if (scene.spaces->n_inexact_extrapolations() > 0 && !inexact_extrapolation_noted)
       {
-        pcout << "  note: from t/tau_d = " << t_begin << ", " << spaces->n_inexact_extrapolations()
+        pcout << "  note: from t/tau_d = " << t_begin << ", "
+              << scene.spaces->n_inexact_extrapolations()
               << " boundary control point(s) next to the grid's edge are extrapolated inexactly "
                  "(the body has moved within q cells of it; doc/method.md, \"Contact\")\n";
         inexact_extrapolation_noted = true;
       }
     // The initial body was checked strictly; from here on its motion cannot be helped.
-    spaces->tolerate_inexact_extrapolation();
+    scene.spaces->tolerate_inexact_extrapolation();
   }
 
 
@@ -482,7 +461,7 @@ namespace GelMPM
   void
   Simulator<dim>::record_pore_events()
   {
-    for (const auto &[name, pore] : observables.new_events(particles))
+    for (const auto &[name, pore] : observables.new_events(scene.particles))
       {
         write_event(name, time, pore);
         pcout << "  event: " << name << " of pore " << pore << " at t/tau_d = " << time << '\n';
@@ -497,7 +476,7 @@ namespace GelMPM
     events_file.set("event", name);
     events_file.set("time", t_over_tau_d * tau_d);
     events_file.set("t_over_tau_d", t_over_tau_d);
-    if (const auto mu = observables.boundary_chemical_potential(particles))
+    if (const auto mu = observables.boundary_chemical_potential(scene.particles))
       events_file.set("mu_boundary", *mu);
     if (pore > 0)
       events_file.set("pore", pore);
@@ -545,11 +524,11 @@ namespace GelMPM
   {
     // The mode as a displacement field (mu = 0), scaled to a largest coefficient of one: the
     // eigenvector's sign and size are arbitrary.
-    dealii::Vector<double> field(spaces->n_dofs());
+    dealii::Vector<double> field(scene.spaces->n_dofs());
     const double           largest = mode.linfty_norm();
     for (unsigned int i = 0; i < mode.size(); ++i)
       field(i) = (largest > 0.) ? mode(i) / largest : 0.;
-    mode_output->record(spaces->u(), spaces->mu(), grid_volume_points, field);
+    mode_output->record(scene.spaces->u(), scene.spaces->mu(), grid_volume_points, field);
     mode_recorded = true;
   }
 
@@ -561,7 +540,7 @@ namespace GelMPM
     dealii::TimerOutput::Scope scope(timer, "output");
     output_step = step;
     if (output_settings.write_particles)
-      particle_output->write(particles, time);
+      particle_output->write(scene.particles, time);
     if (grid_output)
       grid_output->write(time);
     if (mode_output && mode_recorded)
@@ -573,14 +552,15 @@ namespace GelMPM
   void
   Simulator<dim>::record_initial_grid()
   {
-    grid_volume_points = GridOutput<dim>::count_volume_points(particles, spaces->u_space());
+    grid_volume_points =
+      GridOutput<dim>::count_volume_points(scene.particles, scene.spaces->u_space());
     std::vector<bool> has_material(grid_volume_points.size());
     for (unsigned int c = 0; c < has_material.size(); ++c)
       has_material[c] = grid_volume_points[c] > 0;
-    spaces->reinit(has_material);
+    scene.spaces->reinit(has_material);
     dealii::Vector<double> solution;
     initial_guess(solution);
-    grid_output->record(spaces->u(), spaces->mu(), grid_volume_points, solution);
+    grid_output->record(scene.spaces->u(), scene.spaces->mu(), grid_volume_points, solution);
   }
 
 
@@ -588,8 +568,8 @@ namespace GelMPM
   void
   Simulator<dim>::store_mu_coefficients(const dealii::Vector<double> &solution)
   {
-    const auto        &mu  = spaces->mu();
-    const unsigned int n_u = spaces->n_u_dofs();
+    const auto        &mu  = scene.spaces->mu();
+    const unsigned int n_u = scene.spaces->n_u_dofs();
     for (unsigned int i = 0; i < mu_coefficients.size(); ++i)
       {
         const unsigned int dof = mu.dof_of_control_point(i);
@@ -613,12 +593,12 @@ namespace GelMPM
   void
   Simulator<dim>::initial_guess(dealii::Vector<double> &solution, const double dt) const
   {
-    solution.reinit(spaces->n_dofs());
+    solution.reinit(scene.spaces->n_dofs());
     if (!displacement_projection.empty() && last_dt > 0.)
       for (unsigned int i = 0; i < displacement_projection.size(); ++i)
         solution(i) = dt / last_dt * displacement_projection[i];
-    const auto        &mu  = spaces->mu();
-    const unsigned int n_u = spaces->n_u_dofs();
+    const auto        &mu  = scene.spaces->mu();
+    const unsigned int n_u = scene.spaces->n_u_dofs();
     // With 'Newton/Initial chemical potential = points' every coefficient starts from the
     // projection of the points' mu; otherwise only those that held no value in the last step
     // (newly covered by material), where a stale coefficient would put a stress jump into the
@@ -645,7 +625,7 @@ namespace GelMPM
     // The first step has no predictor: its estimate would be the whole motion.
     if (!(time_stepping.displacement_tolerance > 0.) || !(last_dt > 0.))
       return true;
-    const double difference = system->largest_increment_deviation(solution, dt / last_dt);
+    const double difference = scene.system->largest_increment_deviation(solution, dt / last_dt);
     if (control->judge_error(difference))
       {
         if (control->error_uncontrolled())
@@ -671,20 +651,21 @@ namespace GelMPM
     {
       dealii::TimerOutput::Scope scope(timer, "setup");
       if (grid_output || mode_output)
-        grid_volume_points = GridOutput<dim>::count_volume_points(particles, spaces->u_space());
+        grid_volume_points =
+          GridOutput<dim>::count_volume_points(scene.particles, scene.spaces->u_space());
       // The grid reset gives the tangent a new sparsity pattern; the factorisation of the old
       // one goes first, while the matrix it refers to still exists.
       linear_solver.new_pattern();
-      system->setup(particles);
+      scene.system->setup(scene.particles);
       // The points and the basis are fixed for the attempts of the step: project mu once, and
       // only if some coefficient will start from it.
       bool needed = newton.mu_from_points;
       for (unsigned int i = 0; i < mu_known.size() && !needed; ++i)
-        needed = !mu_known[i] &&
-                 spaces->mu().dof_of_control_point(i) != dealii::numbers::invalid_unsigned_int;
-      mu_projection           = needed ? system->mu_from_points() : std::vector<double>();
+        needed = !mu_known[i] && scene.spaces->mu().dof_of_control_point(i) !=
+                                   dealii::numbers::invalid_unsigned_int;
+      mu_projection           = needed ? scene.system->mu_from_points() : std::vector<double>();
       displacement_projection = (newton.extrapolate_displacement && last_dt > 0.)
-                                  ? system->displacement_from_points(1.)
+                                  ? scene.system->displacement_from_points(1.)
                                   : std::vector<double>();
     }
     dealii::Vector<double> solution;
@@ -692,9 +673,9 @@ namespace GelMPM
       {
         const double t_begin = control->time();
         const double step_dt = control->attempt();
-        system->set_boundary_values(t_begin + step_dt);
+        scene.system->set_boundary_values(t_begin + step_dt);
         initial_guess(solution, step_dt);
-        NewtonReport report = solve_newton(*system,
+        NewtonReport report = solve_newton(*scene.system,
                                            solution,
                                            step_dt * tau_d,
                                            newton,
@@ -704,12 +685,12 @@ namespace GelMPM
                                            timer);
         if (report.converged && time_stepping.largest_increment > 0.)
           {
-            const double moved = system->largest_displacement_increment(solution);
-            if (moved > time_stepping.largest_increment * spaces->h_u())
+            const double moved = scene.system->largest_displacement_increment(solution);
+            if (moved > time_stepping.largest_increment * scene.spaces->h_u())
               {
                 report.converged = false;
                 std::ostringstream why;
-                why << "a material point moves " << moved / spaces->h_u()
+                why << "a material point moves " << moved / scene.spaces->h_u()
                     << " cells, more than 'Time stepping/Largest increment' = "
                     << time_stepping.largest_increment;
                 report.failure = why.str();
@@ -755,31 +736,35 @@ namespace GelMPM
             {
               // The last assembly of Newton was at the converged state.
               dealii::TimerOutput::Scope scope(timer, "stability");
-              result = analyse_stability(system->matrix(), spaces->n_u_dofs(), stability, [this]() {
-                return system->mu_mass_matrix();
-              });
+              result = analyse_stability(scene.system->matrix(),
+                                         scene.spaces->n_u_dofs(),
+                                         stability,
+                                         [this]() {
+                                           return scene.system->mu_mass_matrix();
+                                         });
             }
             const auto verdict = judge_signature(result);
             if (verdict == StepControl::Verdict::retake || verdict == StepControl::Verdict::shorten)
               continue;
             record_stability(result);
-            if (mode_output && result.mode.size() == spaces->n_u_dofs())
+            if (mode_output && result.mode.size() == scene.spaces->n_u_dofs())
               record_mode(result.mode);
             // Leave the unstable branch at the bracketed critical time (doc/method.md).
             perturb = verdict == StepControl::Verdict::onset &&
                       stability.perturbation_amplitude > 0. &&
-                      result.mode.size() == spaces->n_u_dofs();
+                      result.mode.size() == scene.spaces->n_u_dofs();
           }
         if (perturb)
-          perturb_along_mode(result.drained_mode.size() == spaces->n_u_dofs() ? result.drained_mode
-                                                                              : result.mode,
+          perturb_along_mode(result.drained_mode.size() == scene.spaces->n_u_dofs()
+                               ? result.drained_mode
+                               : result.mode,
                              solution);
         {
           dealii::TimerOutput::Scope scope(timer, "update");
-          const auto                 n_before = particles.n_global_particles();
+          const auto                 n_before = scene.particles.n_global_particles();
           try
             {
-              system->update_particles(solution);
+              scene.system->update_particles(solution);
             }
           catch (const std::runtime_error &e)
             {
@@ -787,15 +772,19 @@ namespace GelMPM
               when << "at t/tau_d = " << t_begin + step_dt << ", " << e.what();
               throw std::runtime_error(when.str());
             }
-          sort_into_cells(particles, grid, triangulation);
-          if (particles.n_global_particles() != n_before)
-            throw std::runtime_error(std::to_string(n_before - particles.n_global_particles()) +
-                                     " material point(s) left the background grid at t = " +
-                                     std::to_string(t_begin + step_dt) +
-                                     " tau_d; enlarge the grid ('Background grid/Upper corner')");
+          sort_into_cells(scene.particles, scene.grid, scene.triangulation);
+          if (scene.particles.n_global_particles() != n_before)
+            throw std::runtime_error(
+              std::to_string(n_before - scene.particles.n_global_particles()) +
+              " material point(s) left the background grid at t = " +
+              std::to_string(t_begin + step_dt) +
+              " tau_d; enlarge the grid ('Background grid/Upper corner')");
           store_mu_coefficients(solution);
           if (grid_output)
-            grid_output->record(spaces->u(), spaces->mu(), grid_volume_points, solution);
+            grid_output->record(scene.spaces->u(),
+                                scene.spaces->mu(),
+                                grid_volume_points,
+                                solution);
         }
         control->accept(report.iterations);
         note_inexact_extrapolation(t_begin);
@@ -819,12 +808,15 @@ namespace GelMPM
 
         const bool interval_due =
           (output_settings.interval_steps > 0 && step % output_settings.interval_steps == 0) ||
-          (output_settings.interval_time > 0. && time >= next_output_time * (1. - 1e-12));
+          (output_settings.interval_time > 0. &&
+           time >= next_output_time * (1. - relative_time_tolerance));
         // The next multiple of the interval after this time, in one step: a loop that adds the
         // interval would run for ever when it is tiny against the time.
-        if (output_settings.interval_time > 0. && next_output_time <= time * (1. + 1e-12))
+        if (output_settings.interval_time > 0. &&
+            next_output_time <= time * (1. + relative_time_tolerance))
           next_output_time =
-            (std::floor(time * (1. + 1e-12) / output_settings.interval_time) + 1.) *
+            (std::floor(time * (1. + relative_time_tolerance) / output_settings.interval_time) +
+             1.) *
             output_settings.interval_time;
         if (control->at_stop_time() || interval_due || control->finished())
           write_output();
@@ -863,26 +855,27 @@ namespace GelMPM
   void
   Simulator<dim>::start()
   {
-    system = std::make_unique<MixedSystem<dim>>(material, boundary_conditions, nitsche, *spaces);
-    if (contact.enabled())
+    scene.create_system();
+    if (scene.contact.enabled())
       {
-        system->set_contact(contact);
         // Touching: within 1% of a cell of the plane (points that start on a plane's edge of a
         // quarter pore lie a quarter cell away).
-        observables.set_contact_planes(contact.planes(grid.lower, grid.upper),
-                                       0.01 * spaces->h_u());
+        observables.set_contact_planes(scene.contact.planes(scene.grid.lower, scene.grid.upper),
+                                       0.01 * scene.spaces->h_u());
       }
-    particle_output = std::make_unique<ParticleOutput<dim>>(output_settings.directory, material);
-    mu_coefficients.assign(spaces->mu_space().n_functions(), material.mu_0());
-    mu_known.assign(spaces->mu_space().n_functions(), true);
+    particle_output =
+      std::make_unique<ParticleOutput<dim>>(output_settings.directory, scene.material);
+    mu_coefficients.assign(scene.spaces->mu_space().n_functions(), scene.material.mu_0());
+    mu_known.assign(scene.spaces->mu_space().n_functions(), true);
     if (output_settings.write_grid)
       {
-        grid_output = std::make_unique<GridOutput<dim>>(output_settings.directory, triangulation);
+        grid_output =
+          std::make_unique<GridOutput<dim>>(output_settings.directory, scene.triangulation);
         record_initial_grid();
       }
     if (stability.write_mode)
       mode_output =
-        std::make_unique<GridOutput<dim>>(output_settings.directory, triangulation, "mode");
+        std::make_unique<GridOutput<dim>>(output_settings.directory, scene.triangulation, "mode");
     open_statistics();
     next_output_time = output_settings.interval_time;
     control          = std::make_unique<StepControl>(time_stepping,

@@ -35,7 +35,7 @@ namespace GelMPM
   bool
   StepControl::finished() const
   {
-    return time_ >= settings_.end_time * (1. - 1e-12);
+    return time_ >= settings_.end_time * (1. - relative_time_tolerance);
   }
 
 
@@ -129,7 +129,7 @@ namespace GelMPM
   StepControl::Verdict
   StepControl::judge_signature(const bool stable)
   {
-    if (stable && bisecting && time_ + current >= unstable_time * (1. - 1e-12))
+    if (stable && bisecting && time_ + current >= unstable_time * (1. - relative_time_tolerance))
       {
         bisecting = false;
         stable_   = true;
@@ -177,7 +177,7 @@ namespace GelMPM
     // A step shortened by a stop time or by bisection leaves the proposed step as it was; a
     // bisection step does not grow it either (its size was forced, not chosen by Newton).
     const bool bisection_step = std::isinf(attempt_limit);
-    const bool full_step      = current >= attempt_limit * (1. - 1e-12);
+    const bool full_step      = current >= attempt_limit * (1. - relative_time_tolerance);
     if (full_step)
       proposed = current;
     time_ += current;

@@ -191,7 +191,7 @@ namespace GelMPM
   TimeStepping::cap(const double t) const
   {
     for (const auto &c : caps)
-      if (t < c.first * (1. - 1e-12))
+      if (t < c.first * (1. - relative_time_tolerance))
         return c.second;
     return std::numeric_limits<double>::infinity();
   }
@@ -203,7 +203,7 @@ namespace GelMPM
     double step = std::min(dt, cap(t));
     double next = end_time;
     for (const double s : stop_times)
-      if (s > t * (1. + 1e-12) + 1e-300)
+      if (s > t * (1. + relative_time_tolerance) + 1e-300)
         {
           next = std::min(next, s);
           break;

@@ -97,7 +97,7 @@ namespace
         const auto   props = particle.get_properties();
         const double g     = particle.get_location()[1] + lift - plane;
         // Only the free piece touches: 'top' (index 3); its corners belong to prescribed pieces.
-        if (std::lround(props[Layout::piece]) != 3 || g <= 0.)
+        if (GelMPM::piece_of(props) != 3 || g <= 0.)
           continue;
         sum += props[Layout::measure_n] * beta * g;
         deepest = std::max(deepest, g);

@@ -1,55 +1,27 @@
 // A small 2D scene with every kind of boundary term, built from a parameter string, shared by the
 // assembly tests: Q2-Q2SD on a 24 x 24 grid of [-1, 2]^2, a cut box [0, 1.3] x [0, 1.1], pieces
 // with fixed, normal, tangential and free displacement, prescribed mu and flux, time-dependent
-// values.
-#include <gelmpm/assembly/discretisation.h>
-#include <gelmpm/assembly/mixed_system.h>
-#include <gelmpm/assembly/nitsche_settings.h>
-#include <gelmpm/material/flory_rehner_gel.h>
-#include <gelmpm/particles/material_point_generator.h>
-#include <gelmpm/scene/background_grid.h>
-#include <gelmpm/scene/boundary_conditions.h>
-#include <gelmpm/scene/geometry.h>
+// values. It is a GelMPM::Scene, built as the simulator builds one; only the text is the test's.
+#include <gelmpm/simulator/scene.h>
 
-#include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
-#include <deal.II/fe/mapping_q1.h>
-#include <deal.II/grid/tria.h>
-#include <deal.II/particles/particle_handler.h>
 
-#include <memory>
 #include <string>
+#include <vector>
 
-struct SceneFixture
+namespace scene_fixture
 {
-  static constexpr int dim = 2;
+  const std::vector<std::string> pieces = {"bottom", "left", "right", "top"};
 
-  GelMPM::FloryRehnerGel<dim>                  material;
-  GelMPM::BackgroundGrid<dim>                  grid;
-  GelMPM::Geometry<dim>                        geometry;
-  GelMPM::BoundaryConditions<dim>              boundary_conditions;
-  GelMPM::MaterialPointGenerator<dim>          generator;
-  GelMPM::DiscretisationSettings               discretisation;
-  GelMPM::NitscheSettings                      nitsche;
-  dealii::Triangulation<dim>                   triangulation;
-  dealii::MappingQ1<dim>                       mapping;
-  dealii::Particles::ParticleHandler<dim>      particles;
-  std::unique_ptr<GelMPM::DiscreteSpaces<dim>> spaces;
-  std::unique_ptr<GelMPM::MixedSystem<dim>>    system;
-
-  /** @p overrides: parameter text read after the scene's, to change some of its entries. */
-  explicit SceneFixture(const std::string &variant = "symmetric", const std::string &overrides = "")
+  /** The fixture's parameters: the scene text, Nitsche's @p variant, then @p overrides. */
+  struct Parameters
   {
-    const std::vector<std::string> pieces = {"bottom", "left", "right", "top"};
-    dealii::ParameterHandler       prm;
-    GelMPM::FloryRehnerGel<dim>::declare_parameters(prm);
-    GelMPM::BackgroundGrid<dim>::declare_parameters(prm);
-    GelMPM::Geometry<dim>::declare_parameters(prm);
-    GelMPM::BoundaryConditions<dim>::declare_parameters(prm, pieces);
-    GelMPM::MaterialPointGenerator<dim>::declare_parameters(prm);
-    GelMPM::DiscretisationSettings::declare_parameters(prm);
-    GelMPM::NitscheSettings::declare_parameters(prm);
-    prm.parse_input_from_string(R"(
+    dealii::ParameterHandler prm;
+
+    Parameters(const std::string &variant, const std::string &overrides)
+    {
+      GelMPM::Scene<2>::declare_parameters(prm, pieces);
+      prm.parse_input_from_string(R"(
       subsection Background grid
         set Lower corner = -1, -1
         set Upper corner = 2, 2
@@ -63,7 +35,7 @@ struct SceneFixture
       end
       subsection Nitsche
         set Variant = )" + variant +
-                                R"(
+                                  R"(
       end
       subsection Boundary conditions
         subsection bottom
@@ -105,26 +77,25 @@ struct SceneFixture
           end
         end
       end)" + overrides);
-    material.parse_parameters(prm);
-    grid.parse_parameters(prm);
-    geometry.parse_parameters(prm);
-    boundary_conditions.parse_parameters(prm, pieces);
-    generator.parse_parameters(prm);
-    discretisation.parse_parameters(prm);
-    nitsche.parse_parameters(prm);
+    }
+  };
+} // namespace scene_fixture
 
-    grid.create_triangulation(triangulation);
-    particles.initialize(triangulation, mapping, GelMPM::PropertyLayout<dim>::n_properties);
-    generator.generate(geometry,
-                       grid,
-                       triangulation,
-                       boundary_conditions,
-                       material.lambda_0(),
-                       material.mu_0(),
-                       particles);
-    spaces = std::make_unique<GelMPM::DiscreteSpaces<dim>>(grid, discretisation);
-    system =
-      std::make_unique<GelMPM::MixedSystem<dim>>(material, boundary_conditions, nitsche, *spaces);
+/**
+ * The scene with its points, spaces and system set up at its initial state, boundary values at
+ * t = 0.5.
+ */
+struct SceneFixture : private scene_fixture::Parameters, public GelMPM::Scene<2>
+{
+  static constexpr int dim = 2;
+
+  /** @p overrides: parameter text read after the scene's, to change some of its entries. */
+  explicit SceneFixture(const std::string &variant = "symmetric", const std::string &overrides = "")
+    : scene_fixture::Parameters(variant, overrides)
+    , GelMPM::Scene<2>(prm, scene_fixture::pieces)
+  {
+    create_material_points();
+    create_system();
     system->setup(particles);
     system->set_boundary_values(0.5);
   }

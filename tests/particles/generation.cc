@@ -86,10 +86,10 @@ namespace
     using Layout = PropertyLayout<2>;
     for (const auto &p : particles)
       {
-        const auto props = p.get_properties();
-        const int  kind  = std::lround(props[Layout::kind]);
-        s.inside &= geometry.inside(p.get_location()) || kind != 0;
-        if (kind == 0)
+        const auto      props = p.get_properties();
+        const PointKind kind  = kind_of(props);
+        s.inside &= geometry.inside(p.get_location()) || kind != PointKind::volume;
+        if (kind == PointKind::volume)
           {
             s.volume += props[Layout::measure_0];
             ++s.n_volume;
@@ -101,7 +101,7 @@ namespace
             for (unsigned int d = 0; d < 2; ++d)
               s.normal_area[d] += props[Layout::normal_area_0 + d];
             ++s.n_surface;
-            s.kinds_of_piece[std::lround(props[Layout::piece])].insert(kind);
+            s.kinds_of_piece[piece_of(props)].insert(static_cast<int>(kind));
           }
       }
     return s;

@@ -5,7 +5,7 @@
 // - 'none' (full updates) fails the attempt at iteration 1 with the non-physical state named;
 // - 'physical' halves the update once (x = 2.227) and converges to x = 2 within 1e-12;
 // - 'merit' converges too, with the residual decreasing at every iteration.
-#include <gelmpm/material/flory_rehner_gel.h>
+#include <gelmpm/core/non_physical_state.h>
 #include <gelmpm/solvers/linear_solver.h>
 #include <gelmpm/solvers/newton.h>
 

@@ -218,6 +218,43 @@ namespace GelMPM
     struct ScratchData;
 
     /**
+     * The steps of setup(), in order. Classify the cells of the step from the cells that hold
+     * volume points and rebuild the extended spaces; throws std::runtime_error if a point has
+     * left the background grid.
+     */
+    void
+    classify_cells(const dealii::Particles::ParticleHandler<dim> &particle_handler);
+
+    /** The record of @p particle with the state its properties hold (no cell, no offsets yet). */
+    PointRecord
+    unpack_point(const dealii::Particles::ParticleAccessor<dim> &particle) const;
+
+    /**
+     * The displacement cell whose block the point @p r joins; throws std::runtime_error for a
+     * surface point next to no active cell.
+     */
+    unsigned int
+    cell_of_point(const PointRecord &r) const;
+
+    /**
+     * Order the records @p unsorted (of the particles @p its) by their @p cells into the blocks
+     * of assembly, and give each its offsets into the shape arrays (which are sized here).
+     */
+    void
+    group_points(
+      const std::vector<PointRecord> &unsorted,
+      const std::vector<typename dealii::Particles::ParticleHandler<dim>::particle_iterator> &its,
+      const std::vector<unsigned int> &cells);
+
+    /** The values and gradients of the extended shape functions at every point. */
+    void
+    evaluate_shape_functions();
+
+    /** The sparsity pattern of the step's tangent, and the matrix and residual on it. */
+    void
+    build_sparsity_pattern();
+
+    /**
      * The L2 projection over the volume points onto the displacement (@p displacement) or the
      * chemical potential basis of the @p n_components point values @p value(r, component):
      * per component, the coefficients c of M c = b, M_ij = sum_p V_p N_i N_j,

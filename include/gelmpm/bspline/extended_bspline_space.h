@@ -95,9 +95,6 @@ namespace GelMPM
     /** DoFs touched by the extended functions of a non-outer @p cell (sorted). */
     const std::vector<unsigned int> &
     cell_dofs(const unsigned int cell) const;
-    /** E_cell: extended values = E_cell * local B-spline values. */
-    const dealii::FullMatrix<double> &
-    cell_extension_matrix(const unsigned int cell) const;
 
     /**
      * Values and gradients at @p p of the extended functions of cell_dofs(@p cell). @p values and

@@ -97,17 +97,6 @@ namespace GelMPM
                   const bool                            skip_undefined = false);
 
   /**
-   * Enter the subsections of the slash-separated @p path ("A/B") in @p prm; leave_sections()
-   * leaves as many. Keeps code that reads nested sections short.
-   */
-  unsigned int
-  enter_sections(dealii::ParameterHandler &prm, const std::string &path);
-
-  /** Leave @p n subsections of @p prm. */
-  void
-  leave_sections(dealii::ParameterHandler &prm, const unsigned int n);
-
-  /**
    * Parse a list of @p n comma-separated doubles from entry @p entry of @p prm (the current
    * subsection); @p entry_path is used in the error message. Throws InputError on a wrong count.
    */

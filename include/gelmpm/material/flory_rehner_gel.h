@@ -1,6 +1,8 @@
 #ifndef gelmpm_material_flory_rehner_gel_h
 #define gelmpm_material_flory_rehner_gel_h
 
+#include <gelmpm/core/non_physical_state.h>
+
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/tensor.h>
 
@@ -9,19 +11,6 @@
 
 namespace GelMPM
 {
-  /**
-   * @brief Thrown when a state leaves the physical range of the gel (J <= 1: less solvent than
-   * none), where the mixing energy is undefined. The Newton solver catches it and cuts the step.
-   */
-  class NonPhysicalState : public std::runtime_error
-  {
-  public:
-    explicit NonPhysicalState(const std::string &message)
-      : std::runtime_error(message)
-    {}
-  };
-
-
   /**
    * @brief The Flory–Rehner hydrogel of the paper's §2.2 in the mixed (F, mu) form, eq. (19), and
    * the rescaled quantities of the incremental (previously converged Lagrangian) formulation,

@@ -1,6 +1,8 @@
 #ifndef gelmpm_particles_property_layout_h
 #define gelmpm_particles_property_layout_h
 
+#include <cmath>
+
 namespace GelMPM
 {
   /**
@@ -67,6 +69,28 @@ namespace GelMPM
     static constexpr unsigned int increment     = normal_area_n + dim;
     static constexpr unsigned int n_properties  = increment + dim;
   };
+
+
+  /**
+   * The kind of the point whose property array is @p properties. The array holds doubles only,
+   * so the kind is stored as one; rounding makes the conversion exact whatever arithmetic touched
+   * the value. The first two entries do not depend on the dimension.
+   */
+  template <typename Properties>
+  inline PointKind
+  kind_of(const Properties &properties)
+  {
+    return static_cast<PointKind>(std::lround(properties[PropertyLayout<1>::kind]));
+  }
+
+
+  /** The boundary piece of the point whose property array is @p properties (-1: none). */
+  template <typename Properties>
+  inline int
+  piece_of(const Properties &properties)
+  {
+    return static_cast<int>(std::lround(properties[PropertyLayout<1>::piece]));
+  }
 } // namespace GelMPM
 
 #endif

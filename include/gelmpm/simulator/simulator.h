@@ -1,20 +1,13 @@
 #ifndef gelmpm_simulator_simulator_h
 #define gelmpm_simulator_simulator_h
 
-#include <gelmpm/assembly/discretisation.h>
-#include <gelmpm/assembly/mixed_system.h>
-#include <gelmpm/assembly/nitsche_settings.h>
 #include <gelmpm/core/parameters.h>
 #include <gelmpm/io/grid_output.h>
 #include <gelmpm/io/output_settings.h>
 #include <gelmpm/io/particle_output.h>
 #include <gelmpm/io/statistics_file.h>
-#include <gelmpm/material/flory_rehner_gel.h>
-#include <gelmpm/particles/material_point_generator.h>
-#include <gelmpm/scene/background_grid.h>
-#include <gelmpm/scene/boundary_conditions.h>
-#include <gelmpm/scene/geometry.h>
 #include <gelmpm/simulator/observables.h>
+#include <gelmpm/simulator/scene.h>
 #include <gelmpm/simulator/scene_structure.h>
 #include <gelmpm/solvers/linear_solver.h>
 #include <gelmpm/solvers/newton.h>
@@ -25,10 +18,7 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
-#include <deal.II/fe/mapping_q1.h>
-#include <deal.II/grid/tria.h>
 #include <deal.II/lac/vector.h>
-#include <deal.II/particles/particle_handler.h>
 
 #include <memory>
 #include <string>
@@ -38,6 +28,10 @@ namespace GelMPM
 {
   /**
    * @brief A GelMPM run: reads a scene's parameters, checks them, and carries the scene out.
+   *
+   * The scene itself (gel, grid, body, boundary, points, spaces, system) is a Scene; the
+   * simulator adds what a run needs around it: time stepping, Newton, output, statistics and the
+   * stability analysis.
    *
    * Construction parses and validates every parameter and throws InputError on bad input, so
    * that nothing is written before the whole scene is known to be consistent. run() creates the
@@ -95,6 +89,7 @@ namespace GelMPM
     /** Remove the files an earlier run wrote to the output directory (only names gelmpm writes). */
     void
     remove_earlier_output() const;
+    /** The scene's material points, and the counts and scales the run derives from them. */
     void
     create_material_points();
     /** InputError if the extended bases cannot be built on the initial configuration. */
@@ -175,50 +170,38 @@ namespace GelMPM
     bool
     error_acceptable(const dealii::Vector<double> &solution, const double dt, std::string &failure);
 
-    SceneStructure              structure;
-    OutputSettings              output_settings;
-    FloryRehnerGel<dim>         material;
-    BackgroundGrid<dim>         grid;
-    Geometry<dim>               geometry;
-    BoundaryConditions<dim>     boundary_conditions;
-    MaterialPointGenerator<dim> generator;
-    DiscretisationSettings      discretisation;
-    NitscheSettings             nitsche;
-    ContactSettings             contact;
-    LinearSolver                linear_solver;
-    NewtonSettings              newton;
-    TimeStepping                time_stepping;
-    Observables<dim>            observables;
-    StabilitySettings           stability;
+    SceneStructure    structure;
+    Scene<dim>        scene;
+    OutputSettings    output_settings;
+    LinearSolver      linear_solver;
+    NewtonSettings    newton;
+    TimeStepping      time_stepping;
+    Observables<dim>  observables;
+    StabilitySettings stability;
 
     std::string                scene_file;
     std::string                parameters_as_used;
     dealii::ConditionalOStream pcout;
     dealii::TimerOutput        timer;
 
-    dealii::Triangulation<dim>              triangulation;
-    dealii::MappingQ1<dim>                  mapping;
-    dealii::Particles::ParticleHandler<dim> particles;
-    std::unique_ptr<DiscreteSpaces<dim>>    spaces;
-    std::unique_ptr<MixedSystem<dim>>       system;
-    std::unique_ptr<ParticleOutput<dim>>    particle_output;
-    std::unique_ptr<GridOutput<dim>>        grid_output;
-    std::unique_ptr<GridOutput<dim>>        mode_output;           // with Stability/Write mode
-    bool                                    mode_recorded = false; // with Output/Write grid
-    std::vector<unsigned int>               grid_volume_points;    // per cell, start of the step
-    StatisticsFile                          statistics;
-    StatisticsFile                          stability_file; // stability.csv, with the inertia
-    StatisticsFile                          events_file;    // events.csv (inertia or pores)
-    std::unique_ptr<StepControl>            control;
-    bool                                    announced_bracketing        = false;
-    bool                                    inexact_extrapolation_noted = false;
-    Inertia                                 last_stable_inertia;
-    double                                  last_eigenvalue = 0.;
-    std::vector<double>                     mu_coefficients; // per mu control point
-    std::vector<bool>                       mu_known;        // coefficient holds a current value
-    std::vector<double>                     mu_projection;   // points' mu on the step's basis
-    std::vector<double> displacement_projection; // last step's motion on the step's basis
-    double              last_dt = 0.;            // the last accepted step (0 before the first)
+    std::unique_ptr<ParticleOutput<dim>> particle_output;
+    std::unique_ptr<GridOutput<dim>>     grid_output;
+    std::unique_ptr<GridOutput<dim>>     mode_output;           // with Stability/Write mode
+    bool                                 mode_recorded = false; // with Output/Write grid
+    std::vector<unsigned int>            grid_volume_points;    // per cell, start of the step
+    StatisticsFile                       statistics;
+    StatisticsFile                       stability_file; // stability.csv, with the inertia
+    StatisticsFile                       events_file;    // events.csv (inertia or pores)
+    std::unique_ptr<StepControl>         control;
+    bool                                 announced_bracketing        = false;
+    bool                                 inexact_extrapolation_noted = false;
+    Inertia                              last_stable_inertia;
+    double                               last_eigenvalue = 0.;
+    std::vector<double>                  mu_coefficients; // per mu control point
+    std::vector<bool>                    mu_known;        // coefficient holds a current value
+    std::vector<double>                  mu_projection;   // points' mu on the step's basis
+    std::vector<double> displacement_projection;          // last step's motion on the step's basis
+    double              last_dt = 0.; // the last accepted step (0 before the first)
 
     unsigned int n_volume_points  = 0;
     unsigned int n_surface_points = 0;

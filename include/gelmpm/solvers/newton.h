@@ -1,8 +1,7 @@
 #ifndef gelmpm_solvers_newton_h
 #define gelmpm_solvers_newton_h
 
-#include <gelmpm/assembly/mixed_system.h>
-#include <gelmpm/material/flory_rehner_gel.h>
+#include <gelmpm/core/non_physical_state.h>
 #include <gelmpm/solvers/linear_solver.h>
 
 #include <deal.II/base/parameter_handler.h>

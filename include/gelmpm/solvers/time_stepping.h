@@ -9,6 +9,14 @@
 namespace GelMPM
 {
   /**
+   * Relative tolerance of "time t has reached time s" (a stop time, the end, the next output, the
+   * end of a bisection bracket). Times are sums of many steps and carry their round-off: without
+   * it a run would take a last step of ~1e-16 to reach a time it has already reached.
+   */
+  constexpr double relative_time_tolerance = 1e-12;
+
+
+  /**
    * @brief The "Time stepping" section: adaptive implicit stepping as in the paper's §4.
    *
    * All times are in units of the diffusion time tau_d = L^2 / D, with L the scene's

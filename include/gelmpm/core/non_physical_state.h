@@ -1,0 +1,25 @@
+#ifndef gelmpm_core_non_physical_state_h
+#define gelmpm_core_non_physical_state_h
+
+#include <stdexcept>
+#include <string>
+
+namespace GelMPM
+{
+  /**
+   * @brief Thrown when a state leaves the physical range of the gel (J <= 1: less solvent than
+   * none), where the mixing energy is undefined. The Newton solver catches it and cuts the step.
+   *
+   * In core rather than next to the gel so that the solvers, which only catch it, and the
+   * body-fitted peer need neither the material nor the material point assembly.
+   */
+  class NonPhysicalState : public std::runtime_error
+  {
+  public:
+    explicit NonPhysicalState(const std::string &message)
+      : std::runtime_error(message)
+    {}
+  };
+} // namespace GelMPM
+
+#endif

@@ -1,0 +1,87 @@
+#ifndef gelmpm_simulator_scene_h
+#define gelmpm_simulator_scene_h
+
+#include <gelmpm/assembly/contact_settings.h>
+#include <gelmpm/assembly/discretisation.h>
+#include <gelmpm/assembly/mixed_system.h>
+#include <gelmpm/assembly/nitsche_settings.h>
+#include <gelmpm/material/flory_rehner_gel.h>
+#include <gelmpm/particles/material_point_generator.h>
+#include <gelmpm/scene/background_grid.h>
+#include <gelmpm/scene/boundary_conditions.h>
+#include <gelmpm/scene/geometry.h>
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/particles/particle_handler.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace GelMPM
+{
+  /**
+   * @brief What a scene file describes, as the discrete problem of its first step: the gel, the
+   * background grid, the body, the boundary pieces, how points are placed, the discretisation,
+   * Nitsche's and the contact settings; and from them the material points, the spaces and the
+   * mixed system.
+   *
+   * The Simulator runs a Scene and the assembly tests examine one: both build it the same way
+   * from a ParameterHandler, so that a test sees the set-up a run would have, not a copy of it
+   * that may drift. The parts are public: they are the scene's data, each checked by its own
+   * parse_parameters(), and the run and the tests read and drive them directly.
+   *
+   * Built in three stages, so that a caller may check its own sections in between: the
+   * constructor parses the sections, create_material_points() builds the grid, the points and the
+   * spaces (bad input is found there: a body outside the grid, a piece that selects nothing),
+   * create_system() the mixed system on them.
+   */
+  template <int dim>
+  class Scene
+  {
+  public:
+    /**
+     * Declare the scene's sections in @p prm; @p boundary_pieces are the names of the boundary
+     * pieces (each gets a subsection of "Boundary conditions").
+     */
+    static void
+    declare_parameters(dealii::ParameterHandler       &prm,
+                       const std::vector<std::string> &boundary_pieces);
+
+    /** Parse and check the sections declared by declare_parameters(). Throws InputError. */
+    Scene(dealii::ParameterHandler &prm, const std::vector<std::string> &boundary_pieces);
+
+    /**
+     * Create the triangulation of the background grid, the material points of the body in their
+     * initial state and the discrete spaces. Throws InputError on a body the grid cannot hold.
+     */
+    void
+    create_material_points();
+
+    /**
+     * Create the mixed system on the spaces (after create_material_points()), with the contact
+     * terms of the "Contact" section when it is enabled.
+     */
+    void
+    create_system();
+
+    FloryRehnerGel<dim>         material;
+    BackgroundGrid<dim>         grid;
+    Geometry<dim>               geometry;
+    BoundaryConditions<dim>     boundary_conditions;
+    MaterialPointGenerator<dim> generator;
+    DiscretisationSettings      discretisation;
+    NitscheSettings             nitsche;
+    ContactSettings             contact;
+
+    dealii::Triangulation<dim>              triangulation;
+    dealii::MappingQ1<dim>                  mapping;
+    dealii::Particles::ParticleHandler<dim> particles;
+    std::unique_ptr<DiscreteSpaces<dim>>    spaces;
+    std::unique_ptr<MixedSystem<dim>>       system;
+  };
+} // namespace GelMPM
+
+#endif
