@@ -46,7 +46,7 @@ namespace GelMPM
              const double                             mu_0,
              dealii::Particles::ParticleHandler<dim> &particles) const;
 
-    unsigned int points_per_cell         = 2;
+    unsigned int points_per_cell         = 3;
     unsigned int surface_points_per_edge = 2;
   };
 } // namespace GelMPM
