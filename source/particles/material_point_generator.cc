@@ -15,13 +15,12 @@ namespace GelMPM
   MaterialPointGenerator<dim>::declare_parameters(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection("Material points");
-    prm.declare_entry(
-      "Points per cell",
-      "3",
-      dealii::Patterns::Integer(1, 20),
-      "n: volume points per background cell and direction (n^dim per cell, at "
-      "sub-cell centres inside the body); at least 3. Paper: "
-      "6 (§4.1), 5 (§4.2), 8 (§4.3).");
+    prm.declare_entry("Points per cell",
+                      "3",
+                      dealii::Patterns::Integer(1, 20),
+                      "n: volume points per background cell and direction (n^dim per cell, at "
+                      "sub-cell centres inside the body); at least 3. Paper: "
+                      "6 (§4.1), 5 (§4.2), 8 (§4.3).");
     prm.declare_entry("Surface points per cell edge",
                       "0",
                       dealii::Patterns::Integer(0, 40),
