@@ -23,24 +23,12 @@
 set -euo pipefail
 
 top="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
-build_dir="${GELMPM_BUILD_DIR:-${top}/build}"
-paper=0
-out=""
-for argument in "$@"; do
-  case "${argument}" in
-    --paper) paper=1 ;;
-    *) out="${argument}" ;;
-  esac
-done
-out="${out:-${top}/output/column_buckling_study}"
-mkdir -p "${out}"
-scene="${top}/prm/column_buckling.prm"
-echo "run,exit_status,wall_seconds" > "${out}/runs.csv"
+# shellcheck source=timed_run.sh
+source "${top}/contrib/benchmarks/timed_run.sh"
+start_study column_buckling "$@"
 echo "column_buckling.sh: about $((2 + 10 * paper)) minutes on a 2-core machine; results in ${out}"
 
 summary_pattern="loss of stability between"
-# shellcheck source=timed_run.sh
-source "${top}/contrib/benchmarks/timed_run.sh"
 
 coarse=(--set "Background grid/Cells=140, 80" --set "Material points/Points per cell=3"
         --set "Time stepping/Stop at times=0.2, 0.25, 0.3, 0.4, 0.6, 1, 2, 5, 10"

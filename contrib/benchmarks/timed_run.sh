@@ -1,7 +1,29 @@
-# Sourced by the benchmark drivers: run_scene NAME [gelmpm arguments...] runs gelmpm on ${scene}
-# with its output in ${out}/NAME and its log in ${out}/NAME.log, appends "NAME,exit status,wall
-# seconds" to ${out}/runs.csv and prints a line with the log's first match of ${summary_pattern}.
-# Needs: build_dir, scene, out, summary_pattern.
+# Sourced by the benchmark drivers of one scene, after setting top:
+#   start_study NAME "$@"  reads the driver's arguments ([--paper] [output directory]), sets
+#                          build_dir, paper (0 or 1), out (default output/NAME_study) and scene
+#                          (prm/NAME.prm), and starts ${out}/runs.csv;
+#   run_scene RUN [gelmpm arguments...]  runs gelmpm on ${scene} with its output in ${out}/RUN and
+#                          its log in ${out}/RUN.log, appends "RUN,exit status,wall seconds" to
+#                          ${out}/runs.csv and prints a line with the log's first match of
+#                          ${summary_pattern}.
+
+start_study() {
+  local name="$1"
+  shift
+  build_dir="${GELMPM_BUILD_DIR:-${top}/build}"
+  paper=0
+  out=""
+  for argument in "$@"; do
+    case "${argument}" in
+      --paper) paper=1 ;;
+      *) out="${argument}" ;;
+    esac
+  done
+  out="${out:-${top}/output/${name}_study}"
+  mkdir -p "${out}"
+  scene="${top}/prm/${name}.prm"
+  echo "run,exit_status,wall_seconds" > "${out}/runs.csv"
+}
 
 run_scene() {
   local name="$1"

@@ -734,6 +734,10 @@ namespace GelMPM
                                       CopyData          &copy) const
   {
     const double beta = contact.penalty * material.shear_modulus() / spaces_.h_u();
+    // The traction P_n N, once per point for all planes (Nitsche only).
+    Tensor<1, dim> traction;
+    if (contact.method == ContactSettings::Method::nitsche)
+      traction = material.incremental(s.delta_F, s.mu_at_point, point.F_p).P_n * point.normal;
     for (const auto &plane : contact_planes)
       {
         const double g =
@@ -743,8 +747,7 @@ namespace GelMPM
         if (contact.method == ContactSettings::Method::nitsche)
           {
             // Nitsche's active set: the augmented normal traction sigma_n - beta g < 0.
-            const auto   state   = material.incremental(s.delta_F, s.mu_at_point, point.F_p);
-            const double sigma_n = n * (state.P_n * point.normal);
+            const double sigma_n = n * traction;
             if (beta * g - sigma_n > 0.)
               add_displacement_nitsche(point, outer(n, n), g * n, beta, with_matrix, s, copy);
             continue;

@@ -38,3 +38,31 @@ finish() {
   [[ $fail -eq 0 ]] && echo "PASS"
   exit $fail
 }
+
+# check_signal NAME STATUS: send signal NAME (TERM, INT) to a run once it has written a few rows;
+# the run must end after the current step with exit STATUS, say so, and leave a last output that is
+# the state of the last row of statistics.csv.
+check_signal() {
+  local name=$1 expected=$2
+  "$gelmpm" "$scene" --set "Output/Write particles=true" --set "Output/Interval steps=3" \
+    >stdout 2>stderr &
+  local pid=$!
+  for _ in $(seq 600); do
+    [[ $(cat results/statistics.csv 2>/dev/null | wc -l) -ge 6 ]] && break
+    sleep 0.1
+  done
+  kill -"$name" $pid
+  wait $pid
+  local status=$?
+  echo "exit status: $status"; cat stderr
+  check $((status != expected)) "exit status $status, expected $expected"
+  grep -q "SIG$name received: stopped after step" stderr
+  check $? "stderr does not say that SIG$name stopped the run"
+  check_statistics
+  check_series
+  local last_row last_vtu
+  last_row=$(tail -n 1 results/statistics.csv | cut -d, -f3)
+  last_vtu=$(sed -n 's/.*timestep="\([^"]*\)".*/\1/p' results/particles.pvd | tail -n 1)
+  awk -v a="$last_row" -v b="$last_vtu" 'BEGIN { exit !(a - b < 1e-9 * (1 + a) && b - a < 1e-9 * (1 + a)) }'
+  check $? "the last .vtu (t = $last_vtu) is not the last row's state (t = $last_row)"
+}
