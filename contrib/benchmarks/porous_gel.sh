@@ -25,7 +25,7 @@ top="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 source "${top}/contrib/benchmarks/timed_run.sh"
 start_study porous_gel "$@"
 echo "porous_gel.sh: about $((9 + 45 * paper)) minutes on a 2-core machine; results in ${out}"
-summary_pattern="reached t/tau_d\|the run stopped\|the run failed"
+summary_pattern="reached t/tau_d\|cannot converge\|the run stopped\|the run failed"
 
 coarse=(--set "Background grid/Cells=40, 40" --set "Material points/Points per cell=5"
         --set "Output/Interval steps=20")
