@@ -183,6 +183,7 @@ namespace GelMPM
       for (unsigned int j = 0; j < dim; ++j)
         r.F_p[i][j] = props[Layout::F + i * dim + j];
     r.mu_n      = props[Layout::mu];
+    r.dmu_last  = props[Layout::mu_increment];
     r.mobility  = material.mobility(r.F_p);
     r.assembled = (r.kind == PointKind::volume) || (r.piece >= 0);
     if (r.kind != PointKind::volume)
@@ -876,7 +877,8 @@ namespace GelMPM
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = 0; j < dim; ++j)
             props[Layout::F + i * dim + j] = F_p[i][j];
-        props[Layout::mu] = mu;
+        props[Layout::mu_increment] = mu - r.mu_n;
+        props[Layout::mu]           = mu;
         for (unsigned int d = 0; d < dim; ++d)
           props[Layout::increment + d] = du[d];
         if (r.kind == PointKind::volume)
@@ -1030,6 +1032,34 @@ namespace GelMPM
         largest = std::max(largest, (du - ratio * r.du_last).norm());
       }
     return largest;
+  }
+
+
+  template <int dim>
+  typename MixedSystem<dim>::StepError
+  MixedSystem<dim>::local_error_estimate(const dealii::Vector<double> &solution,
+                                         const double                  ratio) const
+  {
+    // Milne's device for backward Euler after a step of ratio r = dt / dt_last: the corrector
+    // misses x(t + dt) by dt^2 x''/2 and the linear predictor x_n + r (x_n - x_{n-1}) by
+    // -dt (dt + dt_last) x''/2, so the local error is r / (2 r + 1) times their difference.
+    const double weight = ratio / (2. * ratio + 1.);
+    double       volume = 0., u_sum = 0., mu_sum = 0.;
+    for (const auto &r : points)
+      if (r.kind == PointKind::volume)
+        {
+          Tensor<1, dim> du;
+          Tensor<2, dim> delta_F;
+          double         mu;
+          fields_at_point(r, solution, du, delta_F, mu);
+          const double mu_difference = (mu - r.mu_n) - ratio * r.dmu_last;
+          volume += r.measure;
+          u_sum += r.measure * (du - ratio * r.du_last).norm_square();
+          mu_sum += r.measure * mu_difference * mu_difference;
+        }
+    if (!(volume > 0.))
+      return {0., 0.};
+    return {weight * std::sqrt(u_sum / volume), weight * std::sqrt(mu_sum / volume)};
   }
 
 

@@ -632,22 +632,38 @@ namespace GelMPM
                                    std::string                  &failure)
   {
     // The first step has no predictor: its estimate would be the whole motion.
-    if (!(time_stepping.displacement_tolerance > 0.) || !(last_dt > 0.))
+    const bool displacement_rule = time_stepping.displacement_tolerance > 0.;
+    const bool tolerance_rule    = time_stepping.tolerance > 0.;
+    if (!(displacement_rule || tolerance_rule) || !(last_dt > 0.))
       return true;
-    const double difference = scene.system->largest_increment_deviation(solution, dt / last_dt);
-    if (control->judge_error(difference))
+    const double difference =
+      displacement_rule ? scene.system->largest_increment_deviation(solution, dt / last_dt) : 0.;
+    double local_error = 0.;
+    if (tolerance_rule)
+      {
+        const auto error = scene.system->local_error_estimate(solution, dt / last_dt);
+        local_error      = std::max(error.displacement / time_stepping.characteristic_length,
+                               error.chemical_potential);
+      }
+    const auto excess = control->error_excess(difference, local_error, dt);
+    if (control->judge_error(excess))
       {
         if (control->error_uncontrolled())
-          pcout << "    the motion differs from the last step's by " << difference
-                << " whatever the step: a jump in the last step (a perturbation), not an error "
-                   "of this one; accepted"
+          pcout << "    the step's error estimate exceeds its tolerance " << excess.factor
+                << " times whatever the step: a jump in the last step (a perturbation) or the "
+                   "points' integration noise, not an error of this one; accepted"
                 << std::endl;
         return true;
       }
     std::ostringstream why;
-    why << "a material point's motion differs from the last step's by " << difference
-        << ", more than 'Time stepping/Displacement tolerance' = "
-        << time_stepping.displacement_tolerance;
+    why << "the error estimate exceeds ";
+    if (displacement_rule && difference > time_stepping.displacement_tolerance)
+      why << "'Time stepping/Displacement tolerance' (a point's motion differs from the last "
+             "step's by "
+          << difference << ")";
+    else
+      why << "'Time stepping/Tolerance' (local error " << local_error << " against "
+          << control->tolerated_local_error(dt) << ")";
     failure = why.str();
     return false;
   }

@@ -79,43 +79,82 @@ namespace GelMPM
   {
     bisecting    = false;
     retaken_step = 0.;
+    first_retake = 0.;
     proposed     = current * settings_.cut_factor;
     return proposed >= settings_.minimum_step;
   }
 
 
   bool
-  StepControl::judge_error(const double difference)
+  StepControl::judge_error(const ErrorExcess &estimate)
   {
-    error_limit            = 0.;
-    uncontrolled           = false;
-    const double tolerance = settings_.displacement_tolerance;
-    if (!(tolerance > 0.) || !(difference > 0.))
+    error_limit         = 0.;
+    uncontrolled        = false;
+    const double excess = estimate.factor;
+    if (!(excess > 0.))
       return true;
-    // Backward Euler's local error goes as dt^2: the step that would meet the tolerance, with a
-    // safety factor.
-    const double factor = 0.9 * std::sqrt(tolerance / difference);
-    if (difference <= tolerance)
+    const double factor = 0.9 / excess;
+    if (excess <= 1.)
       {
         error_limit  = current * factor;
         retaken_step = 0.;
+        first_retake = 0.;
         return true;
       }
+    // A time-stepping error shrinks with the step (an excess in proportion to it). One that
+    // shrinks by less than the fourth root of the step ratio (the displacement rule) or its
+    // square root (the tolerance rule, whose excess is per unit time: the material point
+    // method's integration noise, points crossing cell faces, is a constant rate there) is not
+    // this step's.
+    const double noise_exponent = estimate.per_unit_time ? 0.5 : 0.25;
     if (retaken_step > current &&
-        difference > retaken_difference * std::sqrt(current / retaken_step))
+        excess > retaken_excess * std::pow(current / retaken_step, noise_exponent))
       {
         uncontrolled = true;
         retaken_step = 0.;
+        // The next step need not stay as short as the retakes made this one: shorter steps
+        // would not meet the tolerance either.
+        noise_step   = estimate.per_unit_time ? first_retake : 0.;
+        first_retake = 0.;
         return true;
       }
     const double shorter = current * std::clamp(factor, 0.2, 0.9);
     if (shorter < settings_.minimum_step)
       return true;
-    retaken_step       = current;
-    retaken_difference = difference;
-    bisecting          = false;
-    proposed           = shorter;
+    if (retaken_step == 0.)
+      first_retake = current;
+    retaken_step   = current;
+    retaken_excess = excess;
+    bisecting      = false;
+    proposed       = shorter;
     return false;
+  }
+
+
+  StepControl::ErrorExcess
+  StepControl::error_excess(const double displacement_difference,
+                            const double local_error,
+                            const double dt) const
+  {
+    ErrorExcess excess;
+    // The difference goes as dt^2; the local error per unit relative time, (t + dt) / dt, as
+    // dt: both give the step that meets their tolerance as dt / excess.
+    if (settings_.displacement_tolerance > 0.)
+      excess.factor = std::sqrt(displacement_difference / settings_.displacement_tolerance);
+    if (settings_.tolerance > 0. && dt > 0.)
+      {
+        const double per_unit_time = local_error * (time_ + dt) / (dt * settings_.tolerance);
+        if (per_unit_time > excess.factor)
+          excess = ErrorExcess{per_unit_time, true};
+      }
+    return excess;
+  }
+
+
+  double
+  StepControl::tolerated_local_error(const double dt) const
+  {
+    return settings_.tolerance * dt / (time_ + dt);
   }
 
 
@@ -188,6 +227,9 @@ namespace GelMPM
     // integration noise weighs more: it does not shorten the next step either.
     if (error_limit > 0. && full_step)
       proposed = std::min(proposed, error_limit);
+    if (noise_step > 0.)
+      proposed = std::max(proposed, noise_step);
+    noise_step   = 0.;
     error_limit  = 0.;
     retaken_step = 0.;
   }

@@ -65,6 +65,22 @@ namespace GelMPM
       "than the Newton rule's growth. A steady motion lets the steps grow; an accelerating "
       "one (the sway after a buckling onset) or a jump to another branch shortens them. "
       "Material point scenes only; the body-fitted peer ignores it. 0: off.");
+    prm.declare_entry(
+      "Tolerance",
+      "0",
+      Patterns::Double(0.),
+      "Error control of the step by the accuracy asked for: the local error of each backward "
+      "Euler step (estimated from the difference to the linear predictor, root mean square "
+      "over the volume points) may be at most Tolerance * dt / (t + dt), in units of the "
+      "'Characteristic length' for the displacement and of k_BT for the chemical potential: "
+      "while the time grows by a factor e the run commits local errors of at most Tolerance "
+      "(diffusion acts on the scale of the elapsed time, so early errors die out as fast as "
+      "early steps are short). A step above it is retaken shorter; the next step is the one "
+      "the estimate allows, with a safety factor 0.9, never more than the Newton rule's "
+      "growth. The measured error against the reference follows it (doc/performance.md, "
+      "'Error-controlled steps'). Combine with 'Growth factor' = 2 and no 'Step caps'. "
+      "Material point scenes only; the "
+      "body-fitted peer ignores it. 0: off.");
     prm.declare_entry("Step caps",
                       "",
                       Patterns::Anything(),
@@ -100,6 +116,7 @@ namespace GelMPM
     maximum_steps               = prm.get_integer("Maximum steps");
     largest_increment           = prm.get_double("Largest increment");
     displacement_tolerance      = prm.get_double("Displacement tolerance");
+    tolerance                   = prm.get_double("Tolerance");
     const std::string caps_text = prm.get("Step caps");
     const std::string stops     = prm.get("Stop at times");
     prm.leave_subsection();
@@ -114,6 +131,10 @@ namespace GelMPM
             "Time stepping/Cut factor",
             "must lie strictly between 0 and 1",
             "use 0.5 as in the paper");
+    require(tolerance < 1.,
+            "Time stepping/Tolerance",
+            "must be below 1 (it bounds local errors in units of L and k_BT)",
+            "give e.g. 1e-3, or 0 to switch the error control off");
     require(minimum_step >= 1e-300,
             "Time stepping/Minimum step",
             "is below 1e-300, where the step arithmetic loses its precision",

@@ -11,7 +11,10 @@
 // 5. error control: a difference above the tolerance retakes the step by 0.9 sqrt(tol/e)
 //    (clamped to [0.2, 0.9]), one below it bounds the next step by the same formula or by the
 //    Newton growth, whichever is smaller; a difference that does not shrink with the step is
-//    accepted as a jump; the tolerance 0 accepts everything.
+//    accepted as a jump; the tolerance 0 accepts everything;
+// 6. 'Tolerance': the local error per unit relative time dt / (t + dt) against the tolerance:
+//    retake and the bound on the next step by 0.9 tol dt / (e (t + dt)), the stricter of the
+//    two rules when both are on.
 #include <gelmpm/solvers/step_control.h>
 
 #include <cmath>
@@ -27,6 +30,22 @@ namespace
   {
     return std::abs(a - b) <= 1e-12 * std::max(1., std::abs(b));
   }
+
+  /** Judge the current attempt by its displacement difference @p d alone. */
+  bool
+  judge(StepControl &c, const double d)
+  {
+    return c.judge_error(c.error_excess(d, 0., c.attempt_size()));
+  }
+
+
+  /** Judge the current attempt by the excess @p factor of the tolerance rule. */
+  bool
+  judge_tolerance(StepControl &c, const double factor)
+  {
+    return c.judge_error(StepControl::ErrorExcess{factor, true});
+  }
+
 
   GelMPM::TimeStepping
   settings()
@@ -165,16 +184,16 @@ main()
     s.stop_times.clear();
     s.displacement_tolerance = 0.01;
     StepControl c(s);
-    c.attempt();                         // 0.1
-    bool ok        = !c.judge_error(1.); // 0.9 sqrt(0.01) = 0.09, clamped to 0.2
+    c.attempt();                    // 0.1
+    bool ok        = !judge(c, 1.); // 0.9 sqrt(0.01) = 0.09, clamped to 0.2
     ok             = ok && close(c.attempt(), 0.02);
-    ok             = ok && !c.judge_error(0.03); // shrank enough: 0.9 sqrt(1 / 3)
+    ok             = ok && !judge(c, 0.03); // shrank enough: 0.9 sqrt(1 / 3)
     ok             = ok && close(c.attempt(), 0.02 * 0.9 * std::sqrt(1. / 3.));
     const double h = c.attempt_size();
-    ok = ok && c.judge_error(0.0081) && !c.error_uncontrolled(); // 0.9 sqrt(0.01 / 0.0081) = 1
-    c.accept(3);                                                 // Newton would grow by 1.25
+    ok = ok && judge(c, 0.0081) && !c.error_uncontrolled(); // 0.9 sqrt(0.01 / 0.0081) = 1
+    c.accept(3);                                            // Newton would grow by 1.25
     ok = ok && close(c.time(), h) && close(c.attempt(), h);
-    ok = ok && c.judge_error(1e-6); // far below: Newton's growth limits
+    ok = ok && judge(c, 1e-6); // far below: Newton's growth limits
     c.accept(3);
     ok = ok && close(c.attempt(), h * 1.25);
     std::cout << "error control: retake, clamp, and the bound on the next step: " << ok
@@ -182,14 +201,61 @@ main()
 
     StepControl jump(s);
     jump.attempt();
-    ok = !jump.judge_error(0.04) && close(jump.attempt(), 0.045);
-    ok = ok && jump.judge_error(0.039) && jump.error_uncontrolled(); // did not shrink: a jump
+    ok = !judge(jump, 0.04) && close(jump.attempt(), 0.045);
+    ok = ok && judge(jump, 0.039) && jump.error_uncontrolled(); // did not shrink: a jump
     std::cout << "a difference that does not shrink with the step is accepted as a jump: " << ok
               << std::endl;
 
     s.displacement_tolerance = 0.;
     StepControl off(s);
     off.attempt();
-    std::cout << "the tolerance 0 accepts any difference: " << off.judge_error(1e9) << std::endl;
+    std::cout << "the tolerance 0 accepts any difference: " << judge(off, 1e9) << std::endl;
+  }
+
+  {
+    GelMPM::TimeStepping s = settings();
+    s.caps.clear();
+    s.stop_times.clear();
+    s.tolerance = 1e-3;
+    StepControl  c(s);
+    const double dt = c.attempt(); // 0.1
+    // e (t + dt) / (dt tol) = 2e-3 * 0.1 / (0.1 * 1e-3) = 2: retaken with 0.45 dt.
+    bool ok = close(c.error_excess(0., 2e-3, dt).factor, 2.) && !judge_tolerance(c, 2.);
+    ok      = ok && close(c.attempt(), 0.045);
+    // (1e-3 10/9) 0.045 / (0.045 * 1e-3) = 10/9: still above, retaken with 0.81 of it.
+    const double excess = c.error_excess(0., 1e-3 * 10. / 9., c.attempt_size()).factor;
+    ok                  = ok && close(excess, 10. / 9.) && !judge_tolerance(c, excess) &&
+         close(c.attempt(), 0.045 * 0.81);
+    // Within: the next step is bounded by dt 0.9 / excess (below the Newton growth of 1.25).
+    const double h = c.attempt_size();
+    ok             = ok && judge_tolerance(c, 0.8);
+    c.accept(3);
+    ok = ok && close(c.time(), h) && close(c.attempt(), h * 0.9 / 0.8);
+    // Later in the run the same error per step weighs less: (h + dt) / dt against 1.
+    const double next = c.attempt_size();
+    ok = ok && close(c.error_excess(0., 1e-4, next).factor, 1e-4 * (h + next) / (next * 1e-3));
+    std::cout << "tolerance: retake and bound by 0.9 tol dt / (e (t + dt)): " << ok << std::endl;
+
+    s.displacement_tolerance = 0.01;
+    StepControl  both(s);
+    const double dt2 = both.attempt();
+    // sqrt(0.04 / 0.01) = 2 against 2e-4 / 1e-3 = 0.2: the displacement rule decides.
+    ok = close(both.error_excess(0.04, 2e-4, dt2).factor, 2.) &&
+         !both.error_excess(0.04, 2e-4, dt2).per_unit_time;
+    ok = ok && close(both.error_excess(1e-4, 2e-3, dt2).factor, 2.) &&
+         both.error_excess(1e-4, 2e-3, dt2).per_unit_time; // 0.1 against 2: the tolerance
+    std::cout << "with both rules the stricter decides: " << ok << std::endl;
+
+    // Noise: an excess per unit time that shrinks by less than the square root of the step
+    // ratio is accepted, and the next step starts again from the first retaken attempt.
+    s.displacement_tolerance = 0.;
+    StepControl noise(s);
+    noise.attempt(); // 0.1
+    ok = !judge_tolerance(noise, 4.) && close(noise.attempt(), 0.0225);
+    // 0.0225 / 0.1 = 0.225: an error would shrink to 4 sqrt(0.225) = 1.9 at least; 2.5 is noise.
+    ok = ok && judge_tolerance(noise, 2.5) && noise.error_uncontrolled();
+    noise.accept(3);
+    ok = ok && close(noise.time(), 0.0225) && close(noise.attempt(), 0.1);
+    std::cout << "integration noise is accepted and does not shrink the steps: " << ok << std::endl;
   }
 }

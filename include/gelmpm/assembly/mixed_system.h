@@ -140,6 +140,24 @@ namespace GelMPM
     double
     largest_increment_deviation(const dealii::Vector<double> &solution, const double ratio) const;
 
+    /** Root mean squares, weighted by V_n over the volume points, of the local errors of a step. */
+    struct StepError
+    {
+      /** Of the displacement increment, in the scene's length unit. */
+      double displacement;
+      /** Of the change of mu, in k_BT. */
+      double chemical_potential;
+    };
+
+    /**
+     * The local error of the backward Euler step that ended in @p solution, estimated from its
+     * difference to the linear predictor (the points' changes in the last accepted step scaled
+     * by @p ratio = dt / dt_last): r / (2 r + 1) times that difference (doc/method.md, "Error
+     * control").
+     */
+    StepError
+    local_error_estimate(const dealii::Vector<double> &solution, const double ratio) const;
+
     /**
      * The displacement coefficients (n_u_dofs(), interleaved as the unknowns) closest to
      * @p ratio times the points' increments of the last accepted step: the L2 projection of
@@ -196,6 +214,7 @@ namespace GelMPM
       dealii::Tensor<2, dim> F_p;       // F_n F_0
       double                 mobility;  // m_n in the weak form's units
       double                 mu_n;      // mu at the point, last converged step
+      double                 dmu_last;  // mu_n - mu_{n-1}
       unsigned int           block;     // index into blocks
       unsigned int           u_offset;  // into u shape arrays
       unsigned int           mu_offset; // into mu shape arrays

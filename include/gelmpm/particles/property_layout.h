@@ -53,6 +53,8 @@ namespace GelMPM
    * - increment: the point's displacement in the last accepted step, x_n - x_{n-1} (zero before
    *   the first step): the predictor of the next step's displacement ('Time stepping/Displacement
    *   tolerance', 'Newton/Initial displacement').
+   * - mu_increment: the change of mu at the point in the last accepted step, mu_n - mu_{n-1}:
+   *   the predictor of the next step's change ('Time stepping/Tolerance').
    */
   template <int dim>
   struct PropertyLayout
@@ -67,7 +69,8 @@ namespace GelMPM
     static constexpr unsigned int normal_area_0 = F + dim * dim;
     static constexpr unsigned int normal_area_n = normal_area_0 + dim;
     static constexpr unsigned int increment     = normal_area_n + dim;
-    static constexpr unsigned int n_properties  = increment + dim;
+    static constexpr unsigned int mu_increment  = increment + dim;
+    static constexpr unsigned int n_properties  = mu_increment + 1;
   };
 
 

@@ -26,10 +26,10 @@ namespace GelMPM
    *     is retaken shorter (by the cut factor) until its signature is (n_u, n_mu, 0) again or
    *     the minimum step is reached: the signature of K(dt) counts the modes that grow faster
    *     than 1/dt (doc/method.md), so this keeps sigma dt < 1 for every mode;
-   * - error ('Displacement tolerance', judge_error()): a converged attempt whose
-   *   predictor-corrector difference exceeds the tolerance is retaken shorter, and an accepted one
-   *   bounds the next step by dt * 0.9 sqrt(tolerance / difference) (backward Euler's local error
-   *   goes as dt^2);
+   * - error ('Displacement tolerance' and 'Tolerance', error_excess(), judge_error()): a
+   *   converged attempt whose error estimate exceeds a tolerance is retaken shorter, and an
+   *   accepted one bounds the next step by what the estimate allows (backward Euler's local
+   *   error goes as dt^2);
    *   - while the accepted state is unstable, the step is at most 'unstable step': backward
    *     Euler multiplies a mode growing at rate sigma by 1/(1 - sigma dt) per step, which damps
    *     it once sigma dt > 2, so long steps would converge to the unstable symmetric state
@@ -121,19 +121,47 @@ namespace GelMPM
     bool
     cut_step();
 
+    /** How far an attempt exceeds the error rules (error_excess()). */
+    struct ErrorExcess
+    {
+      /** The factor by which the step would have to shrink to meet the rules (at most 1:
+       * within; 0: no rule on). */
+      double factor = 0.;
+      /** Whether 'Tolerance' decides (its estimate is a local error per unit time). */
+      bool per_unit_time = false;
+    };
+
     /**
-     * The current attempt converged with the predictor-corrector difference @p difference (in
-     * the units of 'Displacement tolerance'). Returns false if the attempt must be retaken:
-     * the next attempt is shorter, by the factor the estimate asks for (between 0.2 and 0.9).
-     * Returns true if it may be accepted: always with the tolerance 0; when a shorter attempt
-     * would fall below the minimum step; and when the difference did not shrink with the step
-     * (by at least the square root of the step ratio against the last retaken attempt), so that
-     * it is no time-stepping error but a jump in the last step's motion (a perturbation, a
-     * change of branch): error_uncontrolled() is then true. An accepted estimate also bounds the
-     * next step.
+     * How far the current attempt of size @p dt exceeds the error rules, the larger of:
+     * - 'Displacement tolerance': sqrt(@p displacement_difference / tolerance), the largest
+     *   predictor-corrector difference of a point's displacement;
+     * - 'Tolerance': @p local_error (t + @p dt) / (@p dt Tolerance), the local error estimate
+     *   normalised by L and k_BT (MixedSystem::local_error_estimate()) per unit relative time
+     *   dt / (t + dt).
+     */
+    ErrorExcess
+    error_excess(const double displacement_difference,
+                 const double local_error,
+                 const double dt) const;
+
+    /** The local error 'Tolerance' allows a step of size @p dt from time(). */
+    double
+    tolerated_local_error(const double dt) const;
+
+    /**
+     * The current attempt converged with the error excess @p excess (error_excess()). Returns
+     * false if the attempt must be retaken: the next attempt is shorter, by the factor
+     * 0.9 / excess clamped to [0.2, 0.9]. Returns true if it may be accepted: always with no
+     * rule on; when a shorter attempt would fall below the minimum step; and when the excess
+     * did not shrink with the step (by at least the fourth root of the step ratio against the
+     * last retaken attempt for the displacement rule, the square root for 'Tolerance'), so
+     * that it is no time-stepping error but a jump in the last step's motion (a perturbation,
+     * a change of branch) or the points' integration noise: error_uncontrolled() is then true,
+     * and with 'Tolerance' the next step starts again from the first retaken attempt. An
+     * accepted estimate bounds the next step by dt 0.9 / excess.
      */
     bool
-    judge_error(const double difference);
+    judge_error(const ErrorExcess &excess);
 
     /**
      * The current attempt converged to a state whose signature is (n_u, n_mu, 0) if @p stable:
@@ -188,18 +216,20 @@ namespace GelMPM
     bool         signature_control;
     bool         onset_seen_ = false;
 
-    double       time_         = 0.;
-    unsigned int step_         = 0;
-    double       proposed      = 0.; // the controller's step (Newton growth and cuts)
-    double       current       = 0.; // the current attempt
-    double       attempt_limit = 0.; // what bounded it before stop times (infinite when bisecting)
-    double       error_limit   = 0.; // the step the error estimate of the attempt allows (0: none)
-    double       retaken_step  = 0.; // the last attempt retaken by the error control (0: none)
-    double       retaken_difference = 0.;
-    bool         uncontrolled       = false;
-    bool         stable_            = true;
-    bool         bisecting          = false;
-    double       unstable_time      = 0.;
+    double       time_          = 0.;
+    unsigned int step_          = 0;
+    double       proposed       = 0.; // the controller's step (Newton growth and cuts)
+    double       current        = 0.; // the current attempt
+    double       attempt_limit  = 0.; // what bounded it before stop times (infinite when bisecting)
+    double       error_limit    = 0.; // the step the error estimate of the attempt allows (0: none)
+    double       retaken_step   = 0.; // the last attempt retaken by the error control (0: none)
+    double       retaken_excess = 0.;
+    double       first_retake   = 0.; // the first attempt of the step the error retook
+    double       noise_step     = 0.; // the next step after an uncontrolled excess
+    bool         uncontrolled   = false;
+    bool         stable_        = true;
+    bool         bisecting      = false;
+    double       unstable_time  = 0.;
     Bracket      bracket_;
   };
 } // namespace GelMPM

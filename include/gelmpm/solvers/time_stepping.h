@@ -40,7 +40,9 @@ namespace GelMPM
     double largest_increment = 0.;
     /** Largest predictor-corrector difference of a point's displacement in one step, in the
      * scene's length unit; 0: off. */
-    double                                 displacement_tolerance = 0.;
+    double displacement_tolerance = 0.;
+    /** Bound on the run's accumulated local error (units L and k_BT); 0: off. */
+    double                                 tolerance = 0.;
     std::vector<std::pair<double, double>> caps; // (until time, largest step), sorted
     std::vector<double>                    stop_times;
 
