@@ -8,6 +8,8 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/particles/particle_handler.h>
 
+#include <boost/serialization/vector.hpp>
+
 #include <array>
 #include <cmath>
 #include <functional>
@@ -95,6 +97,14 @@ namespace GelMPM
      */
     std::vector<std::pair<std::string, unsigned int>>
     new_events(const dealii::Particles::ParticleHandler<dim> &particles);
+
+    /** The events seen so far, for a checkpoint (boost serialization). */
+    template <class Archive>
+    void
+    serialize(Archive &ar, const unsigned int)
+    {
+      ar &contact_seen &creases_seen;
+    }
 
   private:
     /** What pore_shapes() measures of one pore. */
