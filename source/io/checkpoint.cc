@@ -59,8 +59,8 @@ namespace GelMPM
           else if (line.rfind("set ", 0) == 0)
             {
               const auto  equals = line.find('=');
-              std::string name   = line.substr(4, equals == std::string::npos ? std::string::npos :
-                                                                                equals - 4);
+              std::string name =
+                line.substr(4, equals == std::string::npos ? std::string::npos : equals - 4);
               name.erase(name.find_last_not_of(' ') + 1);
               std::string value =
                 equals == std::string::npos ? std::string() : line.substr(equals + 1);
@@ -217,7 +217,7 @@ namespace GelMPM
     const std::string contents((std::istreambuf_iterator<char>(in)),
                                std::istreambuf_iterator<char>());
     const auto        newline = contents.find('\n');
-    const std::string line = contents.substr(0, newline == std::string::npos ? 0 : newline + 1);
+    const std::string line    = contents.substr(0, newline == std::string::npos ? 0 : newline + 1);
     if (line.rfind("GelMPM checkpoint", 0) != 0)
       throw refusal("'" + path + "' is not a GelMPM checkpoint",
                     "restore the checkpoint that the run wrote, " + start_afresh);
@@ -237,16 +237,16 @@ namespace GelMPM
     const std::string damaged = "'" + path + "' is damaged: ";
     const std::string restore = "restore the checkpoint that the run wrote, " + start_afresh;
     if (contents.size() < expected || contents.size() - expected != size)
-      throw refusal(damaged + "it has " + std::to_string(contents.size()) + " bytes where it was "
+      throw refusal(damaged + "it has " + std::to_string(contents.size()) +
+                      " bytes where it was "
                       "written with " +
-                      (contents.size() < expected ? std::string("more") :
-                                                    std::to_string(expected + size)) +
+                      (contents.size() < expected ? std::string("more")
+                                                  : std::to_string(expected + size)) +
                       " (truncated or appended to)",
                     restore);
     const std::string bytes = contents.substr(expected);
     if (checksum(bytes) != sum)
-      throw refusal(damaged + "its contents do not match the checksum written with them",
-                    restore);
+      throw refusal(damaged + "its contents do not match the checksum written with them", restore);
 
     payload.str(bytes);
     try

@@ -1,13 +1,12 @@
 #include <gelmpm/io/file_writing.h>
 
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <fcntl.h>
 #include <filesystem>
 #include <stdexcept>
+#include <unistd.h>
 
 namespace GelMPM
 {
@@ -76,9 +75,9 @@ namespace GelMPM
         throw std::runtime_error(write_failure(path, reason));
       }
     if (synchronise)
-      sync_to_disk(std::filesystem::path(path).parent_path().empty() ?
-                     std::string(".") :
-                     std::filesystem::path(path).parent_path().string());
+      sync_to_disk(std::filesystem::path(path).parent_path().empty()
+                     ? std::string(".")
+                     : std::filesystem::path(path).parent_path().string());
   }
 
 

@@ -84,7 +84,7 @@ namespace GelMPM
     std::error_code  error;
     for (const auto &entry : std::filesystem::directory_iterator(directory, error))
       {
-        std::smatch     match;
+        std::smatch       match;
         const std::string file = entry.path().filename().string();
         if (std::regex_match(file, match, later) &&
             (match[1].length() == 0 || match[2].length() > 0 ||

@@ -45,7 +45,8 @@ namespace GelMPM
     set_columns(file_name, columns);
     std::error_code error;
     if (std::filesystem::file_size(file_name, error) < size || error)
-      throw std::runtime_error("'" + file_name + "' is shorter than when the checkpoint was written");
+      throw std::runtime_error("'" + file_name +
+                               "' is shorter than when the checkpoint was written");
     std::filesystem::resize_file(file_name, size, error);
     if (error)
       throw std::runtime_error("cannot cut '" + file_name + "' back to the checkpoint (" +

@@ -87,7 +87,7 @@ namespace GelMPM
 
     if (resume)
       {
-        resume_from = std::make_unique<CheckpointReader>(output_settings.directory,
+        resume_from        = std::make_unique<CheckpointReader>(output_settings.directory,
                                                          checkpoint_parameters(parameters_as_used));
         const auto &header = resume_from->header();
         for (const auto &[name, size] : header.file_sizes)
@@ -100,8 +100,8 @@ namespace GelMPM
                     "cannot resume: the checkpoint at step " + std::to_string(header.step) +
                       " needs '" + path + "' as it was then (" + std::to_string(size) +
                       " bytes), but it " +
-                      (error ? "cannot be read (" + error.message() + ")" :
-                               "has only " + std::to_string(found) + " bytes"),
+                      (error ? "cannot be read (" + error.message() + ")"
+                             : "has only " + std::to_string(found) + " bytes"),
                     "restore the file, or run the scene from the start (without --resume)");
           }
       }
@@ -922,11 +922,11 @@ namespace GelMPM
   void
   Simulator<dim>::serialize_run_state(Archive &ar)
   {
-    ar &time &step &output_step &next_output_time &last_dt;
-    ar &mu_coefficients &mu_known;
+    ar &time &step &output_step &next_output_time                          &last_dt;
+    ar &mu_coefficients                                                    &mu_known;
     ar &announced_bracketing &inexact_extrapolation_noted &last_eigenvalue &mode_recorded;
     ar &last_stable_inertia.n_positive &last_stable_inertia.n_negative &last_stable_inertia.n_zero;
-    ar &*control &observables &*particle_output;
+    ar &*control &observables                                         &*particle_output;
     if (grid_output)
       ar &*grid_output;
     if (mode_output)
@@ -953,13 +953,12 @@ namespace GelMPM
           sync_to_disk(output_settings.directory + "/" + name);
           header.file_sizes[name] = file->bytes();
         }
-    const auto size =
-      GelMPM::write_checkpoint(output_settings.directory,
-                               header,
-                               [this](boost::archive::binary_oarchive &ar) {
-                                 save_material_points(ar, scene.particles);
-                                 serialize_run_state(ar);
-                               });
+    const auto size = GelMPM::write_checkpoint(output_settings.directory,
+                                               header,
+                                               [this](boost::archive::binary_oarchive &ar) {
+                                                 save_material_points(ar, scene.particles);
+                                                 serialize_run_state(ar);
+                                               });
     last_checkpoint = std::chrono::steady_clock::now();
     checkpoint_step = step;
     pcout << "  checkpoint at step " << step;
@@ -1023,7 +1022,7 @@ namespace GelMPM
     if (stability.write_mode)
       mode_output =
         std::make_unique<GridOutput<dim>>(output_settings.directory, scene.triangulation, "mode");
-    control = std::make_unique<StepControl>(time_stepping,
+    control         = std::make_unique<StepControl>(time_stepping,
                                             stability.bisection_tolerance,
                                             stability.unstable_step,
                                             stability.signature_control);

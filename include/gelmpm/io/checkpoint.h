@@ -7,7 +7,6 @@
 #include <boost/archive/binary_oarchive.hpp>
 #include <boost/serialization/map.hpp>
 #include <boost/serialization/string.hpp>
-
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -99,8 +98,8 @@ namespace GelMPM
    * it cannot be written.
    */
   std::uintmax_t
-  write_checkpoint(const std::string                                          &directory,
-                   const CheckpointHeader                                     &header,
+  write_checkpoint(const std::string                                            &directory,
+                   const CheckpointHeader                                       &header,
                    const std::function<void(boost::archive::binary_oarchive &)> &state);
 
   /**

@@ -4,7 +4,6 @@
 #include <boost/serialization/string.hpp>
 #include <boost/serialization/utility.hpp>
 #include <boost/serialization/vector.hpp>
-
 #include <functional>
 #include <ostream>
 #include <string>

@@ -6,7 +6,6 @@
 #include <deal.II/particles/particle_handler.h>
 
 #include <boost/serialization/array_wrapper.hpp>
-
 #include <cstdint>
 #include <stdexcept>
 #include <string>

@@ -8,9 +8,8 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/particles/particle_handler.h>
 
-#include <boost/serialization/vector.hpp>
-
 #include <array>
+#include <boost/serialization/vector.hpp>
 #include <cmath>
 #include <functional>
 #include <optional>

@@ -211,7 +211,6 @@ namespace GelMPM
     TimeStepping      time_stepping;
     Observables<dim>  observables;
     StabilitySettings stability;
-    CheckpointSettings checkpoint_settings;
 
     std::string                scene_file;
     std::string                parameters_as_used;
@@ -227,9 +226,6 @@ namespace GelMPM
     StatisticsFile                       stability_file; // stability.csv, with the inertia
     StatisticsFile                       events_file;    // events.csv (inertia or pores)
     std::unique_ptr<StepControl>         control;
-    std::unique_ptr<CheckpointReader>    resume_from; // with --resume, until restored
-    std::chrono::steady_clock::time_point last_checkpoint; // or the start
-    unsigned int checkpoint_step = dealii::numbers::invalid_unsigned_int; // of the last one
     bool                                 announced_bracketing        = false;
     bool                                 inexact_extrapolation_noted = false;
     Inertia                              last_stable_inertia;
@@ -239,6 +235,11 @@ namespace GelMPM
     std::vector<double>                  mu_projection;   // points' mu on the step's basis
     std::vector<double> displacement_projection;          // last step's motion on the step's basis
     double              last_dt = 0.; // the last accepted step (0 before the first)
+
+    CheckpointSettings                    checkpoint_settings;
+    std::unique_ptr<CheckpointReader>     resume_from;     // with --resume, until restored
+    std::chrono::steady_clock::time_point last_checkpoint; // or the start
+    unsigned int checkpoint_step = dealii::numbers::invalid_unsigned_int; // of the last one
 
     unsigned int n_volume_points  = 0;
     unsigned int n_surface_points = 0;

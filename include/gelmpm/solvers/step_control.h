@@ -78,6 +78,14 @@ namespace GelMPM
     {
       double t_stable   = 0.;
       double t_unstable = 0.;
+
+      /** Boost serialization (StepControl::serialize()). */
+      template <class Archive>
+      void
+      serialize(Archive &ar, const unsigned int)
+      {
+        ar &t_stable &t_unstable;
+      }
     };
 
     /**
@@ -191,8 +199,7 @@ namespace GelMPM
     serialize(Archive &ar, const unsigned int)
     {
       ar &onset_seen_ &time_ &step_ &proposed &current &attempt_limit &error_limit &retaken_step
-        &retaken_difference &uncontrolled &stable_ &bisecting &unstable_time &bracket_.t_stable
-          &bracket_.t_unstable;
+        &retaken_difference &uncontrolled &stable_ &bisecting &unstable_time &bracket_;
     }
 
   private:
