@@ -3,7 +3,6 @@
 #include <gelmpm/io/checkpoint.h>
 #include <gelmpm/io/file_writing.h>
 
-#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -119,10 +118,6 @@ namespace GelMPM
     interval_steps   = prm.get_integer("Interval steps");
     interval_minutes = prm.get_double("Interval minutes");
     prm.leave_subsection();
-    require(std::isfinite(interval_minutes),
-            "Checkpoint/Interval minutes",
-            "is not a finite number",
-            "give the wall time between checkpoints in minutes, e.g. 30, or 0 for none");
   }
 
 

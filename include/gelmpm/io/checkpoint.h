@@ -37,7 +37,7 @@ namespace GelMPM
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 
-    /** Read the section "Checkpoint"; throws InputError on inconsistent values. */
+    /** Read the section "Checkpoint" (its patterns admit only valid values). */
     void
     parse_parameters(dealii::ParameterHandler &prm);
   };
