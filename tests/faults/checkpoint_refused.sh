@@ -1,6 +1,7 @@
 # --resume refuses, with one message, exit status 2 and nothing written: an output directory
-# without a checkpoint, a checkpoint written for other parameters, by another version, and a
-# truncated or altered checkpoint.
+# without a checkpoint, a checkpoint written for other parameters, by another version, a
+# truncated or altered checkpoint, and a statistics.csv shorter than the checkpoint counted. A
+# later End time is no other scene: it continues the finished run.
 source "$(dirname "$0")/common.sh"
 options=(--set "Time stepping/End time=1" --set "Checkpoint/Interval steps=5")
 "$gelmpm" "$scene" "${options[@]}" >run.log 2>&1
@@ -47,6 +48,13 @@ cp good/checkpoint.bin results/
 head -c $(($(stat -c %s good/statistics.csv) / 2)) good/statistics.csv >results/statistics.csv
 refused "statistics.csv cut short" "needs 'results/statistics.csv' as it was then"
 cp good/statistics.csv results/
+
+rows=$(wc -l <results/statistics.csv)
+"$gelmpm" "$scene" "${options[@]}" --resume --set "Time stepping/End time=1.5" >stdout 2>stderr
+check $? "a later End time: the resumed run failed: $(cat stderr)"
+[[ $(wc -l <results/statistics.csv) -gt $rows ]]
+check $? "a later End time: the resumed run added no rows"
+cp good/statistics.csv good/checkpoint.bin results/
 
 rm results/checkpoint.bin
 refused "no checkpoint" "found no checkpoint in 'results'"
