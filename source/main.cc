@@ -1,12 +1,13 @@
 /**
  * gelmpm: runs a hydrogel scene described by a parameter file.
  *
- *   gelmpm [--set "Section/Entry=value"]... [--check] scene.prm
+ *   gelmpm [--set "Section/Entry=value"]... [--check] [--resume] scene.prm
  *   gelmpm --print-parameters [scene.prm]
  *   gelmpm --help
  *
- * Exit status: 0 success, 1 the run failed, 2 bad input (nothing is written then), 128 + the
- * signal (130 SIGINT, 143 SIGTERM) when a signal stopped the run after a step.
+ * Exit status: 0 success, 1 the run failed, 2 bad input or a checkpoint that cannot be resumed
+ * (nothing is written then), 128 + the signal (130 SIGINT, 143 SIGTERM) when a signal stopped
+ * the run after a step.
  */
 #include <gelmpm/core/input_error.h>
 #include <gelmpm/core/parameters.h>
@@ -36,7 +37,7 @@ namespace
         return 0;
       }
 
-    GelMPM::Simulator<dim> simulator(prm, structure, cl.scene_file);
+    GelMPM::Simulator<dim> simulator(prm, structure, cl.scene_file, cl.resume);
     if (cl.check_only)
       {
         std::cout << "gelmpm: scene '" << cl.scene_file << "' is valid\n";

@@ -257,6 +257,8 @@ namespace GelMPM
           cl.print_parameters = true;
         else if (arg == "--check")
           cl.check_only = true;
+        else if (arg == "--resume")
+          cl.resume = true;
         else if (arg == "--set")
           {
             require(i + 1 < argc,
@@ -295,12 +297,15 @@ namespace GelMPM
            "  --set \"Section/Entry=value\"  override one entry of the scene file (repeatable;\n"
            "                               nested sections are separated by '/')\n"
            "  --check                      read and validate the scene, write nothing, exit\n"
+           "  --resume                     continue the run from the checkpoint in the scene's\n"
+           "                               output directory (section Checkpoint)\n"
            "  --print-parameters           print every entry with its documentation, pattern and\n"
            "                               default (with a scene file: with that scene's values)\n"
            "  --help                       this text\n"
            "\n"
            "Exit status: 0 success, 1 the run failed (e.g. no convergence, disk full), 2 bad\n"
-           "input (nothing is written), 130/143 stopped by SIGINT/SIGTERM after a step.\n";
+           "input or a checkpoint that cannot be resumed (nothing is written), 130/143 stopped\n"
+           "by SIGINT/SIGTERM after a step.\n";
   }
 
 

@@ -3,7 +3,10 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <fcntl.h>
+#include <filesystem>
 #include <stdexcept>
+#include <unistd.h>
 
 namespace GelMPM
 {
@@ -41,7 +44,8 @@ namespace GelMPM
   commit_file(std::ofstream     &out,
               const std::string &partial,
               const std::string &path,
-              const int          error)
+              const int          error,
+              const bool         synchronise)
   {
     if (out)
       out.flush();
@@ -54,11 +58,41 @@ namespace GelMPM
         std::remove(partial.c_str());
         throw std::runtime_error(write_failure(path, reason));
       }
+    if (synchronise)
+      try
+        {
+          sync_to_disk(partial);
+        }
+      catch (const std::runtime_error &)
+        {
+          std::remove(partial.c_str());
+          throw;
+        }
     if (std::rename(partial.c_str(), path.c_str()) != 0)
       {
         const int reason = errno;
         std::remove(partial.c_str());
         throw std::runtime_error(write_failure(path, reason));
       }
+    if (synchronise)
+      sync_to_disk(std::filesystem::path(path).parent_path().empty()
+                     ? std::string(".")
+                     : std::filesystem::path(path).parent_path().string());
+  }
+
+
+  void
+  sync_to_disk(const std::string &path)
+  {
+    // A descriptor opened for reading is enough for fsync, also for a directory.
+    const int fd = ::open(path.c_str(), O_RDONLY);
+    if (fd < 0 || ::fsync(fd) != 0)
+      {
+        const int reason = errno;
+        if (fd >= 0)
+          ::close(fd);
+        throw std::runtime_error(write_failure(path, reason));
+      }
+    ::close(fd);
   }
 } // namespace GelMPM

@@ -16,8 +16,9 @@ namespace GelMPM
                       "parameters.prm (the parameters as used, after --set) and the ParaView "
                       "files. A run first removes the files an earlier run wrote there (only the "
                       "names gelmpm writes: the particles, grid and mode series, statistics.csv, "
-                      "stability.csv, events.csv, parameters.prm, original.prm); it may not be the "
-                      "directory of the scene file.");
+                      "stability.csv, events.csv, parameters.prm, original.prm, checkpoint.bin), "
+                      "except with --resume, which continues them; it may not be the directory of "
+                      "the scene file.");
     prm.declare_entry("Write particles",
                       "true",
                       Patterns::Bool(),

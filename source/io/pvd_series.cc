@@ -6,8 +6,10 @@
 
 #include <cerrno>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <regex>
 #include <sstream>
 #include <stdexcept>
 
@@ -72,6 +74,26 @@ namespace GelMPM
         error = errno != 0 ? errno : EIO;
       }
     commit_file(out, partial, path, error);
+  }
+
+
+  void
+  PvdSeries::restore_files() const
+  {
+    const std::regex later(name + "-([0-9]{5})\\.vtu(\\.tmp)?|" + name + "\\.pvd\\.tmp");
+    std::error_code  error;
+    for (const auto &entry : std::filesystem::directory_iterator(directory, error))
+      {
+        std::smatch       match;
+        const std::string file = entry.path().filename().string();
+        if (std::regex_match(file, match, later) &&
+            (match[1].length() == 0 || match[2].length() > 0 ||
+             std::stoul(match[1].str()) >= series.size()))
+          std::filesystem::remove(entry.path(), error);
+      }
+    write_file(directory + "/" + name + ".pvd", [&](std::ostream &out) {
+      dealii::DataOutBase::write_pvd_record(out, series);
+    });
   }
 
 

@@ -12,20 +12,72 @@
 namespace GelMPM
 {
   void
-  StatisticsFile::open(const std::string &file_name, const std::vector<std::string> &columns)
+  StatisticsFile::set_columns(const std::string &file_name, const std::vector<std::string> &columns)
   {
-    name  = file_name;
-    errno = 0;
-    file.open(file_name, std::ios::binary | std::ios::trunc);
-    if (!file)
-      throw std::runtime_error(write_failure(file_name, errno));
+    name     = file_name;
     complete = 0;
     columns_ = columns;
     index.clear();
     for (unsigned int i = 0; i < columns.size(); ++i)
       index[columns[i]] = i;
     current.assign(columns.size(), "");
+    rows_.clear();
+  }
+
+
+  void
+  StatisticsFile::open(const std::string &file_name, const std::vector<std::string> &columns)
+  {
+    set_columns(file_name, columns);
+    errno = 0;
+    file.open(file_name, std::ios::binary | std::ios::trunc);
+    if (!file)
+      throw std::runtime_error(write_failure(file_name, errno));
     append_line(columns);
+  }
+
+
+  void
+  StatisticsFile::resume(const std::string              &file_name,
+                         const std::vector<std::string> &columns,
+                         const std::uintmax_t            size)
+  {
+    set_columns(file_name, columns);
+    std::error_code error;
+    if (std::filesystem::file_size(file_name, error) < size || error)
+      throw std::runtime_error("'" + file_name +
+                               "' is shorter than when the checkpoint was written");
+    std::filesystem::resize_file(file_name, size, error);
+    if (error)
+      throw std::runtime_error("cannot cut '" + file_name + "' back to the checkpoint (" +
+                               error.message() + ")");
+    // The rows so far, for rows(); the first line must be this run's header.
+    std::ifstream in(file_name, std::ios::binary);
+    std::string   line;
+    for (bool header = true; std::getline(in, line); header = false)
+      {
+        std::vector<std::string> fields;
+        std::stringstream        row(line);
+        for (std::string cell; std::getline(row, cell, ',');)
+          fields.push_back(cell);
+        if (header && fields != columns)
+          throw std::runtime_error("'" + file_name + "' has other columns than the resumed run");
+        fields.resize(columns.size()); // a row's empty last fields
+        if (!header)
+          rows_.push_back(fields);
+      }
+    errno = 0;
+    file.open(file_name, std::ios::binary | std::ios::app);
+    if (!file)
+      throw std::runtime_error(write_failure(file_name, errno));
+    complete = size;
+  }
+
+
+  std::uintmax_t
+  StatisticsFile::bytes() const
+  {
+    return complete;
   }
 
 

@@ -3,6 +3,7 @@
 #include <gelmpm/core/version.h>
 #include <gelmpm/io/file_writing.h>
 #include <gelmpm/particles/point_location.h>
+#include <gelmpm/particles/point_serialization.h>
 #include <gelmpm/simulator/simulator.h>
 
 #include <deal.II/base/mpi.h>
@@ -32,13 +33,15 @@ namespace GelMPM
     TimeStepping::declare_parameters(prm);
     Observables<dim>::declare_parameters(prm);
     StabilitySettings::declare_parameters(prm);
+    CheckpointSettings::declare_parameters(prm);
   }
 
 
   template <int dim>
   Simulator<dim>::Simulator(dealii::ParameterHandler &prm,
                             const SceneStructure     &structure,
-                            const std::string        &scene_file)
+                            const std::string        &scene_file,
+                            const bool                resume)
     : structure(structure)
     , scene(prm, structure.boundary_pieces)
     , scene_file(scene_file)
@@ -51,6 +54,7 @@ namespace GelMPM
     time_stepping.parse_parameters(prm);
     observables.parse_parameters(prm, structure.boundary_pieces);
     stability.parse_parameters(prm);
+    checkpoint_settings.parse_parameters(prm);
     require(!stability.enabled() || scene.nitsche.symmetry > 0.,
             "Stability/Inertia",
             "needs a symmetric tangent, but 'Nitsche/Variant = skew-symmetric'",
@@ -80,6 +84,27 @@ namespace GelMPM
     std::ostringstream used;
     prm.print_parameters(used, dealii::ParameterHandler::ShortPRM);
     parameters_as_used = used.str();
+
+    if (resume)
+      {
+        resume_from        = std::make_unique<CheckpointReader>(output_settings.directory,
+                                                         checkpoint_parameters(parameters_as_used));
+        const auto &header = resume_from->header();
+        for (const auto &[name, size] : header.file_sizes)
+          {
+            const std::string path = output_settings.directory + "/" + name;
+            std::error_code   error;
+            const auto        found = std::filesystem::file_size(path, error);
+            require(!error && found >= size,
+                    "",
+                    "cannot resume: the checkpoint at step " + std::to_string(header.step) +
+                      " needs '" + path + "' as it was then (" + std::to_string(size) +
+                      " bytes), but it " +
+                      (error ? "cannot be read (" + error.message() + ")"
+                             : "has only " + std::to_string(found) + " bytes"),
+                    "restore the file, or run the scene from the start (without --resume)");
+          }
+      }
   }
 
 
@@ -199,7 +224,8 @@ namespace GelMPM
             "Output/Directory",
             "'" + output_settings.directory + "' cannot be created (" + error.message() + ")",
             "choose a directory you can write to");
-    remove_earlier_output();
+    if (!resume_from)
+      remove_earlier_output();
     {
       const std::string path = output_settings.directory + "/parameters.prm";
       std::ofstream     out  = open_partial(path + ".tmp", path);
@@ -219,7 +245,8 @@ namespace GelMPM
     // Only the names this program writes: a particles-00042.vtu of a longer earlier run would
     // otherwise sit next to this run's series as if it belonged to it.
     const std::regex ours("(particles|grid|mode)(-[0-9]{5}\\.vtu|\\.pvd)(\\.tmp)?|"
-                          "(statistics|stability|events)\\.csv|parameters\\.prm|original\\.prm");
+                          "(statistics|stability|events)\\.csv|parameters\\.prm|original\\.prm|"
+                          "checkpoint\\.bin(\\.tmp)?");
     std::error_code  error;
     for (const auto &entry : std::filesystem::directory_iterator(output_settings.directory, error))
       if (entry.is_regular_file() && std::regex_match(entry.path().filename().string(), ours))
@@ -276,7 +303,20 @@ namespace GelMPM
         columns.push_back(name);
     for (const auto &c : observables.columns())
       columns.push_back(c);
-    statistics.open(output_settings.directory + "/statistics.csv", columns);
+    // A resumed run continues its files where the checkpoint left them.
+    const auto open = [this](StatisticsFile                 &file,
+                             const std::string              &name,
+                             const std::vector<std::string> &file_columns) {
+      const std::string path = output_settings.directory + "/" + name;
+      if (!resume_from)
+        return file.open(path, file_columns);
+      const auto &sizes = resume_from->header().file_sizes;
+      const auto  size  = sizes.find(name);
+      if (size == sizes.end())
+        throw std::runtime_error("the checkpoint does not know '" + path + "'");
+      file.resume(path, file_columns, size->second);
+    };
+    open(statistics, "statistics.csv", columns);
     if (stability.inertia)
       {
         std::vector<std::string> bracket_columns = {"t_stable",
@@ -289,11 +329,10 @@ namespace GelMPM
         if (stability.n_eigenvalues > 0)
           for (const char *name : {"eig_1_stable", "eig_1_unstable"})
             bracket_columns.push_back(name);
-        stability_file.open(output_settings.directory + "/stability.csv", bracket_columns);
+        open(stability_file, "stability.csv", bracket_columns);
       }
     if (stability.inertia || observables.boundary_chemical_potential(scene.particles))
-      events_file.open(output_settings.directory + "/events.csv",
-                       {"event", "time", "t_over_tau_d", "mu_boundary", "pore"});
+      open(events_file, "events.csv", {"event", "time", "t_over_tau_d", "mu_boundary", "pore"});
   }
 
 
@@ -871,8 +910,105 @@ namespace GelMPM
             write_output();
             return 1;
           }
+        if (checkpoint_due())
+          write_checkpoint();
       }
     return 0;
+  }
+
+
+  template <int dim>
+  bool
+  Simulator<dim>::checkpoint_due() const
+  {
+    if (!checkpoint_settings.enabled() || checkpoint_step == step)
+      return false;
+    const std::chrono::duration<double, std::ratio<60>> since =
+      std::chrono::steady_clock::now() - last_checkpoint;
+    return (checkpoint_settings.interval_steps > 0 &&
+            step % checkpoint_settings.interval_steps == 0) ||
+           (checkpoint_settings.interval_minutes > 0. &&
+            since.count() >= checkpoint_settings.interval_minutes) ||
+           control->finished();
+  }
+
+
+  template <int dim>
+  template <class Archive>
+  void
+  Simulator<dim>::serialize_run_state(Archive &ar)
+  {
+    ar &time &step &output_step &next_output_time                          &last_dt;
+    ar &mu_coefficients                                                    &mu_known;
+    ar &announced_bracketing &inexact_extrapolation_noted &last_eigenvalue &mode_recorded;
+    ar &last_stable_inertia.n_positive &last_stable_inertia.n_negative &last_stable_inertia.n_zero;
+    ar &*control &observables                                         &*particle_output;
+    if (grid_output)
+      ar &*grid_output;
+    if (mode_output)
+      ar &*mode_output;
+  }
+
+
+  template <int dim>
+  void
+  Simulator<dim>::write_checkpoint()
+  {
+    dealii::TimerOutput::Scope scope(timer, "checkpoint");
+    const auto                 begin = std::chrono::steady_clock::now();
+    CheckpointHeader           header;
+    header.parameters = checkpoint_parameters(parameters_as_used);
+    header.step       = step;
+    header.time       = time;
+    // The rows up to here must be on the disk when the checkpoint that counts them is.
+    for (const auto &[file, name] : {std::make_pair(&statistics, "statistics.csv"),
+                                     std::make_pair(&stability_file, "stability.csv"),
+                                     std::make_pair(&events_file, "events.csv")})
+      if (file->bytes() > 0)
+        {
+          sync_to_disk(output_settings.directory + "/" + name);
+          header.file_sizes[name] = file->bytes();
+        }
+    const auto size = GelMPM::write_checkpoint(output_settings.directory,
+                                               header,
+                                               [this](boost::archive::binary_oarchive &ar) {
+                                                 save_material_points(ar, scene.particles);
+                                                 serialize_run_state(ar);
+                                               });
+    last_checkpoint = std::chrono::steady_clock::now();
+    checkpoint_step = step;
+    pcout << "  checkpoint at step " << step;
+    if (!output_settings.test_mode)
+      pcout << " (" << std::setprecision(3) << size / 1e6 << " MB in "
+            << std::chrono::duration<double>(last_checkpoint - begin).count() << " s)"
+            << std::setprecision(6);
+    pcout << std::endl;
+  }
+
+
+  template <int dim>
+  void
+  Simulator<dim>::restore_checkpoint()
+  {
+    auto &ar = resume_from->archive();
+    load_material_points(ar, scene.particles, scene.triangulation);
+    serialize_run_state(ar);
+    open_statistics();
+    if (output_settings.write_particles)
+      particle_output->restore_files();
+    if (grid_output)
+      grid_output->restore_files();
+    if (mode_output)
+      mode_output->restore_files();
+    std::error_code ignored;
+    std::filesystem::remove(checkpoint_path(output_settings.directory) + ".tmp", ignored);
+    // From the first accepted step on the run accepts inexact extrapolations (advance()).
+    if (step > 0)
+      scene.spaces->tolerate_inexact_extrapolation();
+    resume_from.reset();
+    checkpoint_step = step;
+    pcout << "  resumed from the checkpoint at step " << step << ", t/tau_d = " << time
+          << std::endl;
   }
 
 
@@ -896,17 +1032,21 @@ namespace GelMPM
       {
         grid_output =
           std::make_unique<GridOutput<dim>>(output_settings.directory, scene.triangulation);
-        record_initial_grid();
+        if (!resume_from)
+          record_initial_grid();
       }
     if (stability.write_mode)
       mode_output =
         std::make_unique<GridOutput<dim>>(output_settings.directory, scene.triangulation, "mode");
-    open_statistics();
-    next_output_time = output_settings.interval_time;
-    control          = std::make_unique<StepControl>(time_stepping,
+    control         = std::make_unique<StepControl>(time_stepping,
                                             stability.bisection_tolerance,
                                             stability.unstable_step,
                                             stability.signature_control);
+    last_checkpoint = std::chrono::steady_clock::now();
+    if (resume_from)
+      return restore_checkpoint();
+    open_statistics();
+    next_output_time = output_settings.interval_time;
 
     statistics.set("dt", 0.);
     record_statistics(NewtonReport(), 0, nullptr);
@@ -918,6 +1058,10 @@ namespace GelMPM
   int
   Simulator<dim>::stop_on_signal(const int signal)
   {
+    // Before the last output, which the uninterrupted run would not write: the resumed run
+    // drops it from the series.
+    if (checkpoint_settings.enabled() && checkpoint_step != step)
+      write_checkpoint();
     if (output_step != step)
       write_output();
     std::cerr << "gelmpm: " << signal_name(signal) << " received: stopped after step " << step

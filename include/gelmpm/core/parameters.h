@@ -60,6 +60,8 @@ namespace GelMPM
     bool print_parameters = false;
     /** --check: read and validate the scene, then exit without writing anything. */
     bool check_only = false;
+    /** --resume: continue the run from the checkpoint in the scene's output directory. */
+    bool resume = false;
 
     /** Parse argv. Throws InputError on unknown options or a missing scene file argument. */
     static CommandLine

@@ -24,13 +24,23 @@ namespace GelMPM
   /**
    * Close @p out, written as @p partial, and rename it to @p path. If writing failed, remove
    * @p partial and throw std::runtime_error (write_failure() of @p path with @p error, or with
-   * errno if @p error is 0).
+   * errno if @p error is 0). With @p synchronise, the file is on the disk before it is renamed and
+   * the rename before this returns (sync_to_disk()): what must survive a crash of the machine, not
+   * only of the run.
    */
   void
   commit_file(std::ofstream     &out,
               const std::string &partial,
               const std::string &path,
-              const int          error = 0);
+              const int          error       = 0,
+              const bool         synchronise = false);
+
+  /**
+   * Wait until the file or directory @p path is on the disk (fsync). Throws std::runtime_error
+   * (write_failure()) if that fails.
+   */
+  void
+  sync_to_disk(const std::string &path);
 } // namespace GelMPM
 
 #endif

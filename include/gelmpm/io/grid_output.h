@@ -79,6 +79,24 @@ namespace GelMPM
     const std::vector<std::pair<double, std::string>> &
     times_and_names() const;
 
+    /**
+     * The series and the state last recorded (the next write() writes it), for a checkpoint
+     * (boost serialization).
+     */
+    template <class Archive>
+    void
+    serialize(Archive &ar, const unsigned int)
+    {
+      ar &series &recorded &u_cell_kind &mu_cell_kind &n_volume_points &vertex_values;
+    }
+
+    /** After a checkpoint was read: PvdSeries::restore_files(). */
+    void
+    restore_files() const
+    {
+      series.restore_files();
+    }
+
   private:
     /** Values of du (components 0..dim-1) and mu (component dim) at the vertices of @p cell. */
     void

@@ -36,6 +36,21 @@ namespace GelMPM
     const std::vector<std::pair<double, std::string>> &
     times_and_names() const;
 
+    /** The series so far, for a checkpoint (boost serialization). */
+    template <class Archive>
+    void
+    serialize(Archive &ar, const unsigned int)
+    {
+      ar &series;
+    }
+
+    /** After a checkpoint was read: PvdSeries::restore_files(). */
+    void
+    restore_files() const
+    {
+      series.restore_files();
+    }
+
   private:
     const FloryRehnerGel<dim> &material;
     PvdSeries                  series;

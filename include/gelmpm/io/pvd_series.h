@@ -1,6 +1,9 @@
 #ifndef gelmpm_io_pvd_series_h
 #define gelmpm_io_pvd_series_h
 
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
 #include <functional>
 #include <ostream>
 #include <string>
@@ -47,6 +50,22 @@ namespace GelMPM
     /** (time, file name) of every output so far. */
     const std::vector<std::pair<double, std::string>> &
     times_and_names() const;
+
+    /** The outputs so far, for a checkpoint (boost serialization). */
+    template <class Archive>
+    void
+    serialize(Archive &ar, const unsigned int)
+    {
+      ar &series;
+    }
+
+    /**
+     * After the outputs were read back from a checkpoint: rewrite the .pvd file with them and
+     * remove this series' files that a run wrote after the checkpoint (numbered from their count
+     * on, and temporary files).
+     */
+    void
+    restore_files() const;
 
   private:
     /** Write @p path with @p writer under a temporary name and rename it when complete. */

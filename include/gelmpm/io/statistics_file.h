@@ -24,6 +24,20 @@ namespace GelMPM
     void
     open(const std::string &file_name, const std::vector<std::string> &columns);
 
+    /**
+     * Continue @p file_name, written by an earlier run with the same @p columns, after its first
+     * @p size bytes (a checkpoint's bytes(); the rows after them are cut off). Throws
+     * std::runtime_error if the file is shorter or has other columns.
+     */
+    void
+    resume(const std::string              &file_name,
+           const std::vector<std::string> &columns,
+           const std::uintmax_t            size);
+
+    /** The bytes of the complete rows written so far, header included. */
+    std::uintmax_t
+    bytes() const;
+
     /** Set the value of @p column for the current row. */
     void
     set(const std::string &column, const double value);
@@ -45,6 +59,10 @@ namespace GelMPM
     rows() const;
 
   private:
+    /** Name the file and its @p columns; no file is opened. */
+    void
+    set_columns(const std::string &file_name, const std::vector<std::string> &columns);
+
     /**
      * Write @p fields as one line and flush; if that fails, cut the file back to its last
      * complete line and throw std::runtime_error (write_failure()).

@@ -9,6 +9,7 @@
 #include <deal.II/particles/particle_handler.h>
 
 #include <array>
+#include <boost/serialization/vector.hpp>
 #include <cmath>
 #include <functional>
 #include <optional>
@@ -95,6 +96,14 @@ namespace GelMPM
      */
     std::vector<std::pair<std::string, unsigned int>>
     new_events(const dealii::Particles::ParticleHandler<dim> &particles);
+
+    /** The events seen so far, for a checkpoint (boost serialization). */
+    template <class Archive>
+    void
+    serialize(Archive &ar, const unsigned int)
+    {
+      ar &contact_seen &creases_seen;
+    }
 
   private:
     /** What pore_shapes() measures of one pore. */

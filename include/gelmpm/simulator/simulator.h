@@ -2,6 +2,7 @@
 #define gelmpm_simulator_simulator_h
 
 #include <gelmpm/core/parameters.h>
+#include <gelmpm/io/checkpoint.h>
 #include <gelmpm/io/grid_output.h>
 #include <gelmpm/io/output_settings.h>
 #include <gelmpm/io/particle_output.h>
@@ -20,6 +21,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/vector.h>
 
+#include <chrono>
 #include <memory>
 #include <string>
 #include <vector>
@@ -53,11 +55,15 @@ namespace GelMPM
 
     /**
      * Read and check all parameters from @p prm (filled from @p scene_file and overrides).
-     * Throws InputError on inconsistent input.
+     * Throws InputError on inconsistent input. With @p resume, the run continues from the
+     * checkpoint in the output directory, which is read and checked here too (InputError if
+     * there is none, if it is damaged, or if it was written by another version or for other
+     * parameters).
      */
     Simulator(dealii::ParameterHandler &prm,
               const SceneStructure     &structure,
-              const std::string        &scene_file);
+              const std::string        &scene_file,
+              const bool                resume = false);
 
     /** Releases the direct solver before the system whose matrix it factorised. */
     ~Simulator();
@@ -103,9 +109,36 @@ namespace GelMPM
     check_output_directory() const;
     void
     open_statistics();
-    /** Create the system and the output files; write the initial state. */
+    /** Create the system and the output files; write the initial state (or resume). */
     void
     start();
+    /**
+     * Whether a checkpoint is due after the step just taken ('Checkpoint/Interval steps' and
+     * 'Interval minutes'; at the end of the run).
+     */
+    bool
+    checkpoint_due() const;
+    /**
+     * Write the checkpoint of the state after the last converged step (CheckpointHeader, the
+     * material points, serialize_run_state()), with the .csv files on the disk first.
+     */
+    void
+    write_checkpoint();
+    /**
+     * Continue from the checkpoint read by the constructor: the material points and the run's
+     * state, the .csv files cut back and the ParaView series rewritten to where they were.
+     */
+    void
+    restore_checkpoint();
+    /**
+     * Write or read (boost serialization) everything besides the material points that the next
+     * step, the output schedule and the files read: time, step, the step control, the last step
+     * (predictor), the chemical-potential coefficients of the initial guess, the stability
+     * bracketing, the observables' events and the ParaView series.
+     */
+    template <class Archive>
+    void
+    serialize_run_state(Archive &ar);
     /**
      * End the run on @p signal after the current step: write its output unless written, say
      * so, and return the conventional status 128 + @p signal.
@@ -202,6 +235,11 @@ namespace GelMPM
     std::vector<double>                  mu_projection;   // points' mu on the step's basis
     std::vector<double> displacement_projection;          // last step's motion on the step's basis
     double              last_dt = 0.; // the last accepted step (0 before the first)
+
+    CheckpointSettings                    checkpoint_settings;
+    std::unique_ptr<CheckpointReader>     resume_from;     // with --resume, until restored
+    std::chrono::steady_clock::time_point last_checkpoint; // or the start
+    unsigned int checkpoint_step = dealii::numbers::invalid_unsigned_int; // of the last one
 
     unsigned int n_volume_points  = 0;
     unsigned int n_surface_points = 0;

@@ -78,6 +78,14 @@ namespace GelMPM
     {
       double t_stable   = 0.;
       double t_unstable = 0.;
+
+      /** Boost serialization (StepControl::serialize()). */
+      template <class Archive>
+      void
+      serialize(Archive &ar, const unsigned int)
+      {
+        ar &t_stable &t_unstable;
+      }
     };
 
     /**
@@ -208,6 +216,19 @@ namespace GelMPM
 
     const TimeStepping &
     settings() const;
+
+    /**
+     * Write or read the state for a checkpoint (boost serialization): every member that a later
+     * call reads, so that a resumed run steps exactly as the run that wrote the checkpoint; the
+     * settings come from the scene. A new member of the state belongs here too.
+     */
+    template <class Archive>
+    void
+    serialize(Archive &ar, const unsigned int)
+    {
+      ar &onset_seen_ &time_ &step_ &proposed &current &attempt_limit &error_limit &retaken_step
+        &retaken_difference &uncontrolled &stable_ &bisecting &unstable_time &bracket_;
+    }
 
   private:
     TimeStepping settings_;
