@@ -227,7 +227,8 @@ namespace GelMPM
     serialize(Archive &ar, const unsigned int)
     {
       ar &onset_seen_ &time_ &step_ &proposed &current &attempt_limit &error_limit &retaken_step
-        &retaken_difference &uncontrolled &stable_ &bisecting &unstable_time &bracket_;
+        &retaken_excess &first_retake &noise_step &uncontrolled &stable_ &bisecting &unstable_time
+          &bracket_;
     }
 
   private:
