@@ -141,7 +141,9 @@ namespace GelMPM
     // dt: both give the step that meets their tolerance as dt / excess.
     if (settings_.displacement_tolerance > 0.)
       excess.factor = std::sqrt(displacement_difference / settings_.displacement_tolerance);
-    if (settings_.tolerance > 0. && dt > 0.)
+    // Where a step cap applies the scene sets the steps by hand (a loading ramp): the
+    // tolerance does not overrule it there.
+    if (settings_.tolerance > 0. && dt > 0. && std::isinf(settings_.cap(time_)))
       {
         const double per_unit_time = local_error * (time_ + dt) / (dt * settings_.tolerance);
         if (per_unit_time > excess.factor)

@@ -78,7 +78,8 @@ namespace GelMPM
       "early steps are short). A step above it is retaken shorter; the next step is the one "
       "the estimate allows, with a safety factor 0.9, never more than the Newton rule's "
       "growth. The measured error against the reference follows it (doc/performance.md, "
-      "'Error-controlled steps'). Combine with 'Growth factor' = 2 and no 'Step caps'. "
+      "'Error-controlled steps'). It does not act where a 'Step caps' interval applies (steps "
+      "set by hand, e.g. over a loading ramp); combine it with 'Growth factor' = 2. "
       "Material point scenes only; the "
       "body-fitted peer ignores it. 0: off.");
     prm.declare_entry("Step caps",

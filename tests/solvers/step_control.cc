@@ -246,6 +246,13 @@ main()
          both.error_excess(1e-4, 2e-3, dt2).per_unit_time; // 0.1 against 2: the tolerance
     std::cout << "with both rules the stricter decides: " << ok << std::endl;
 
+    GelMPM::TimeStepping capped   = s;
+    capped.displacement_tolerance = 0.;
+    capped.caps                   = {{0.5, 0.2}};
+    StepControl by_hand(capped);
+    std::cout << "no tolerance where a cap sets the steps: "
+              << (by_hand.error_excess(0., 1., by_hand.attempt()).factor == 0.) << std::endl;
+
     // Noise: an excess per unit time that shrinks by less than the square root of the step
     // ratio is accepted, and the next step starts again from the first retaken attempt.
     s.displacement_tolerance = 0.;

@@ -145,7 +145,8 @@ namespace GelMPM
      *   predictor-corrector difference of a point's displacement;
      * - 'Tolerance': @p local_error (t + @p dt) / (@p dt Tolerance), the local error estimate
      *   normalised by L and k_BT (MixedSystem::local_error_estimate()) per unit relative time
-     *   dt / (t + dt).
+     *   dt / (t + dt); not where a step cap applies (the scene sets the steps there by hand,
+     *   e.g. over a loading ramp).
      */
     ErrorExcess
     error_excess(const double displacement_difference,
