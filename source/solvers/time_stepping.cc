@@ -230,8 +230,10 @@ namespace GelMPM
           next = std::min(next, s);
           break;
         }
-    // Land on the next stop exactly.
-    if (t + step >= next * (1. - 1e-10))
+    // Land on the next stop exactly rather than leave a remainder of round-off size; but never
+    // stretch a step by more than a thousandth (a step the error control shortened near a stop
+    // would be stretched back to the same attempt over and over).
+    if (t + step >= next - std::min(1e-10 * next, 1e-3 * step))
       step = next - t;
     return step;
   }
