@@ -113,10 +113,11 @@ namespace GelMPM
 
 
   template <int dim>
-  void
-  MixedSystem<dim>::setup(dealii::Particles::ParticleHandler<dim> &particle_handler)
+  bool
+  MixedSystem<dim>::setup(dealii::Particles::ParticleHandler<dim> &particle_handler,
+                          const std::function<void()>             &before_new_pattern)
   {
-    classify_cells(particle_handler);
+    const bool new_pattern = classify_cells(particle_handler);
 
     std::vector<PointRecord>                                                         unsorted;
     std::vector<typename dealii::Particles::ParticleHandler<dim>::particle_iterator> its;
@@ -130,12 +131,17 @@ namespace GelMPM
       }
     group_points(unsorted, its, cells);
     evaluate_shape_functions();
-    build_sparsity_pattern();
+    if (new_pattern)
+      {
+        before_new_pattern();
+        build_sparsity_pattern();
+      }
+    return new_pattern;
   }
 
 
   template <int dim>
-  void
+  bool
   MixedSystem<dim>::classify_cells(const dealii::Particles::ParticleHandler<dim> &particle_handler)
   {
     // The cells that hold volume points decide the classification (§3.5).
@@ -160,6 +166,10 @@ namespace GelMPM
       }
     spaces_.reinit(has_material);
     n_active_cells_ = std::count(has_material.begin(), has_material.end(), true);
+    if (has_material == pattern_classification)
+      return false;
+    pattern_classification = std::move(has_material);
+    return true;
   }
 
 
@@ -952,6 +962,7 @@ namespace GelMPM
     // and add each block once.
     dealii::FullMatrix<double> local_mass;
     dealii::FullMatrix<double> local_rhs;
+    std::vector<double>        point_values(n_components);
     for (const Block &b : blocks)
       {
         const auto        &dofs = space.cell_dofs(cell_of(b));
@@ -964,11 +975,13 @@ namespace GelMPM
             if (r.kind != PointKind::volume)
               continue;
             const double *values = displacement ? &u_values[r.u_offset] : &mu_values[r.mu_offset];
+            for (unsigned int c = 0; c < n_components; ++c)
+              point_values[c] = value(r, c);
             for (unsigned int i = 0; i < m; ++i)
               {
                 const double Vi = r.measure * values[i];
                 for (unsigned int c = 0; c < n_components; ++c)
-                  local_rhs(c, i) += Vi * value(r, c);
+                  local_rhs(c, i) += Vi * point_values[c];
                 for (unsigned int j = 0; j < m; ++j)
                   local_mass(i, j) += Vi * values[j];
               }

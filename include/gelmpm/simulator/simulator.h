@@ -198,10 +198,12 @@ namespace GelMPM
     Inertia                              last_stable_inertia;
     double                               last_eigenvalue = 0.;
     std::vector<double>                  mu_coefficients; // per mu control point
-    std::vector<bool>                    mu_known;        // coefficient holds a current value
-    std::vector<double>                  mu_projection;   // points' mu on the step's basis
-    std::vector<double> displacement_projection;          // last step's motion on the step's basis
-    double              last_dt = 0.; // the last accepted step (0 before the first)
+    // Over all attempts of the run, for the summary at its end.
+    unsigned long       n_newton_iterations = 0, n_factorizations = 0, n_new_patterns = 0;
+    std::vector<bool>   mu_known;                // coefficient holds a current value
+    std::vector<double> mu_projection;           // points' mu on the step's basis
+    std::vector<double> displacement_projection; // last step's motion on the step's basis
+    double              last_dt = 0.;            // the last accepted step (0 before the first)
 
     unsigned int n_volume_points  = 0;
     unsigned int n_surface_points = 0;
