@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <string>
 
 #include "scene_fixture.h"
 
@@ -20,8 +21,9 @@ using namespace dealii;
 
 namespace
 {
-  const char *
-  verdict(const bool ok)
+  /** The verdict of one check as the output file has it. */
+  std::string
+  yes_or_fail(const bool ok)
   {
     return ok ? "yes" : "no  FAIL";
   }
@@ -31,10 +33,11 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  SceneFixture                     scene;
-  auto                            &system = *scene.system;
-  const auto                      &spaces = system.spaces();
   TimerOutput                      timer(std::cout, TimerOutput::never, TimerOutput::wall_times);
+  // Two steps on one pattern: the fixture's system, set up once.
+  SceneFixture scene;
+  auto        &system = *scene.system;
+  const auto  &spaces = system.spaces();
 
   Vector<double> x_0(spaces.n_dofs());
   for (unsigned int i = spaces.n_u_dofs(); i < spaces.n_dofs(); ++i)
@@ -73,19 +76,20 @@ main(int argc, char **argv)
       change -= start;
       difference -= x_newton;
       std::cout << "step to t = " << t << ":" << std::endl;
-      std::cout << "  both converge: " << verdict(full.converged && reused.converged) << std::endl;
+      std::cout << "  both converge: " << yes_or_fail(full.converged && reused.converged)
+                << std::endl;
       std::cout << "  same state within 1e-7 of the change: "
-                << verdict(difference.l2_norm() <= 1e-7 * change.l2_norm()) << std::endl;
+                << yes_or_fail(difference.l2_norm() <= 1e-7 * change.l2_norm()) << std::endl;
       std::cout << "  Newton factorises at every iteration: "
-                << verdict(full.factorizations == full.iterations) << std::endl;
+                << yes_or_fail(full.factorizations == full.iterations) << std::endl;
       std::cout << "  the modified iteration factorises less often: "
-                << verdict(reused.factorizations < reused.iterations) << std::endl;
+                << yes_or_fail(reused.factorizations < reused.iterations) << std::endl;
       ok &= full.converged && reused.converged && difference.l2_norm() <= 1e-7 * change.l2_norm() &&
             full.factorizations == full.iterations && reused.factorizations < reused.iterations;
       if (t > 0.05)
         {
           std::cout << "  the second step starts from the kept factorisation: "
-                    << verdict(started_factorised) << std::endl;
+                    << yes_or_fail(started_factorised) << std::endl;
           ok &= started_factorised;
         }
     }
@@ -97,7 +101,7 @@ main(int argc, char **argv)
   const auto restart =
     GelMPM::solve_newton(system, x_modified, dt, modified, kept_solver, scale_u, scale_mu, timer);
   std::cout << "a stale factorisation is replaced and the step converges: "
-            << verdict(restart.converged && restart.factorizations >= 1) << std::endl;
+            << yes_or_fail(restart.converged && restart.factorizations >= 1) << std::endl;
   ok &= restart.converged && restart.factorizations >= 1;
 
   fresh_solver.new_pattern();
