@@ -135,6 +135,8 @@ namespace GelMPM
       {
         before_new_pattern();
         build_sparsity_pattern();
+        // Only now: a setup that throws on the way leaves the next one to rebuild the pattern.
+        pattern_classification = classification;
       }
     return new_pattern;
   }
@@ -166,10 +168,8 @@ namespace GelMPM
       }
     spaces_.reinit(has_material);
     n_active_cells_ = std::count(has_material.begin(), has_material.end(), true);
-    if (has_material == pattern_classification)
-      return false;
-    pattern_classification = std::move(has_material);
-    return true;
+    classification  = std::move(has_material);
+    return classification != pattern_classification;
   }
 
 

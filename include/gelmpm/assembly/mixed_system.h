@@ -351,8 +351,9 @@ namespace GelMPM
     std::vector<double>                 u_values, mu_values;
     std::vector<dealii::Tensor<1, dim>> u_gradients, mu_gradients;
     unsigned int                        n_active_cells_ = 0;
-    // The classification (cells with volume points) that the sparsity pattern was built for.
-    std::vector<bool> pattern_classification;
+    // The classification (cells with volume points) of this step, and the one the sparsity
+    // pattern was built for.
+    std::vector<bool> classification, pattern_classification;
 
     dealii::TrilinosWrappers::SparseMatrix matrix_;
     dealii::Vector<double>                 residual_;
