@@ -108,10 +108,14 @@ namespace GelMPM
 
 
   template <int dim>
-  void
+  bool
   DiscreteSpaces<dim>::reinit(const std::vector<bool> &u_cell_has_material)
   {
-    u_cell_has_material_ = u_cell_has_material;
+    if (u_ && mu_ && u_cell_has_material == u_cell_has_material_ &&
+        built_tolerating_inexact_extrapolation == inexact_extrapolation_tolerated)
+      return false;
+    u_cell_has_material_                   = u_cell_has_material;
+    built_tolerating_inexact_extrapolation = inexact_extrapolation_tolerated;
     std::vector<bool> mu_has_material(mu_space_.n_cells(), false);
     for (unsigned int c = 0; c < u_cell_has_material.size(); ++c)
       if (u_cell_has_material[c])
@@ -124,6 +128,7 @@ namespace GelMPM
                                                       mu_has_material,
                                                       settings_.extension,
                                                       !inexact_extrapolation_tolerated);
+    return true;
   }
 
 

@@ -113,10 +113,11 @@ namespace GelMPM
 
 
   template <int dim>
-  void
-  MixedSystem<dim>::setup(dealii::Particles::ParticleHandler<dim> &particle_handler)
+  bool
+  MixedSystem<dim>::setup(dealii::Particles::ParticleHandler<dim> &particle_handler,
+                          const std::function<void()>             &before_new_pattern)
   {
-    classify_cells(particle_handler);
+    const bool new_pattern = classify_cells(particle_handler);
 
     std::vector<PointRecord>                                                         unsorted;
     std::vector<typename dealii::Particles::ParticleHandler<dim>::particle_iterator> its;
@@ -130,12 +131,19 @@ namespace GelMPM
       }
     group_points(unsorted, its, cells);
     evaluate_shape_functions();
-    build_sparsity_pattern();
+    if (new_pattern)
+      {
+        before_new_pattern();
+        build_sparsity_pattern();
+        // Only now: a setup that throws on the way leaves the next one to rebuild the pattern.
+        pattern_classification = classification;
+      }
+    return new_pattern;
   }
 
 
   template <int dim>
-  void
+  bool
   MixedSystem<dim>::classify_cells(const dealii::Particles::ParticleHandler<dim> &particle_handler)
   {
     // The cells that hold volume points decide the classification (§3.5).
@@ -160,6 +168,8 @@ namespace GelMPM
       }
     spaces_.reinit(has_material);
     n_active_cells_ = std::count(has_material.begin(), has_material.end(), true);
+    classification  = std::move(has_material);
+    return classification != pattern_classification;
   }
 
 
@@ -954,6 +964,7 @@ namespace GelMPM
     // and add each block once.
     dealii::FullMatrix<double> local_mass;
     dealii::FullMatrix<double> local_rhs;
+    std::vector<double>        point_values(n_components);
     for (const Block &b : blocks)
       {
         const auto        &dofs = space.cell_dofs(cell_of(b));
@@ -966,11 +977,13 @@ namespace GelMPM
             if (r.kind != PointKind::volume)
               continue;
             const double *values = displacement ? &u_values[r.u_offset] : &mu_values[r.mu_offset];
+            for (unsigned int c = 0; c < n_components; ++c)
+              point_values[c] = value(r, c);
             for (unsigned int i = 0; i < m; ++i)
               {
                 const double Vi = r.measure * values[i];
                 for (unsigned int c = 0; c < n_components; ++c)
-                  local_rhs(c, i) += Vi * value(r, c);
+                  local_rhs(c, i) += Vi * point_values[c];
                 for (unsigned int j = 0; j < m; ++j)
                   local_mass(i, j) += Vi * values[j];
               }
@@ -1032,6 +1045,38 @@ namespace GelMPM
         largest = std::max(largest, (du - ratio * r.du_last).norm());
       }
     return largest;
+  }
+
+
+  template <int dim>
+  const std::vector<bool> &
+  MixedSystem<dim>::classification_of_pattern() const
+  {
+    return pattern_classification;
+  }
+
+
+  template <int dim>
+  bool
+  MixedSystem<dim>::restore_tangent(const std::vector<bool>   &classification,
+                                    const std::vector<double> &values)
+  {
+    const Epetra_CrsMatrix &A = matrix_.trilinos_matrix();
+    if (classification != pattern_classification ||
+        values.size() != static_cast<std::size_t>(A.NumMyNonzeros()))
+      return false;
+    std::size_t next = 0;
+    for (int row = 0; row < A.NumMyRows(); ++row)
+      {
+        int     n_entries = 0;
+        double *entries   = nullptr;
+        int    *columns   = nullptr;
+        // Epetra's row view points into the matrix's own storage.
+        A.ExtractMyRowView(row, n_entries, entries, columns);
+        for (int k = 0; k < n_entries; ++k)
+          entries[k] = values[next++];
+      }
+    return true;
   }
 
 

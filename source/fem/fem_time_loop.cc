@@ -104,6 +104,10 @@ namespace GelMPM
               }
             if (signature.stable)
               {
+                // The signature reads the tangent at the converged state, which a modified
+                // Newton iteration need not have assembled.
+                if (!report.tangent_at_solution)
+                  system.assemble(solution, step_dt * tau_d, true);
                 const auto verdict = control.judge_signature(signature.stable());
                 if (verdict == StepControl::Verdict::retake ||
                     verdict == StepControl::Verdict::shorten)

@@ -50,11 +50,14 @@ namespace GelMPM
   {
     output_settings.parse_parameters(prm);
     linear_solver.parse_parameters(prm);
+    // The symmetric Nitsche variant keeps the tangent symmetric (NitscheSettings): LDL^T.
+    linear_solver.set_symmetric(scene.nitsche.symmetry > 0.);
     newton.parse_parameters(prm);
     time_stepping.parse_parameters(prm);
     observables.parse_parameters(prm, structure.boundary_pieces);
     stability.parse_parameters(prm);
     checkpoint_settings.parse_parameters(prm);
+    linear_solver.keep_factorized_values(checkpoint_settings.enabled());
     require(!stability.enabled() || scene.nitsche.symmetry > 0.,
             "Stability/Inertia",
             "needs a symmetric tangent, but 'Nitsche/Variant = skew-symmetric'",
@@ -719,10 +722,20 @@ namespace GelMPM
       if (grid_output || mode_output)
         grid_volume_points =
           GridOutput<dim>::count_volume_points(scene.particles, scene.spaces->u_space());
-      // The grid reset gives the tangent a new sparsity pattern; the factorisation of the old
-      // one goes first, while the matrix it refers to still exists.
-      linear_solver.new_pattern();
-      scene.system->setup(scene.particles);
+      // A grid reset that changes the classification gives the tangent a new sparsity pattern;
+      // the factorisation of the old one goes first, while the matrix it refers to still
+      // exists. Otherwise it stays, and Newton may start from it (modified Newton).
+      if (scene.system->setup(scene.particles, [this] {
+            linear_solver.new_pattern();
+          }))
+        ++n_new_patterns;
+      if (!resumed_tangent.empty())
+        {
+          if (scene.system->restore_tangent(resumed_classification, resumed_tangent))
+            linear_solver.factorize(scene.system->matrix());
+          resumed_tangent.clear();
+          resumed_classification.clear();
+        }
       // The points and the basis are fixed for the attempts of the step: project mu once, and
       // only if some coefficient will start from it.
       bool needed = newton.mu_from_points;
@@ -749,6 +762,8 @@ namespace GelMPM
                                            scale_u,
                                            scale_mu,
                                            timer);
+        n_newton_iterations += report.iterations;
+        n_factorizations += report.factorizations;
         if (report.converged && time_stepping.largest_increment > 0.)
           {
             const double moved = scene.system->largest_displacement_increment(solution);
@@ -800,14 +815,26 @@ namespace GelMPM
         if (stability.enabled())
           {
             {
-              // The last assembly of Newton was at the converged state.
               dealii::TimerOutput::Scope scope(timer, "stability");
-              result = analyse_stability(scene.system->matrix(),
-                                         scene.spaces->n_u_dofs(),
-                                         stability,
-                                         [this]() {
-                                           return scene.system->mu_mass_matrix();
-                                         });
+              if (!report.tangent_at_solution)
+                scene.system->assemble(solution, step_dt * tau_d, true);
+              // The Newton solver's LDL^T of the converged tangent gives the signature, and is
+              // the factorisation the next step's modified Newton starts from.
+              const SymmetricFactorization *factorization = nullptr;
+              if ((stability.inertia || stability.n_eigenvalues > 0) && linear_solver.uses_ldlt())
+                {
+                  linear_solver.factorize(scene.system->matrix());
+                  ++n_factorizations;
+                  factorization = linear_solver.symmetric_factorization();
+                }
+              result = analyse_stability(
+                scene.system->matrix(),
+                scene.spaces->n_u_dofs(),
+                stability,
+                [this]() {
+                  return scene.system->mu_mass_matrix();
+                },
+                factorization);
             }
             const auto verdict = judge_signature(result);
             if (verdict == StepControl::Verdict::retake || verdict == StepControl::Verdict::shorten)
@@ -949,6 +976,20 @@ namespace GelMPM
       ar &*grid_output;
     if (mode_output)
       ar &*mode_output;
+    // The factorisation the next step's first Newton iteration may solve with (modified
+    // Newton), as the entries it was made of and the classification of their pattern: a resumed
+    // run refactorises them if its first grid reset gives that classification again.
+    if constexpr (Archive::is_saving::value)
+      {
+        resumed_classification = scene.system->classification_of_pattern();
+        resumed_tangent        = linear_solver.values_of_factorization();
+      }
+    ar &resumed_classification &resumed_tangent;
+    if constexpr (Archive::is_saving::value)
+      {
+        resumed_classification.clear();
+        resumed_tangent.clear();
+      }
   }
 
 
@@ -1096,6 +1137,10 @@ namespace GelMPM
       }
     if (status == 0)
       pcout << "gelmpm: reached t/tau_d = " << time << " in " << step << " steps" << std::endl;
+    if (!output_settings.test_mode)
+      pcout << "gelmpm: " << n_newton_iterations << " Newton iterations, " << n_factorizations
+            << " factorisations (" << linear_solver.name() << "), " << n_new_patterns
+            << " sparsity patterns" << std::endl;
     if (output_settings.test_mode && !statistics.rows().empty())
       {
         // The final row of statistics.csv, without timings, for comparison with a reference.

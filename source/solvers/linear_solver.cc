@@ -1,4 +1,5 @@
 #include <gelmpm/solvers/linear_solver.h>
+#include <gelmpm/stability/matrix_entries.h>
 
 #include <Amesos.h>
 #include <Epetra_CrsMatrix.h>
@@ -8,6 +9,12 @@
 
 namespace GelMPM
 {
+  LinearSolver::LinearSolver() = default;
+
+
+  LinearSolver::~LinearSolver() = default;
+
+
   void
   LinearSolver::declare_parameters(dealii::ParameterHandler &prm)
   {
@@ -15,9 +22,10 @@ namespace GelMPM
     prm.declare_entry("Solver",
                       "MUMPS",
                       dealii::Patterns::Selection("KLU|MUMPS"),
-                      "Sparse direct solver for the Newton system (Trilinos Amesos): MUMPS "
-                      "(multifrontal, fast with an optimised BLAS such as OpenBLAS; the "
-                      "default) or KLU (no BLAS; slower on the wide stencils of B-splines, "
+                      "Sparse direct solver for the Newton system: MUMPS (multifrontal, fast "
+                      "with an optimised BLAS such as OpenBLAS; the default; LDL^T for the "
+                      "symmetric tangent of the symmetric Nitsche variant, LU otherwise) or KLU "
+                      "(LU, no BLAS; slower on the wide stencils of B-splines, "
                       "doc/performance.md).");
     prm.leave_subsection();
   }
@@ -33,10 +41,144 @@ namespace GelMPM
 
 
   void
+  LinearSolver::set_symmetric(const bool symmetric_matrices)
+  {
+    new_pattern();
+    symmetric = symmetric_matrices;
+  }
+
+
+  bool
+  LinearSolver::uses_ldlt() const
+  {
+    return symmetric && solver_type == "Amesos_Mumps";
+  }
+
+
+  void
   LinearSolver::new_pattern() const
   {
     factorisation.reset();
     problem.reset();
+    ldlt.reset();
+    analysed_matrix = nullptr;
+    factorized      = false;
+  }
+
+
+  void
+  LinearSolver::factorize(const dealii::TrilinosWrappers::SparseMatrix &K) const
+  {
+    const Epetra_CrsMatrix &matrix = K.trilinos_matrix();
+    factorized                     = false;
+    if (uses_ldlt())
+      {
+        try
+          {
+            if (!ldlt || analysed_matrix != &matrix)
+              {
+                ldlt = std::make_unique<SymmetricFactorization>();
+                ldlt->factorize(K);
+                analysed_matrix = &matrix;
+                ++symbolic_count;
+              }
+            else
+              ldlt->refactorize(K);
+          }
+        catch (const std::exception &e)
+          {
+            new_pattern();
+            throw std::runtime_error(std::string("the direct solver (MUMPS LDL^T) failed on the "
+                                                 "Newton system: ") +
+                                     e.what());
+          }
+      }
+    else
+      {
+        int error = 0;
+        if (!factorisation || problem->GetMatrix() != &matrix)
+          {
+            // A new sparsity pattern (or a new matrix object): analyse it once; the Newton
+            // iterations of a step then only refactorise numerically.
+            problem = std::make_unique<Epetra_LinearProblem>();
+            problem->SetOperator(const_cast<Epetra_CrsMatrix *>(&matrix));
+            Amesos factory;
+            factorisation.reset(factory.Create(solver_type, *problem));
+            if (!factorisation)
+              throw std::runtime_error("the direct solver " + solver_type + " is not available");
+            error = factorisation->SymbolicFactorization();
+            ++symbolic_count;
+          }
+        if (error == 0)
+          error = factorisation->NumericFactorization();
+        if (error != 0)
+          {
+            new_pattern();
+            throw std::runtime_error("the direct solver (" + solver_type +
+                                     ") failed on the Newton system (Amesos error " +
+                                     std::to_string(error) + ")");
+          }
+      }
+    factorized = true;
+    ++numeric_count;
+    if (keep_values)
+      {
+        factorized_values.clear();
+        for_each_entry(K, K.m(), [this](unsigned int, unsigned int, const double value) {
+          factorized_values.push_back(value);
+        });
+      }
+  }
+
+
+  void
+  LinearSolver::keep_factorized_values(const bool keep)
+  {
+    keep_values = keep;
+  }
+
+
+  const std::vector<double> &
+  LinearSolver::values_of_factorization() const
+  {
+    static const std::vector<double> none;
+    return factorized ? factorized_values : none;
+  }
+
+
+  void
+  LinearSolver::solve(dealii::Vector<double> &x, const dealii::Vector<double> &b) const
+  {
+    if (!factorized)
+      throw std::logic_error("LinearSolver::solve() without a factorisation");
+    if (ldlt)
+      {
+        x = b;
+        ldlt->solve(x);
+      }
+    else
+      {
+        const Epetra_RowMatrix &matrix = *problem->GetMatrix();
+        Epetra_Vector           x_view(View, matrix.OperatorDomainMap(), x.begin());
+        Epetra_Vector b_view(View, matrix.OperatorRangeMap(), const_cast<double *>(b.begin()));
+        problem->SetLHS(&x_view);
+        problem->SetRHS(&b_view);
+        const int error = factorisation->Solve();
+        // The views die with this call: no dangling vectors in the kept problem.
+        problem->SetLHS(nullptr);
+        problem->SetRHS(nullptr);
+        if (error != 0)
+          {
+            new_pattern();
+            throw std::runtime_error("the direct solver (" + solver_type +
+                                     ") failed on the Newton system (Amesos error " +
+                                     std::to_string(error) + ")");
+          }
+      }
+    for (const double v : x)
+      if (!std::isfinite(v))
+        throw std::runtime_error("the direct solver (" + name() +
+                                 ") returned a non-finite solution (singular tangent)");
   }
 
 
@@ -45,47 +187,22 @@ namespace GelMPM
                       dealii::Vector<double>                       &x,
                       const dealii::Vector<double>                 &b) const
   {
-    const Epetra_CrsMatrix &matrix = K.trilinos_matrix();
-    Epetra_Vector           x_view(View, matrix.DomainMap(), x.begin());
-    Epetra_Vector           b_view(View, matrix.RangeMap(), const_cast<double *>(b.begin()));
-    int                     error = 0;
-    if (!factorisation || problem->GetMatrix() != &matrix)
-      {
-        // A new sparsity pattern (or a new matrix object): analyse it once; the Newton
-        // iterations of a step then only refactorise numerically.
-        problem = std::make_unique<Epetra_LinearProblem>(const_cast<Epetra_CrsMatrix *>(&matrix),
-                                                         &x_view,
-                                                         &b_view);
-        Amesos factory;
-        factorisation.reset(factory.Create(solver_type, *problem));
-        if (!factorisation)
-          throw std::runtime_error("the direct solver " + solver_type + " is not available");
-        error = factorisation->SymbolicFactorization();
-        ++symbolic_count;
-      }
-    else
-      {
-        problem->SetLHS(&x_view);
-        problem->SetRHS(&b_view);
-      }
-    if (error == 0)
-      error = factorisation->NumericFactorization();
-    if (error == 0)
-      error = factorisation->Solve();
-    // The views die with this call: no dangling vectors in the kept problem.
-    problem->SetLHS(nullptr);
-    problem->SetRHS(nullptr);
-    if (error != 0)
-      {
-        new_pattern();
-        throw std::runtime_error("the direct solver (" + solver_type +
-                                 ") failed on the Newton system (Amesos error " +
-                                 std::to_string(error) + ")");
-      }
-    for (const double v : x)
-      if (!std::isfinite(v))
-        throw std::runtime_error("the direct solver (" + solver_type +
-                                 ") returned a non-finite solution (singular tangent)");
+    factorize(K);
+    solve(x, b);
+  }
+
+
+  bool
+  LinearSolver::has_factorization() const
+  {
+    return factorized;
+  }
+
+
+  const SymmetricFactorization *
+  LinearSolver::symmetric_factorization() const
+  {
+    return factorized ? ldlt.get() : nullptr;
   }
 
 
@@ -96,9 +213,16 @@ namespace GelMPM
   }
 
 
-  const std::string &
+  unsigned int
+  LinearSolver::n_numeric_factorisations() const
+  {
+    return numeric_count;
+  }
+
+
+  std::string
   LinearSolver::name() const
   {
-    return solver_type;
+    return uses_ldlt() ? "MUMPS LDL^T" : solver_type;
   }
 } // namespace GelMPM

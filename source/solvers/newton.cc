@@ -58,6 +58,17 @@ namespace GelMPM
                       dealii::Patterns::Double(0., 1.),
                       "With 'Line search': the smallest damping factor tried; below it the "
                       "attempt fails and the step is cut.");
+    prm.declare_entry(
+      "Reuse contraction",
+      "0.001",
+      dealii::Patterns::Double(0., 1.),
+      "Modified Newton: an iteration solves with the factorisation of the last tangent (of an "
+      "earlier iterate, or of the last step while the cell classification stays) as long as "
+      "each iteration reduces the scaled residual norm by at least this factor; otherwise the "
+      "next iteration assembles and factorises a fresh tangent, and an update from an old "
+      "factorisation that is not physical or does not reduce the residual is discarded. The "
+      "converged state is the same to 'Tolerance'. 0: a fresh tangent at every iteration "
+      "(Newton's method; doc/performance.md).");
     prm.leave_subsection();
   }
 
@@ -76,11 +87,17 @@ namespace GelMPM
     log_failures             = prm.get_bool("Log failures");
     mu_from_points           = prm.get("Initial chemical potential") == "points";
     extrapolate_displacement = prm.get("Initial displacement") == "extrapolated";
+    reuse_contraction        = prm.get_double("Reuse contraction");
     prm.leave_subsection();
     require(smallest_damping > 0. && smallest_damping <= 1.,
             "Newton/Smallest damping",
             "must lie in (0, 1]",
             "use e.g. 0.015625 (1/64)");
+    require(reuse_contraction < 1.,
+            "Newton/Reuse contraction",
+            "must be below 1 (a factorisation kept while the residual does not decrease would "
+            "never be replaced)",
+            "use e.g. 0.001, or 0 for Newton's method");
     require(tolerance > 0. && tolerance < 1.,
             "Newton/Tolerance",
             "must lie strictly between 0 and 1",

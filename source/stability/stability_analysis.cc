@@ -197,13 +197,17 @@ namespace GelMPM
   analyse_stability(const dealii::TrilinosWrappers::SparseMatrix      &K,
                     const unsigned int                                 n_u,
                     const StabilitySettings                           &settings,
-                    const std::function<dealii::FullMatrix<double>()> &mass_mu)
+                    const std::function<dealii::FullMatrix<double>()> &mass_mu,
+                    const SymmetricFactorization                      *given_factorization)
   {
     StabilityReport report;
     if (settings.inertia || settings.n_eigenvalues > 0)
       {
-        SymmetricFactorization factorization;
-        factorization.factorize(K);
+        SymmetricFactorization own_factorization;
+        if (!given_factorization)
+          own_factorization.factorize(K);
+        const SymmetricFactorization &factorization =
+          given_factorization ? *given_factorization : own_factorization;
         report.inertia = factorization.inertia();
         if (settings.drained_onset)
           {

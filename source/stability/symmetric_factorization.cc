@@ -30,6 +30,31 @@ namespace GelMPM
     bool                   initialized = false;
     bool                   factorized  = false;
 
+    /** The lower triangle of the leading @p n x @p n block of @p K, as MUMPS's triplets. */
+    void
+    gather(const dealii::TrilinosWrappers::SparseMatrix &K, const unsigned int n)
+    {
+      rows.clear();
+      columns.clear();
+      values.clear();
+      // Zeros too: the structure, not the values, decides what the analysis can be reused for.
+      for_each_entry(K,
+                     n,
+                     [this](const unsigned int row, const unsigned int column, const double value) {
+                       if (column <= row)
+                         {
+                           rows.push_back(row + 1);
+                           columns.push_back(column + 1);
+                           values.push_back(value);
+                         }
+                     });
+      mumps.n   = n;
+      mumps.nnz = values.size();
+      mumps.irn = rows.data();
+      mumps.jcn = columns.data();
+      mumps.a   = values.data();
+    }
+
     void
     call(const int job)
     {
@@ -76,29 +101,25 @@ namespace GelMPM
   SymmetricFactorization::factorize(const dealii::TrilinosWrappers::SparseMatrix &K,
                                     const unsigned int                            leading)
   {
-    const unsigned int n = std::min<unsigned int>(leading, K.m());
-    auto              &d = *data;
-    d.rows.clear();
-    d.columns.clear();
-    d.values.clear();
-    for_each_entry(K,
-                   n,
-                   [&d](const unsigned int row, const unsigned int column, const double value) {
-                     if (column <= row && value != 0.)
-                       {
-                         d.rows.push_back(row + 1);
-                         d.columns.push_back(column + 1);
-                         d.values.push_back(value);
-                       }
-                   });
-    auto &m = d.mumps;
-    m.n     = n;
-    m.nnz   = d.values.size();
-    m.irn   = d.rows.data();
-    m.jcn   = d.columns.data();
-    m.a     = d.values.data();
-    d.call(4); // analysis + factorisation
-    d.factorized = true;
+    data->factorized = false;
+    data->gather(K, std::min<unsigned int>(leading, K.m()));
+    data->call(4); // analysis + factorisation
+    data->factorized = true;
+  }
+
+
+  void
+  SymmetricFactorization::refactorize(const dealii::TrilinosWrappers::SparseMatrix &K)
+  {
+    if (!data->factorized)
+      throw std::logic_error("SymmetricFactorization::refactorize() before factorize()");
+    const std::size_t n_entries = data->values.size();
+    data->gather(K, data->mumps.n);
+    if (data->values.size() != n_entries)
+      throw std::logic_error("SymmetricFactorization::refactorize() with another sparsity pattern");
+    data->factorized = false;
+    data->call(2); // factorisation with the kept analysis
+    data->factorized = true;
   }
 
 

@@ -64,8 +64,12 @@ namespace GelMPM
      * Classify cells and build the extended spaces for this step. @p u_cell_has_material flags
      * the displacement-grid cells that hold at least one volume point; a mu cell holds material
      * when one of the displacement cells it covers does.
+     *
+     * The extended spaces are a function of the classification alone: when it is the one of the
+     * last call (and the extrapolation rule the same), the spaces, their numbering of the
+     * unknowns included, are kept. Returns whether they were rebuilt.
      */
-    void
+    bool
     reinit(const std::vector<bool> &u_cell_has_material);
 
     /**
@@ -131,6 +135,8 @@ namespace GelMPM
     std::unique_ptr<ExtendedBSplineSpace<dim>> mu_;
     std::vector<bool>                          u_cell_has_material_;
     bool                                       inexact_extrapolation_tolerated = false;
+    // The rule the current extended spaces were built with.
+    bool built_tolerating_inexact_extrapolation = false;
   };
 } // namespace GelMPM
 

@@ -65,9 +65,17 @@ namespace GelMPM
      * Start a step: locate the points of @p particles, classify cells from the volume points,
      * rebuild the extended spaces, cache shape data and the sparsity pattern. Throws
      * std::runtime_error if a point lies outside the background grid.
+     *
+     * The extended spaces, the numbering of the unknowns and the sparsity pattern depend on the
+     * classification alone (every cell with volume points is one block of assembly, and surface
+     * points join such blocks): when it is the last step's, they are kept, and so is the matrix
+     * object. Otherwise @p before_new_pattern is called before the matrix is re-initialised
+     * (the owner of a factorisation of it releases it there). Returns whether the pattern is new.
      */
-    void
-    setup(dealii::Particles::ParticleHandler<dim> &particles);
+    bool
+    setup(
+      dealii::Particles::ParticleHandler<dim> &particles,
+      const std::function<void()>             &before_new_pattern = [] {});
 
     /**
      * Evaluate the boundary data (ubar, traction, mubar, flux) at time @p t_over_tau_d for
@@ -87,6 +95,19 @@ namespace GelMPM
     /** The tangent assembled last. */
     const dealii::TrilinosWrappers::SparseMatrix &
     matrix() const;
+
+    /** The classification (cells with volume points) the sparsity pattern was built for. */
+    const std::vector<bool> &
+    classification_of_pattern() const;
+
+    /**
+     * Overwrite the tangent's entries with @p values (in the matrix's row order, as
+     * LinearSolver::values_of_factorization() keeps them) if the pattern is the one built for
+     * @p classification; returns whether it did (a resumed run restoring the matrix its next
+     * Newton iteration starts from).
+     */
+    bool
+    restore_tangent(const std::vector<bool> &classification, const std::vector<double> &values);
 
     /** The residual assembled last. */
     const dealii::Vector<double> &
@@ -239,9 +260,10 @@ namespace GelMPM
     /**
      * The steps of setup(), in order. Classify the cells of the step from the cells that hold
      * volume points and rebuild the extended spaces; throws std::runtime_error if a point has
-     * left the background grid.
+     * left the background grid. Returns whether the classification differs from the one the
+     * sparsity pattern was built for.
      */
-    void
+    bool
     classify_cells(const dealii::Particles::ParticleHandler<dim> &particle_handler);
 
     /** The record of @p particle with the state its properties hold (no cell, no offsets yet). */
@@ -361,6 +383,9 @@ namespace GelMPM
     std::vector<double>                 u_values, mu_values;
     std::vector<dealii::Tensor<1, dim>> u_gradients, mu_gradients;
     unsigned int                        n_active_cells_ = 0;
+    // The classification (cells with volume points) of this step, and the one the sparsity
+    // pattern was built for.
+    std::vector<bool> classification, pattern_classification;
 
     dealii::TrilinosWrappers::SparseMatrix matrix_;
     dealii::Vector<double>                 residual_;

@@ -231,12 +231,18 @@ namespace GelMPM
     Inertia                              last_stable_inertia;
     double                               last_eigenvalue = 0.;
     std::vector<double>                  mu_coefficients; // per mu control point
-    std::vector<bool>                    mu_known;        // coefficient holds a current value
-    std::vector<double>                  mu_projection;   // points' mu on the step's basis
-    std::vector<double> displacement_projection;          // last step's motion on the step's basis
-    double              last_dt = 0.; // the last accepted step (0 before the first)
+    // Over all attempts of the run, for the summary at its end.
+    unsigned long       n_newton_iterations = 0, n_factorizations = 0, n_new_patterns = 0;
+    std::vector<bool>   mu_known;                // coefficient holds a current value
+    std::vector<double> mu_projection;           // points' mu on the step's basis
+    std::vector<double> displacement_projection; // last step's motion on the step's basis
+    double              last_dt = 0.;            // the last accepted step (0 before the first)
 
-    CheckpointSettings                    checkpoint_settings;
+    CheckpointSettings checkpoint_settings;
+    // Read from a checkpoint: the factorisation to restore at the first step (see
+    // serialize_run_state()).
+    std::vector<bool>                     resumed_classification;
+    std::vector<double>                   resumed_tangent;
     std::unique_ptr<CheckpointReader>     resume_from;     // with --resume, until restored
     std::chrono::steady_clock::time_point last_checkpoint; // or the start
     unsigned int checkpoint_step = dealii::numbers::invalid_unsigned_int; // of the last one

@@ -1,6 +1,8 @@
 #ifndef gelmpm_solvers_linear_solver_h
 #define gelmpm_solvers_linear_solver_h
 
+#include <gelmpm/stability/symmetric_factorization.h>
+
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
@@ -9,27 +11,45 @@
 #include <Epetra_LinearProblem.h>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace GelMPM
 {
   /**
    * @brief The "Linear solver" section and the direct solve of the Newton system.
    *
-   * A sparse direct solver from Trilinos' Amesos (MUMPS by default, KLU on request), used
-   * directly rather than through TrilinosWrappers::SolverDirect so that the symbolic
-   * factorisation (ordering and structure analysis) is kept while the sparsity pattern does not
-   * change: the Newton iterations and the retried attempts of a time step share one pattern, and
-   * only refactorise numerically. The caller says when the pattern changes (new_pattern(), once
-   * per time step after the grid reset); a different matrix object also starts afresh.
+   * A sparse direct solver: MUMPS by default, KLU on request. The symbolic factorisation
+   * (ordering and structure analysis) is kept while the sparsity pattern does not change: the
+   * Newton iterations and the retried attempts of a time step share one pattern, and only
+   * refactorise numerically. The caller says when the pattern changes (new_pattern(), after a
+   * grid reset that changed the cell classification); a different matrix object also starts
+   * afresh. factorize() and solve() are separate so that a modified Newton iteration can solve
+   * with the factorisation of an earlier tangent.
+   *
+   * A matrix known to be symmetric (set_symmetric(), the symmetric Nitsche variant) is
+   * factorised by MUMPS as LDL^T (SymmetricFactorization, about half the work of LU, and its
+   * inertia comes with it); otherwise, or with KLU, by Trilinos' Amesos (Amesos_Mumps,
+   * Amesos_Klu), used directly rather than through TrilinosWrappers::SolverDirect to keep the
+   * symbolic factorisation.
    */
   class LinearSolver
   {
   public:
+    LinearSolver();
+    ~LinearSolver();
+
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 
     void
     parse_parameters(dealii::ParameterHandler &prm);
+
+    /**
+     * Whether the matrices to come are symmetric: with MUMPS they are then factorised as LDL^T.
+     * Only the lower triangle is read, so a matrix that is not symmetric gives wrong solutions.
+     */
+    void
+    set_symmetric(const bool symmetric);
 
     /**
      * The sparsity pattern of the next matrix differs: forget the symbolic factorisation. Call it
@@ -40,29 +60,79 @@ namespace GelMPM
     new_pattern() const;
 
     /**
-     * Solve K x = b, reusing the symbolic factorisation of the previous call unless new_pattern()
-     * was called or @p K is another matrix object. Throws std::runtime_error when the
-     * factorisation fails.
+     * Factorise @p K numerically, reusing the symbolic factorisation of the previous call unless
+     * new_pattern() was called or @p K is another matrix object. Throws std::runtime_error when
+     * the factorisation fails.
      */
+    void
+    factorize(const dealii::TrilinosWrappers::SparseMatrix &K) const;
+
+    /**
+     * Solve K x = b with the factorisation of the last factorize(). Throws std::runtime_error
+     * when there is none or the solution is not finite.
+     */
+    void
+    solve(dealii::Vector<double> &x, const dealii::Vector<double> &b) const;
+
+    /** factorize(@p K), then solve(@p x, @p b). */
     void
     solve(const dealii::TrilinosWrappers::SparseMatrix &K,
           dealii::Vector<double>                       &x,
           const dealii::Vector<double>                 &b) const;
 
-    /** How many symbolic factorisations solve() has made (for tests and performance notes). */
+    /**
+     * With @p keep, every factorize() keeps a copy of the entries it factorised (in the
+     * matrix's row order): a checkpoint stores them, so that a resumed run refactorises the
+     * matrix the run's next Newton iteration would have solved with (modified Newton).
+     */
+    void
+    keep_factorized_values(const bool keep);
+
+    /** The entries of the current factorisation (empty: none, or not kept). */
+    const std::vector<double> &
+    values_of_factorization() const;
+
+    /** Whether a factorisation of the current pattern is there to solve with. */
+    bool
+    has_factorization() const;
+
+    /**
+     * The LDL^T factorisation of the last factorize() when the matrices are symmetric and
+     * MUMPS factorises them, else nullptr: its inertia is the signature of that matrix.
+     */
+    const SymmetricFactorization *
+    symmetric_factorization() const;
+
+    /** How many symbolic factorisations factorize() has made (for tests and performance notes). */
     unsigned int
     n_symbolic_factorisations() const;
 
-    /** The Amesos solver name, e.g. "Amesos_Klu". */
-    const std::string &
+    /** How many numeric factorisations factorize() has made. */
+    unsigned int
+    n_numeric_factorisations() const;
+
+    /** The solver's name: "Amesos_Klu", "Amesos_Mumps" or "MUMPS LDL^T". */
+    std::string
     name() const;
+
+    /** Whether factorize() makes an LDL^T factorisation (symmetric matrices and MUMPS). */
+    bool
+    uses_ldlt() const;
 
   private:
     std::string solver_type = "Amesos_Mumps";
+    bool        symmetric   = false;
     // The kept factorisation: a cache, so solve() stays const for its callers.
-    mutable std::unique_ptr<Epetra_LinearProblem> problem;
-    mutable std::unique_ptr<Amesos_BaseSolver>    factorisation;
-    mutable unsigned int                          symbolic_count = 0;
+    mutable std::unique_ptr<Epetra_LinearProblem>   problem;
+    mutable std::unique_ptr<Amesos_BaseSolver>      factorisation;
+    mutable std::unique_ptr<SymmetricFactorization> ldlt;
+    // The matrix the factorisation was analysed for (LDL^T path).
+    mutable const Epetra_CrsMatrix *analysed_matrix = nullptr;
+    mutable bool                    factorized      = false;
+    bool                            keep_values     = false;
+    mutable std::vector<double>     factorized_values;
+    mutable unsigned int            symbolic_count = 0;
+    mutable unsigned int            numeric_count  = 0;
   };
 } // namespace GelMPM
 

@@ -47,6 +47,12 @@ namespace GelMPM
     bool log_failures = false;
     /** The smallest damping factor tried before the iteration counts as failed. */
     double smallest_damping = 1. / 64.;
+    /**
+     * Modified Newton (see solve_newton()): keep the factorisation of a tangent while the scaled
+     * residual contracts by at least 'Reuse contraction' per iteration. 0: off (a fresh tangent
+     * at every iterate).
+     */
+    double reuse_contraction = 1e-3;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
@@ -65,7 +71,14 @@ namespace GelMPM
     double       residual_mu = 0.;
     /** Iterations whose update the line search shortened. */
     unsigned int damped_iterations = 0;
-    /** Per iteration: the scaled residuals (u, mu) at its start and the damping taken. */
+    /** Numeric factorisations of a tangent (at most one per iteration). */
+    unsigned int factorizations = 0;
+    /** Whether the system's matrix() is the tangent at the returned state. */
+    bool tangent_at_solution = false;
+    /**
+     * Per iteration: the scaled residuals (u, mu) at its start and the damping taken (0: the
+     * update of an old factorisation, discarded).
+     */
     std::vector<std::array<double, 3>> history;
     std::string                        failure;
   };
@@ -86,9 +99,20 @@ namespace GelMPM
    * A physical full update is Newton's, quadratically convergent near the solution. Without a
    * line search a non-physical trial state ends the attempt. doc/method.md compares the rules.
    *
+   * With 'Reuse contraction' c > 0 the iteration is a modified Newton method: an iteration
+   * solves with the factorisation of the last tangent, possibly of an earlier iterate or step
+   * (the linear solver keeps it while the sparsity pattern stays), and the iterates in between
+   * assemble only the residual. A fresh tangent is assembled and factorised for the next
+   * iteration when the last one reduced the scaled residual norm by less than the factor c, and
+   * at once when an update from an old factorisation is not physical or does not decrease the
+   * residual (it is then discarded, not damped). The convergence test is the same, so is the
+   * converged state to the tolerance; near it an old tangent costs a few cheap iterations where
+   * a fresh one costs an assembly of the tangent and a factorisation.
+   *
    * @p System is any discretisation of the mixed u–mu step with
    *   void assemble(const dealii::Vector<double> &solution, double dt, bool with_matrix)
-   *     (throws NonPhysicalState when a state leaves the physical range),
+   *     (throws NonPhysicalState when a state leaves the physical range; without the matrix it
+   *     assembles the residual alone),
    *   const dealii::TrilinosWrappers::SparseMatrix &matrix() const,
    *   const dealii::Vector<double> &residual() const,
    *   double residual_norm_u() const, double residual_norm_mu() const:
@@ -106,27 +130,32 @@ namespace GelMPM
                dealii::TimerOutput    &timer)
   {
     NewtonReport report;
+    const bool   reuse = settings.reuse_contraction > 0.;
     // Assemble at x; false (with the reason in report.failure) if x is not physical.
-    const auto assemble_at = [&](const dealii::Vector<double> &x) {
+    const auto assemble_at = [&](const dealii::Vector<double> &x, const bool with_matrix) {
       try
         {
           dealii::TimerOutput::Scope scope(timer, "assembly");
-          system.assemble(x, dt, true);
+          system.assemble(x, dt, with_matrix);
         }
       catch (const NonPhysicalState &e)
         {
           report.failure = e.what();
           return false;
         }
-      report.residual_u  = system.residual_norm_u() / scale_u;
-      report.residual_mu = system.residual_norm_mu() / scale_mu;
+      report.tangent_at_solution = with_matrix;
+      report.residual_u          = system.residual_norm_u() / scale_u;
+      report.residual_mu         = system.residual_norm_mu() / scale_mu;
       return true;
     };
     const auto merit = [&]() {
       return report.residual_u * report.residual_u + report.residual_mu * report.residual_mu;
     };
 
-    if (!assemble_at(solution))
+    // Whether the next iteration factorises the tangent at its iterate. Without reuse every
+    // assembly includes the tangent, which the next iteration then factorises.
+    bool fresh = !reuse || !linear_solver.has_factorization();
+    if (!assemble_at(solution, fresh))
       return report;
     dealii::Vector<double> increment(solution.size()), trial(solution.size());
     for (unsigned int k = 0;; ++k)
@@ -147,10 +176,18 @@ namespace GelMPM
             report.failure = "no convergence in " + std::to_string(k) + " Newton iterations";
             return report;
           }
+        // The state was physical when its residual was assembled: so is its tangent.
+        if (fresh && !report.tangent_at_solution && !assemble_at(solution, true))
+          return report;
         try
           {
             dealii::TimerOutput::Scope scope(timer, "solve");
-            linear_solver.solve(system.matrix(), increment, system.residual());
+            if (fresh)
+              {
+                linear_solver.factorize(system.matrix());
+                ++report.factorizations;
+              }
+            linear_solver.solve(increment, system.residual());
           }
         catch (const std::exception &e)
           {
@@ -161,12 +198,23 @@ namespace GelMPM
 
         const double merit_0 = merit();
         const double r_u_0 = report.residual_u, r_mu_0 = report.residual_mu;
-        double       alpha = 1.;
+        double       alpha     = 1.;
+        bool         discarded = false;
         for (;;)
           {
             trial = solution;
             trial.add(-alpha, increment);
-            const bool physical = assemble_at(trial);
+            const bool physical = assemble_at(trial, !reuse);
+            // Near the solution round-off decides whether the residual still decreases: there
+            // any physical update is taken.
+            const bool near_solution =
+              std::max(report.residual_u, report.residual_mu) <= 1e3 * settings.tolerance;
+            if (!fresh)
+              {
+                // An old tangent that leads astray is replaced, not damped.
+                discarded = !physical || (!near_solution && merit() > (1. - 1e-4) * merit_0);
+                break;
+              }
             if (settings.line_search == NewtonSettings::LineSearch::none)
               {
                 if (!physical)
@@ -177,10 +225,6 @@ namespace GelMPM
                   }
                 break;
               }
-            // Near the solution round-off decides whether the residual still decreases: there
-            // any physical update is taken.
-            const bool near_solution =
-              std::max(report.residual_u, report.residual_mu) <= 1e3 * settings.tolerance;
             if (physical && (settings.line_search == NewtonSettings::LineSearch::physical ||
                              near_solution || merit() <= (1. - 1e-4 * alpha) * merit_0))
               break;
@@ -195,10 +239,21 @@ namespace GelMPM
                 return report;
               }
           }
-        report.history.push_back({{r_u_0, r_mu_0, alpha}});
+        report.history.push_back({{r_u_0, r_mu_0, discarded ? 0. : alpha}});
+        if (discarded)
+          {
+            // Back to the iterate, whose residual and (physical) tangent the next iteration
+            // needs.
+            fresh = true;
+            if (!assemble_at(solution, true))
+              return report;
+            continue;
+          }
         if (alpha < 1.)
           ++report.damped_iterations;
         solution.swap(trial);
+        fresh =
+          !reuse || merit() > settings.reuse_contraction * settings.reuse_contraction * merit_0;
       }
   }
 } // namespace GelMPM

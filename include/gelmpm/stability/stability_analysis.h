@@ -100,13 +100,15 @@ namespace GelMPM
    * Compute what @p settings ask for at the symmetric tangent @p K (displacement unknowns first,
    * @p n_u of them): the LDL^T factorisation for the inertia and the Schur eigenvalues, and, with
    * the mass matrix of the mu basis that @p mass_mu returns (called only then), the inf-sup
-   * constant.
+   * constant. @p factorization, if given, is an LDL^T factorisation of @p K already made (the
+   * Newton solver's), used instead of factorising @p K again.
    */
   StabilityReport
   analyse_stability(const dealii::TrilinosWrappers::SparseMatrix      &K,
                     const unsigned int                                 n_u,
                     const StabilitySettings                           &settings,
-                    const std::function<dealii::FullMatrix<double>()> &mass_mu);
+                    const std::function<dealii::FullMatrix<double>()> &mass_mu,
+                    const SymmetricFactorization                      *factorization = nullptr);
 } // namespace GelMPM
 
 #endif

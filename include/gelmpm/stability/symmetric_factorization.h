@@ -38,7 +38,8 @@ namespace GelMPM
    * negative-pivot count includes it. Trilinos' Amesos_Mumps cannot be used for this: it factorises
    * as unsymmetric.
    *
-   * Only the lower triangle of K is passed; K must be symmetric.
+   * Only the lower triangle of K is passed; K must be symmetric. Every stored entry is passed,
+   * zero or not, so that matrices with one sparsity pattern share one analysis (refactorize()).
    */
   class SymmetricFactorization
   {
@@ -57,6 +58,14 @@ namespace GelMPM
     void
     factorize(const dealii::TrilinosWrappers::SparseMatrix &K,
               const unsigned int leading = std::numeric_limits<unsigned int>::max());
+
+    /**
+     * Factorise @p K (the same leading block as the last factorize()) numerically with the
+     * analysis of the last factorize(): @p K must have the sparsity pattern of the matrix
+     * analysed then. The Newton iterations of a step share one pattern.
+     */
+    void
+    refactorize(const dealii::TrilinosWrappers::SparseMatrix &K);
 
     /** The inertia of the matrix factorised last. */
     Inertia
