@@ -1,12 +1,13 @@
 #!/bin/bash
 # Every benchmark of doc/performance.md and doc/fem_peer.md, one after the other:
 #
-#   bash contrib/benchmarks/run_all.sh           # full: about 80 min on a 2-core machine
+#   bash contrib/benchmarks/run_all.sh           # full: about 95 min on a 2-core machine
 #   bash contrib/benchmarks/run_all.sh --quick   # quick: under 10 min
 #
 # Full: the §4.1 speed-accuracy sweeps (speed_accuracy.py, 3 repeats per run), the flat-punch sweep
 # (flat_punch_sweep.py, 3 repeats), the body-fitted FE peer on §4.1 (fem_peer.py) and on the flat
-# punch with its depth study (fem_peer_flat_punch.py). Quick: the same four in their quick modes
+# punch with its depth study (fem_peer_flat_punch.py), the error-control study (tolerance_study.py,
+# full mode only). Quick: the same four in their quick modes
 # (fewer levels, shorter runs; errors of quick runs are not comparable with full runs).
 # Results go to output/ (each script prints where); the binaries are copied to output/bench-bin
 # first, so that a rebuild during the runs cannot change what is measured. Run it on an otherwise
@@ -34,7 +35,7 @@ if [ -n "$quick" ]; then
   echo "run_all.sh: quick mode, about 8 min on a 2-core machine"
   fem_peer_options=(--no-mpm --output output/fem_peer_quick)
 else
-  echo "run_all.sh: full mode, about 80 min on a 2-core machine (each script prints its own estimate)"
+  echo "run_all.sh: full mode, about 95 min on a 2-core machine (each script prints its own estimate)"
   fem_peer_options=(--mpm-repeats 3 --output output/fem_peer)
 fi
 start=$(date +%s)
@@ -44,4 +45,6 @@ start=$(date +%s)
 /usr/bin/python3 contrib/benchmarks/fem_peer.py --build "$GELMPM_BUILD_DIR" "${fem_peer_options[@]}"
 /usr/bin/python3 contrib/benchmarks/fem_peer_flat_punch.py $quick --build "$GELMPM_BUILD_DIR" \
   --output "output/fem_peer_flat_punch${quick:+_quick}"
+# The error-control study has no quick mode: its loose tolerances are the quick part.
+[[ -z $quick ]] && /usr/bin/python3 contrib/benchmarks/tolerance_study.py
 echo "run_all.sh: finished in $(( ($(date +%s) - start) / 60 )) min $(( ($(date +%s) - start) % 60 )) s"
