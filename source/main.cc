@@ -48,6 +48,19 @@ namespace
 } // namespace
 
 
+namespace
+{
+  /** Print @p what on rank 0 and return the largest @p status of all ranks (collective). */
+  int
+  report_collective_error(const char *prefix, const char *what, const int status)
+  {
+    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::cerr << prefix << what << std::endl;
+    return dealii::Utilities::MPI::max(status, MPI_COMM_WORLD);
+  }
+} // namespace
+
+
 int
 main(int argc, char **argv)
 {
@@ -68,14 +81,26 @@ main(int argc, char **argv)
                                : GelMPM::SceneStructure::read(cl.scene_file, cl.overrides);
       return structure.dimension == 2 ? run_scene<2>(cl, structure) : run_scene<3>(cl, structure);
     }
+  // On several ranks, input errors and failures of a run are found by all ranks together
+  // (core/collective.h): rank 0 reports them, and all leave with the same status. Anything else
+  // may be one rank's alone: it reports with its rank and ends the whole job.
   catch (const GelMPM::InputError &e)
     {
-      std::cerr << "gelmpm: error: " << e.what() << std::endl;
-      return 2;
+      return report_collective_error("gelmpm: error: ", e.what(), 2);
+    }
+  catch (const std::runtime_error &e)
+    {
+      return report_collective_error("gelmpm: the run failed: ", e.what(), 1);
     }
   catch (const std::exception &e)
     {
-      std::cerr << "gelmpm: the run failed: " << e.what() << std::endl;
+      const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+      std::cerr << "gelmpm: the run failed";
+      if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+        std::cerr << " on rank " << rank;
+      std::cerr << ": " << e.what() << std::endl;
+      if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+        MPI_Abort(MPI_COMM_WORLD, 1);
       return 1;
     }
 }

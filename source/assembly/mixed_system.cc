@@ -1,4 +1,5 @@
 #include <gelmpm/assembly/mixed_system.h>
+#include <gelmpm/core/collective.h>
 
 #include <deal.II/base/parallel.h>
 #include <deal.II/base/work_stream.h>
@@ -7,6 +8,7 @@
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
 
 #include <algorithm>
 #include <cmath>
@@ -104,11 +106,13 @@ namespace GelMPM
   MixedSystem<dim>::MixedSystem(const FloryRehnerGel<dim> &material,
                                 BoundaryConditions<dim>   &boundary_conditions,
                                 const NitscheSettings     &nitsche,
-                                DiscreteSpaces<dim>       &spaces)
+                                DiscreteSpaces<dim>       &spaces,
+                                const MPI_Comm             communicator)
     : material(material)
     , boundary_conditions(boundary_conditions)
     , nitsche(nitsche)
     , spaces_(spaces)
+    , communicator(communicator)
   {}
 
 
@@ -123,12 +127,22 @@ namespace GelMPM
     std::vector<typename dealii::Particles::ParticleHandler<dim>::particle_iterator> its;
     std::vector<unsigned int>                                                        cells;
     unsorted.reserve(particle_handler.n_locally_owned_particles());
-    for (auto particle = particle_handler.begin(); particle != particle_handler.end(); ++particle)
+    std::string failure;
+    try
       {
-        unsorted.push_back(unpack_point(*particle));
-        its.push_back(particle);
-        cells.push_back(cell_of_point(unsorted.back()));
+        for (auto particle = particle_handler.begin(); particle != particle_handler.end();
+             ++particle)
+          {
+            unsorted.push_back(unpack_point(*particle));
+            its.push_back(particle);
+            cells.push_back(cell_of_point(unsorted.back()));
+          }
       }
+    catch (const std::runtime_error &e)
+      {
+        failure = e.what();
+      }
+    Collective::agree_on_failure<std::runtime_error>(communicator, failure);
     group_points(unsorted, its, cells);
     evaluate_shape_functions();
     if (new_pattern)
@@ -137,6 +151,7 @@ namespace GelMPM
         build_sparsity_pattern();
         // Only now: a setup that throws on the way leaves the next one to rebuild the pattern.
         pattern_classification = classification;
+        pattern_holder         = cell_holder;
       }
     return new_pattern;
   }
@@ -147,8 +162,10 @@ namespace GelMPM
   MixedSystem<dim>::classify_cells(const dealii::Particles::ParticleHandler<dim> &particle_handler)
   {
     // The cells that hold volume points decide the classification (§3.5).
-    const auto       &u_space = spaces_.u_space();
-    std::vector<bool> has_material(u_space.n_cells(), false);
+    const auto         &u_space = spaces_.u_space();
+    std::vector<double> holder(u_space.n_cells(), 0.);
+    const double        this_rank = dealii::Utilities::MPI::this_mpi_process(communicator);
+    std::string         failure;
     for (const auto &particle : particle_handler)
       {
         const Point<dim> x = particle.get_location();
@@ -159,17 +176,32 @@ namespace GelMPM
           }
         catch (const std::out_of_range &)
           {
-            throw std::runtime_error("a material point at " + format_point(x) +
-                                     " has left the background grid; enlarge 'Background "
-                                     "grid/Lower corner' and 'Upper corner'");
+            failure = "a material point at " + format_point(x) +
+                      " has left the background grid; enlarge 'Background grid/Lower corner' "
+                      "and 'Upper corner'";
+            break;
           }
         if (kind_of(particle.get_properties()) == PointKind::volume)
-          has_material[cell] = true;
+          holder[cell] = this_rank + 1.;
       }
+    Collective::agree_on_failure<std::runtime_error>(communicator, failure);
+    // The volume points of a cell are all on the rank that owns the cell: the sum over the ranks
+    // is that rank + 1, and tells every rank the classification and who holds each active cell.
+    Collective::sum_in_place(communicator, holder);
+    std::vector<bool> has_material(u_space.n_cells(), false);
+    cell_holder.assign(u_space.n_cells(), dealii::numbers::invalid_unsigned_int);
+    for (unsigned int c = 0; c < holder.size(); ++c)
+      if (holder[c] > 0.)
+        {
+          has_material[c] = true;
+          cell_holder[c]  = static_cast<unsigned int>(holder[c]) - 1;
+        }
     spaces_.reinit(has_material);
     n_active_cells_ = std::count(has_material.begin(), has_material.end(), true);
     classification  = std::move(has_material);
-    return classification != pattern_classification;
+    // On several ranks the rows' owners follow the cells' holders too (a repartition).
+    return classification != pattern_classification ||
+           (Collective::is_parallel(communicator) && cell_holder != pattern_holder);
   }
 
 
@@ -341,8 +373,67 @@ namespace GelMPM
         for (const auto row : dofs)
           pattern.add_entries(row, dofs.begin(), dofs.end(), true);
       }
-    matrix_.reinit(pattern);
     residual_.reinit(spaces_.n_dofs());
+    if (!Collective::is_parallel(communicator))
+      {
+        matrix_.reinit(pattern);
+        return;
+      }
+    const auto [owned, relevant] = owned_and_relevant_dofs();
+    dealii::TrilinosWrappers::SparsityPattern distributed(owned, owned, relevant, communicator);
+    for (const auto row : relevant)
+      {
+        const auto begin = pattern.begin(row), end = pattern.end(row);
+        for (auto entry = begin; entry != end; ++entry)
+          distributed.add(row, entry->column());
+      }
+    distributed.compress();
+    matrix_.reinit(distributed);
+  }
+
+
+  template <int dim>
+  std::pair<dealii::IndexSet, dealii::IndexSet>
+  MixedSystem<dim>::owned_and_relevant_dofs() const
+  {
+    // A B-spline function spans q + 1 cells, more than a ghost layer: ownership is decided on
+    // the replicated classification instead. Each unknown belongs to the rank that holds the
+    // first active cell (in the grid's order) that its function reaches; every rank computes the
+    // same map. The relevant unknowns of a rank are those of the cells its points are in.
+    const unsigned int        n_u  = spaces_.n_u_dofs();
+    const unsigned int        rank = dealii::Utilities::MPI::this_mpi_process(communicator);
+    std::vector<unsigned int> owner(spaces_.n_dofs(), dealii::numbers::invalid_unsigned_int);
+    for (unsigned int c = 0; c < classification.size(); ++c)
+      if (classification[c])
+        {
+          for (const unsigned int i : spaces_.u().cell_dofs(c))
+            for (unsigned int d = 0; d < dim; ++d)
+              if (owner[dim * i + d] == dealii::numbers::invalid_unsigned_int)
+                owner[dim * i + d] = cell_holder[c];
+          for (const unsigned int j : spaces_.mu().cell_dofs(spaces_.mu_cell_of(c)))
+            if (owner[n_u + j] == dealii::numbers::invalid_unsigned_int)
+              owner[n_u + j] = cell_holder[c];
+        }
+    dealii::IndexSet owned(spaces_.n_dofs()), relevant(spaces_.n_dofs());
+    for (unsigned int i = 0; i < owner.size(); ++i)
+      if (owner[i] == rank)
+        owned.add_index(i);
+    std::vector<dealii::types::global_dof_index> dofs;
+    for (const Block &b : blocks)
+      {
+        dofs.clear();
+        for (const unsigned int i : spaces_.u().cell_dofs(b.u_cell))
+          for (unsigned int c = 0; c < dim; ++c)
+            dofs.push_back(dim * i + c);
+        for (const unsigned int j : spaces_.mu().cell_dofs(b.mu_cell))
+          dofs.push_back(n_u + j);
+        std::sort(dofs.begin(), dofs.end());
+        relevant.add_indices(dofs.begin(), dofs.end());
+      }
+    relevant.add_indices(owned);
+    owned.compress();
+    relevant.compress();
+    return {owned, relevant};
   }
 
 
@@ -405,8 +496,9 @@ namespace GelMPM
       CopyData());
     if (with_matrix)
       matrix_.compress(dealii::VectorOperation::add);
-    if (failed)
-      throw NonPhysicalState(failure);
+    Collective::sum_in_place(communicator, residual_.begin(), residual_.size());
+    // Collective: every rank learns of a failure on any, before the next collective call.
+    Collective::agree_on_failure<NonPhysicalState>(communicator, failed ? failure : "");
   }
 
 
@@ -861,7 +953,8 @@ namespace GelMPM
         if (boundary_conditions.piece(r.piece).chemical_potential_prescribed())
           mu_error = std::max(mu_error, std::abs(mu - r.mu_bar));
       }
-    return {u_error, mu_error};
+    return {dealii::Utilities::MPI::max(u_error, communicator),
+            dealii::Utilities::MPI::max(mu_error, communicator)};
   }
 
 
@@ -871,7 +964,8 @@ namespace GelMPM
   {
     using Layout              = PropertyLayout<dim>;
     const double lambda_0_dim = std::pow(material.lambda_0(), dim);
-    for (unsigned int p = 0; p < points.size(); ++p)
+    std::string  failure;
+    for (unsigned int p = 0; p < points.size() && failure.empty(); ++p)
       {
         const PointRecord &r = points[p];
         Tensor<1, dim>     du;
@@ -922,8 +1016,8 @@ namespace GelMPM
             if ((held || on_contact_plane(d, 1.)) && x[d] > basis.x_max() &&
                 x[d] < basis.x_max() + tolerance)
               x[d] = basis.x_max();
-            if (x[d] < basis.x_min() || x[d] > basis.x_max())
-              throw std::runtime_error(
+            if ((x[d] < basis.x_min() || x[d] > basis.x_max()) && failure.empty())
+              failure = std::string(
                 "the material point at " + format_point(x) + " (initially at " +
                 format_point(r.x - r.u_n) + ", " +
                 (r.kind == PointKind::volume ? std::string("inside the body")
@@ -931,8 +1025,10 @@ namespace GelMPM
                 ") has crossed the edge of the background grid; enlarge the grid so that the body "
                 "stays inside it ('Background grid/Lower corner', 'Upper corner')");
           }
-        particles[p]->set_location(x);
+        if (failure.empty())
+          particles[p]->set_location(x);
       }
+    Collective::agree_on_failure<std::runtime_error>(communicator, failure);
   }
 
 
@@ -948,14 +1044,26 @@ namespace GelMPM
       return displacement ? b.u_cell : b.mu_cell;
     };
     const unsigned int n = displacement ? spaces_.n_u_dofs() / dim : spaces_.n_mu_dofs();
+    // On several ranks the pattern is that of every active cell, the same on all ranks, so
+    // that the ranks' sums of the mass matrix add entry by entry and each rank solves the whole
+    // projection (it is small against the Newton system). On one rank the blocks are the
+    // active cells anyway.
     dealii::DynamicSparsityPattern pattern(n, n);
-    for (const Block &b : blocks)
+    const auto                     add_cell = [&](const unsigned int cell) {
+      const auto &dofs = space.cell_dofs(cell);
+      for (const auto i : dofs)
+        for (const auto j : dofs)
+          pattern.add(i, j);
+    };
+    if (Collective::is_parallel(communicator))
       {
-        const auto &dofs = space.cell_dofs(cell_of(b));
-        for (const auto i : dofs)
-          for (const auto j : dofs)
-            pattern.add(i, j);
+        for (unsigned int c = 0; c < classification.size(); ++c)
+          if (classification[c])
+            add_cell(displacement ? c : spaces_.mu_cell_of(c));
       }
+    else
+      for (const Block &b : blocks)
+        add_cell(cell_of(b));
     dealii::SparsityPattern sparsity;
     sparsity.copy_from(pattern);
     dealii::SparseMatrix<double>        mass(sparsity);
@@ -995,6 +1103,19 @@ namespace GelMPM
             for (unsigned int j = 0; j < m; ++j)
               mass.add(dofs[i], dofs[j], local_mass(i, j));
           }
+      }
+    if (Collective::is_parallel(communicator))
+      {
+        std::vector<double> entries;
+        entries.reserve(sparsity.n_nonzero_elements());
+        for (const auto &entry : mass)
+          entries.push_back(entry.value());
+        Collective::sum_in_place(communicator, entries);
+        std::size_t k = 0;
+        for (auto entry = mass.begin(); entry != mass.end(); ++entry)
+          entry->value() = entries[k++];
+        for (auto &r : rhs)
+          Collective::sum_in_place(communicator, r.begin(), r.size());
       }
     dealii::SparseDirectUMFPACK solver;
     solver.initialize(mass);
@@ -1044,7 +1165,7 @@ namespace GelMPM
         fields_at_point(r, solution, du, delta_F, mu);
         largest = std::max(largest, (du - ratio * r.du_last).norm());
       }
-    return largest;
+    return dealii::Utilities::MPI::max(largest, communicator);
   }
 
 
@@ -1058,24 +1179,17 @@ namespace GelMPM
 
   template <int dim>
   bool
-  MixedSystem<dim>::restore_tangent(const std::vector<bool>   &classification,
-                                    const std::vector<double> &values)
+  MixedSystem<dim>::restore_tangent(const std::vector<bool> &classification,
+                                    const SparseEntries     &entries)
   {
-    const Epetra_CrsMatrix &A = matrix_.trilinos_matrix();
     if (classification != pattern_classification ||
-        values.size() != static_cast<std::size_t>(A.NumMyNonzeros()))
+        entries.size() != static_cast<std::size_t>(matrix_.n_nonzero_elements()))
       return false;
-    std::size_t next = 0;
-    for (int row = 0; row < A.NumMyRows(); ++row)
-      {
-        int     n_entries = 0;
-        double *entries   = nullptr;
-        int    *columns   = nullptr;
-        // Epetra's row view points into the matrix's own storage.
-        A.ExtractMyRowView(row, n_entries, entries, columns);
-        for (int k = 0; k < n_entries; ++k)
-          entries[k] = values[next++];
-      }
+    const dealii::IndexSet owned = matrix_.locally_owned_range_indices();
+    for (std::size_t k = 0; k < entries.size(); ++k)
+      if (owned.is_element(entries.rows[k]))
+        matrix_.set(entries.rows[k], entries.columns[k], entries.values[k]);
+    matrix_.compress(dealii::VectorOperation::insert);
     return true;
   }
 
@@ -1102,6 +1216,11 @@ namespace GelMPM
           u_sum += r.measure * (du - ratio * r.du_last).norm_square();
           mu_sum += r.measure * mu_difference * mu_difference;
         }
+    double sums[3] = {volume, u_sum, mu_sum};
+    Collective::sum_in_place(communicator, sums, 3);
+    volume = sums[0];
+    u_sum  = sums[1];
+    mu_sum = sums[2];
     if (!(volume > 0.))
       return {0., 0.};
     return {weight * std::sqrt(u_sum / volume), weight * std::sqrt(mu_sum / volume)};
@@ -1121,7 +1240,7 @@ namespace GelMPM
         fields_at_point(r, solution, du, delta_F, mu);
         largest = std::max(largest, du.norm());
       }
-    return largest;
+    return dealii::Utilities::MPI::max(largest, communicator);
   }
 
 
@@ -1185,7 +1304,8 @@ namespace GelMPM
           }
         active += is_active;
       }
-    return {active, penetration};
+    return {dealii::Utilities::MPI::sum(active, communicator),
+            dealii::Utilities::MPI::max(penetration, communicator)};
   }
 
 
@@ -1203,6 +1323,7 @@ namespace GelMPM
               mass(dofs[i], dofs[j]) +=
                 r.measure * mu_values[r.mu_offset + i] * mu_values[r.mu_offset + j];
         }
+    Collective::sum_in_place(communicator, &mass(0, 0), mass.n_elements());
     return mass;
   }
 
@@ -1211,7 +1332,7 @@ namespace GelMPM
   unsigned int
   MixedSystem<dim>::n_points() const
   {
-    return points.size();
+    return dealii::Utilities::MPI::sum(static_cast<unsigned int>(points.size()), communicator);
   }
 
 

@@ -19,7 +19,7 @@ namespace GelMPM
      * a checkpoint also holds the GelMPM version, since another version may compute the next
      * step differently (the resumed run would no longer be the run that was checkpointed).
      */
-    constexpr unsigned int checkpoint_format = 1;
+    constexpr unsigned int checkpoint_format = 2;
 
     std::string
     first_line()

@@ -18,7 +18,7 @@ namespace GelMPM
                               const std::string                &basename)
     : fe(dealii::FE_DGQ<dim>(1), dim + 1)
     , dof_handler(triangulation)
-    , series(directory, basename)
+    , series(directory, basename, triangulation.get_communicator())
   {
     dof_handler.distribute_dofs(fe);
   }
@@ -57,6 +57,9 @@ namespace GelMPM
     vertex_values = std::numeric_limits<double>::quiet_NaN();
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
+        // On several ranks each writes the cells it owns.
+        if (!cell->is_locally_owned())
+          continue;
         const unsigned int c    = cell->active_cell_index();
         const unsigned int mu_c = mu.space().cell_containing(cell->center());
         u_cell_kind(c)          = static_cast<double>(u.cell_kind(c));
@@ -152,9 +155,14 @@ namespace GelMPM
     flags.time              = time;
     flags.compression_level = DataOutBase::VtkFlags::best_speed;
     data_out.set_flags(flags);
-    series.write(time, [&](std::ostream &out) {
-      data_out.write_vtu(out);
-    });
+    series.write(
+      time,
+      [&](std::ostream &out) {
+        data_out.write_vtu(out);
+      },
+      [&](std::ostream &out, const std::vector<std::string> &pieces) {
+        data_out.write_pvtu_record(out, pieces);
+      });
   }
 
 

@@ -12,9 +12,10 @@ namespace GelMPM
 {
   template <int dim>
   ParticleOutput<dim>::ParticleOutput(const std::string         &directory,
-                                      const FloryRehnerGel<dim> &material)
+                                      const FloryRehnerGel<dim> &material,
+                                      const MPI_Comm             communicator)
     : material(material)
-    , series(directory, "particles")
+    , series(directory, "particles", communicator)
   {}
 
 
@@ -104,9 +105,14 @@ namespace GelMPM
 
     DataOutBase::VtkFlags flags;
     flags.compression_level = DataOutBase::VtkFlags::best_speed;
-    series.write(time, [&](std::ostream &out) {
-      DataOutBase::write_vtu(patches, names, ranges, flags, out);
-    });
+    series.write(
+      time,
+      [&](std::ostream &out) {
+        DataOutBase::write_vtu(patches, names, ranges, flags, out);
+      },
+      [&](std::ostream &out, const std::vector<std::string> &pieces) {
+        DataOutBase::write_pvtu_record(out, pieces, names, ranges, flags);
+      });
   }
 
 

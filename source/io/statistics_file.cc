@@ -26,9 +26,21 @@ namespace GelMPM
 
 
   void
+  StatisticsFile::write_here(const bool writes_file)
+  {
+    writes = writes_file;
+  }
+
+
+  void
   StatisticsFile::open(const std::string &file_name, const std::vector<std::string> &columns)
   {
     set_columns(file_name, columns);
+    if (!writes)
+      {
+        append_line(columns);
+        return;
+      }
     errno = 0;
     file.open(file_name, std::ios::binary | std::ios::trunc);
     if (!file)
@@ -43,6 +55,11 @@ namespace GelMPM
                          const std::uintmax_t            size)
   {
     set_columns(file_name, columns);
+    if (!writes)
+      {
+        complete = size;
+        return;
+      }
     std::error_code error;
     if (std::filesystem::file_size(file_name, error) < size || error)
       throw std::runtime_error("'" + file_name +
@@ -88,6 +105,11 @@ namespace GelMPM
     for (unsigned int i = 0; i < fields.size(); ++i)
       line += (i ? "," : "") + fields[i];
     line += '\n';
+    if (!writes)
+      {
+        complete += line.size();
+        return;
+      }
     errno = 0;
     file.write(line.data(), line.size());
     file.flush();

@@ -105,9 +105,13 @@ namespace GelMPM
       for (unsigned int i = 0; i < dim; ++i)
         for (unsigned int j = 0; j < dim; ++j)
           properties[Layout::F + i * dim + j] = (i == j) ? lambda_0 : 0.;
-      properties[Layout::mu]       = mu_0;
+      properties[Layout::mu] = mu_0;
+      // Every rank walks all points, so that ids and checks are the same on all; each keeps
+      // the points of the cells it owns.
       const auto [cell, reference] = locator.locate(x);
-      particles.insert_particle(x, reference, next_id++, cell, dealii::make_array_view(properties));
+      if (cell->is_locally_owned())
+        particles.insert_particle(x, reference, next_id, cell, dealii::make_array_view(properties));
+      ++next_id;
     };
 
     // Volume points at sub-cell centres.

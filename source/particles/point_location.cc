@@ -65,20 +65,52 @@ namespace GelMPM
       particles.sort_particles_into_subdomains_and_cells();
       connection.disconnect();
     }
-    if (lost.empty())
+    const MPI_Comm communicator = triangulation.get_communicator();
+    if (dealii::Utilities::MPI::n_mpi_processes(communicator) > 1)
+      {
+        // The cell by index arithmetic may belong to another rank: every rank sees every lost
+        // point (they are few) and keeps those of its own cells.
+        std::vector<double> flat;
+        for (const auto &point : lost)
+          {
+            for (unsigned int d = 0; d < dim; ++d)
+              flat.push_back(point.location[d]);
+            flat.push_back(static_cast<double>(point.id));
+            flat.push_back(point.properties.size());
+            flat.insert(flat.end(), point.properties.begin(), point.properties.end());
+          }
+        lost.clear();
+        for (const auto &from_rank : dealii::Utilities::MPI::all_gather(communicator, flat))
+          for (std::size_t k = 0; k < from_rank.size();)
+            {
+              Lost point;
+              for (unsigned int d = 0; d < dim; ++d)
+                point.location[d] = from_rank[k++];
+              point.id            = static_cast<dealii::types::particle_index>(from_rank[k++]);
+              const std::size_t n = static_cast<std::size_t>(from_rank[k++]);
+              point.properties.assign(from_rank.begin() + k, from_rank.begin() + k + n);
+              k += n;
+              lost.push_back(std::move(point));
+            }
+      }
+    if (dealii::Utilities::MPI::sum(lost.size(), communicator) == 0)
       return 0;
     const GridCellLocator<dim> locator(grid, triangulation);
+    unsigned int               n_inserted = 0;
     for (const auto &point : lost)
       {
         const auto [cell, reference] = locator.locate(point.location);
+        if (!cell->is_locally_owned())
+          continue;
         particles.insert_particle(point.location,
                                   reference,
                                   point.id,
                                   cell,
                                   dealii::make_array_view(point.properties));
+        ++n_inserted;
       }
     particles.update_cached_numbers();
-    return lost.size();
+    return dealii::Utilities::MPI::sum(n_inserted, communicator);
   }
 
 

@@ -1,3 +1,4 @@
+#include <gelmpm/core/collective.h>
 #include <gelmpm/core/input_error.h>
 #include <gelmpm/particles/property_layout.h>
 #include <gelmpm/simulator/observables.h>
@@ -290,8 +291,16 @@ namespace GelMPM
               ++count[k];
             }
       }
+    std::vector<double> flat;
     for (unsigned int k = 0; k < 4; ++k)
-      sum[k] /= count[k % 2];
+      for (unsigned int d = 0; d < dim; ++d)
+        flat.push_back(sum[k][d]);
+    flat.push_back(count[0]);
+    flat.push_back(count[1]);
+    Collective::sum_in_place(communicator, flat);
+    for (unsigned int k = 0; k < 4; ++k)
+      for (unsigned int d = 0; d < dim; ++d)
+        sum[k][d] = flat[k * dim + d] / flat[4 * dim + k % 2];
     return sum;
   }
 
@@ -313,19 +322,39 @@ namespace GelMPM
     std::vector<PoreShape>                                        shapes(n);
     double                                                        mu_sum = 0.;
     unsigned int                                                  count  = 0;
+    // The points of the pores' boundaries of every rank, in the order of the ranks: the shape
+    // of a pore needs all of its boundary. Per point: X_0, x, mu.
+    std::vector<double> local;
     for (const auto &particle : particles)
       {
         const auto props = particle.get_properties();
         if (piece_of(props) != pore_piece)
           continue;
-        dealii::Point<dim> X_0;
         for (unsigned int d = 0; d < dim; ++d)
-          X_0[d] = props[Layout::position_0 + d];
+          local.push_back(props[Layout::position_0 + d]);
+        for (unsigned int d = 0; d < dim; ++d)
+          local.push_back(particle.get_location()[d]);
+        local.push_back(props[Layout::mu]);
+      }
+    std::vector<double> all;
+    if (Collective::is_parallel(communicator))
+      for (const auto &part : dealii::Utilities::MPI::all_gather(communicator, local))
+        all.insert(all.end(), part.begin(), part.end());
+    else
+      all = std::move(local);
+    for (std::size_t first = 0; first < all.size(); first += 2 * dim + 1)
+      {
+        dealii::Point<dim> X_0, x;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            X_0[d] = all[first + d];
+            x[d]   = all[first + dim + d];
+          }
+        const double mu      = all[first + 2 * dim];
         unsigned int nearest = 0;
         for (unsigned int k = 1; k < n; ++k)
           if (X_0.distance(pore_centres[k]) < X_0.distance(pore_centres[nearest]))
             nearest = k;
-        const auto       x = particle.get_location();
         dealii::Point<2> x_2;
         for (unsigned int d = 0; d < 2; ++d)
           {
@@ -342,7 +371,7 @@ namespace GelMPM
               ++shapes[nearest].contact_points;
               break;
             }
-        mu_sum += props[Layout::mu];
+        mu_sum += mu;
         ++count;
       }
     mu_mean = count > 0 ? mu_sum / count : 0.;
@@ -440,10 +469,10 @@ namespace GelMPM
         sum_JV += J * props[Layout::measure_0];
         sum_V += props[Layout::measure_0];
       }
-    return {{dealii::Utilities::MPI::min(J_min, MPI_COMM_WORLD),
-             dealii::Utilities::MPI::sum(sum_JV, MPI_COMM_WORLD) /
-               dealii::Utilities::MPI::sum(sum_V, MPI_COMM_WORLD),
-             dealii::Utilities::MPI::max(J_max, MPI_COMM_WORLD)}};
+    return {{dealii::Utilities::MPI::min(J_min, communicator),
+             dealii::Utilities::MPI::sum(sum_JV, communicator) /
+               dealii::Utilities::MPI::sum(sum_V, communicator),
+             dealii::Utilities::MPI::max(J_max, communicator)}};
   }
 
 
@@ -463,8 +492,13 @@ namespace GelMPM
           points.push_back(
             {{props[Layout::position_0 + dim - 1], props[Layout::position_0], props[Layout::mu]}});
       }
-    AssertThrow(dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1,
-                dealii::ExcMessage("mu_oscillation is implemented for one MPI rank"));
+    if (Collective::is_parallel(communicator))
+      {
+        std::vector<std::array<double, 3>> all;
+        for (const auto &part : dealii::Utilities::MPI::all_gather(communicator, points))
+          all.insert(all.end(), part.begin(), part.end());
+        points = std::move(all);
+      }
     if (points.size() < 3)
       return 0.;
     std::sort(points.begin(), points.end());
@@ -486,6 +520,14 @@ namespace GelMPM
         first = end;
       }
     return (mu_max > mu_min) ? sum / n_rows / (mu_max - mu_min) : 0.;
+  }
+
+
+  template <int dim>
+  void
+  Observables<dim>::set_communicator(const MPI_Comm comm)
+  {
+    communicator = comm;
   }
 
 

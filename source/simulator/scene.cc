@@ -1,5 +1,8 @@
+#include <gelmpm/core/collective.h>
 #include <gelmpm/particles/property_layout.h>
 #include <gelmpm/simulator/scene.h>
+
+#include <deal.II/distributed/tria.h>
 
 namespace GelMPM
 {
@@ -20,7 +23,10 @@ namespace GelMPM
 
 
   template <int dim>
-  Scene<dim>::Scene(dealii::ParameterHandler &prm, const std::vector<std::string> &boundary_pieces)
+  Scene<dim>::Scene(dealii::ParameterHandler       &prm,
+                    const std::vector<std::string> &boundary_pieces,
+                    const MPI_Comm                  communicator)
+    : communicator(communicator)
   {
     material.parse_parameters(prm);
     grid.parse_parameters(prm);
@@ -40,15 +46,56 @@ namespace GelMPM
     // The spaces first: an odd cell count with subdivision is reported before point generation,
     // which may take long on a large grid.
     spaces = std::make_unique<DiscreteSpaces<dim>>(grid, discretisation);
-    grid.create_triangulation(triangulation);
-    particles.initialize(triangulation, mapping, PropertyLayout<dim>::n_properties);
+    if (Collective::is_parallel(communicator))
+      {
+        auto distributed =
+          std::make_unique<dealii::parallel::distributed::Triangulation<dim>>(communicator);
+        distributed->signals.weight.connect(
+          [this](const typename dealii::Triangulation<dim>::cell_iterator &cell,
+                 const typename dealii::Triangulation<dim>::CellStatus) -> unsigned int {
+            return 1 + particles.n_particles_in_cell(cell);
+          });
+        triangulation = std::move(distributed);
+      }
+    else
+      triangulation = std::make_unique<dealii::Triangulation<dim>>();
+    grid.create_triangulation(*triangulation);
+    particles.initialize(*triangulation, mapping, PropertyLayout<dim>::n_properties);
     generator.generate(geometry,
                        grid,
-                       triangulation,
+                       *triangulation,
                        boundary_conditions,
                        material.lambda_0(),
                        material.mu_0(),
                        particles);
+    balance_partition();
+  }
+
+
+  template <int dim>
+  void
+  Scene<dim>::balance_partition()
+  {
+    auto *distributed =
+      dynamic_cast<dealii::parallel::distributed::Triangulation<dim> *>(triangulation.get());
+    if (distributed == nullptr)
+      return;
+    particles.prepare_for_coarsening_and_refinement();
+    distributed->repartition();
+    particles.unpack_after_coarsening_and_refinement();
+  }
+
+
+  template <int dim>
+  double
+  Scene<dim>::imbalance() const
+  {
+    if (!Collective::is_parallel(communicator))
+      return 1.;
+    const double local = particles.n_locally_owned_particles();
+    const double mean  = dealii::Utilities::MPI::sum(local, communicator) /
+                        dealii::Utilities::MPI::n_mpi_processes(communicator);
+    return mean > 0. ? dealii::Utilities::MPI::max(local, communicator) / mean : 1.;
   }
 
 
@@ -56,7 +103,11 @@ namespace GelMPM
   void
   Scene<dim>::create_system()
   {
-    system = std::make_unique<MixedSystem<dim>>(material, boundary_conditions, nitsche, *spaces);
+    system = std::make_unique<MixedSystem<dim>>(material,
+                                                boundary_conditions,
+                                                nitsche,
+                                                *spaces,
+                                                triangulation->get_communicator());
     if (contact.enabled())
       system->set_contact(contact);
   }

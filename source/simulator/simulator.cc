@@ -1,3 +1,4 @@
+#include <gelmpm/core/collective.h>
 #include <gelmpm/core/input_error.h>
 #include <gelmpm/core/stop_request.h>
 #include <gelmpm/core/version.h>
@@ -46,6 +47,7 @@ namespace GelMPM
     , scene(prm, structure.boundary_pieces)
     , scene_file(scene_file)
     , pcout(std::cout, dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    , pcerr(std::cerr, dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
     , timer(pcout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times)
   {
     output_settings.parse_parameters(prm);
@@ -117,8 +119,7 @@ namespace GelMPM
   {
     // The first step builds the extended bases of the initial configuration: build them here,
     // where a grid too coarse for the body is still bad input.
-    const auto volume_points =
-      GridOutput<dim>::count_volume_points(scene.particles, scene.spaces->u_space());
+    const auto        volume_points = volume_points_per_cell();
     std::vector<bool> has_material(volume_points.size());
     for (unsigned int c = 0; c < has_material.size(); ++c)
       has_material[c] = volume_points[c] > 0;
@@ -136,6 +137,17 @@ namespace GelMPM
 
 
   template <int dim>
+  std::vector<unsigned int>
+  Simulator<dim>::volume_points_per_cell() const
+  {
+    auto count = GridOutput<dim>::count_volume_points(scene.particles, scene.spaces->u_space());
+    if (Collective::is_parallel(scene.communicator))
+      dealii::Utilities::MPI::sum(count, scene.communicator, count);
+    return count;
+  }
+
+
+  template <int dim>
   void
   Simulator<dim>::check_boundary_values()
   {
@@ -143,17 +155,27 @@ namespace GelMPM
     // an expression that is not finite (1/0, log(-1)) before the run cuts its steps without
     // saying why.
     std::vector<std::vector<dealii::Point<dim>>> points(scene.boundary_conditions.n_pieces());
+    // (piece, X_0) of the surface points of every rank, in the order of the ranks, so that
+    // every rank checks the same samples and fails or passes with the others.
+    std::vector<double> local;
     for (const auto &p : scene.particles)
       {
         const auto props = p.get_properties();
         const int  piece = piece_of(props);
         if (piece < 0)
           continue;
-        dealii::Point<dim> x;
+        local.push_back(piece);
         for (unsigned int d = 0; d < dim; ++d)
-          x[d] = props[PropertyLayout<dim>::position_0 + d];
-        points[piece].push_back(x);
+          local.push_back(props[PropertyLayout<dim>::position_0 + d]);
       }
+    for (const auto &part : dealii::Utilities::MPI::all_gather(scene.communicator, local))
+      for (std::size_t k = 0; k < part.size(); k += dim + 1)
+        {
+          dealii::Point<dim> x;
+          for (unsigned int d = 0; d < dim; ++d)
+            x[d] = part[k + 1 + d];
+          points[static_cast<unsigned int>(part[k])].push_back(x);
+        }
     std::vector<std::vector<dealii::Point<dim>>> samples(points.size());
     for (unsigned int i = 0; i < points.size(); ++i)
       {
@@ -219,8 +241,16 @@ namespace GelMPM
   void
   Simulator<dim>::prepare_output_directory() const
   {
-    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
-      return;
+    Collective::on_root(scene.communicator, [this]() {
+      prepare_output_directory_here();
+    });
+  }
+
+
+  template <int dim>
+  void
+  Simulator<dim>::prepare_output_directory_here() const
+  {
     std::error_code error;
     std::filesystem::create_directories(output_settings.directory, error);
     require(!error,
@@ -247,7 +277,7 @@ namespace GelMPM
   {
     // Only the names this program writes: a particles-00042.vtu of a longer earlier run would
     // otherwise sit next to this run's series as if it belonged to it.
-    const std::regex ours("(particles|grid|mode)(-[0-9]{5}\\.vtu|\\.pvd)(\\.tmp)?|"
+    const std::regex ours("(particles|grid|mode)(-[0-9]{5}(\\.[0-9]{4})?\\.p?vtu|\\.pvd)(\\.tmp)?|"
                           "(statistics|stability|events)\\.csv|parameters\\.prm|original\\.prm|"
                           "checkpoint\\.bin(\\.tmp)?");
     std::error_code  error;
@@ -273,13 +303,14 @@ namespace GelMPM
         }
       else
         ++n_surface;
-    n_volume_points  = n_volume;
-    n_surface_points = n_surface;
-    body_volume      = volume;
+    n_volume_points  = dealii::Utilities::MPI::sum(n_volume, scene.communicator);
+    n_surface_points = dealii::Utilities::MPI::sum(n_surface, scene.communicator);
+    body_volume      = dealii::Utilities::MPI::sum(volume, scene.communicator);
+    observables.set_communicator(scene.communicator);
 
     tau_d    = std::pow(time_stepping.characteristic_length, 2) / scene.material.diffusivity();
-    scale_u  = scene.material.shear_modulus() * std::pow(volume, (dim - 1.) / dim);
-    scale_mu = scene.material.kT_over_nu() * volume;
+    scale_u  = scene.material.shear_modulus() * std::pow(body_volume, (dim - 1.) / dim);
+    scale_mu = scene.material.kT_over_nu() * body_volume;
   }
 
 
@@ -311,6 +342,8 @@ namespace GelMPM
                              const std::string              &name,
                              const std::vector<std::string> &file_columns) {
       const std::string path = output_settings.directory + "/" + name;
+      // Rank 0 writes; the others keep the same rows in memory.
+      file.write_here(dealii::Utilities::MPI::this_mpi_process(scene.communicator) == 0);
       if (!resume_from)
         return file.open(path, file_columns);
       const auto &sizes = resume_from->header().file_sizes;
@@ -603,8 +636,7 @@ namespace GelMPM
   void
   Simulator<dim>::record_initial_grid()
   {
-    grid_volume_points =
-      GridOutput<dim>::count_volume_points(scene.particles, scene.spaces->u_space());
+    grid_volume_points = volume_points_per_cell();
     std::vector<bool> has_material(grid_volume_points.size());
     for (unsigned int c = 0; c < has_material.size(); ++c)
       has_material[c] = grid_volume_points[c] > 0;
@@ -720,8 +752,7 @@ namespace GelMPM
     {
       dealii::TimerOutput::Scope scope(timer, "setup");
       if (grid_output || mode_output)
-        grid_volume_points =
-          GridOutput<dim>::count_volume_points(scene.particles, scene.spaces->u_space());
+        grid_volume_points = volume_points_per_cell();
       // A grid reset that changes the classification gives the tangent a new sparsity pattern;
       // the factorisation of the old one goes first, while the matrix it refers to still
       // exists. Otherwise it stays, and Newton may start from it (modified Newton).
@@ -865,7 +896,14 @@ namespace GelMPM
               when << "at t/tau_d = " << t_begin + step_dt << ", " << e.what();
               throw std::runtime_error(when.str());
             }
-          sort_into_cells(scene.particles, scene.grid, scene.triangulation);
+          sort_into_cells(scene.particles, scene.grid, *scene.triangulation);
+          // The body moves and changes the points per rank: partition the grid anew when the
+          // most loaded rank holds much more than its share (its time sets the step's).
+          if (scene.imbalance() > largest_imbalance)
+            {
+              scene.balance_partition();
+              ++n_repartitions;
+            }
           if (scene.particles.n_global_particles() != n_before)
             throw std::runtime_error(
               std::to_string(n_before - scene.particles.n_global_particles()) +
@@ -924,7 +962,9 @@ namespace GelMPM
   {
     while (!control->finished())
       {
-        if (const int signal = stop_signal())
+        // On several ranks a signal reaches them at different moments: they stop together,
+        // at the first step boundary where any of them has it.
+        if (const int signal = dealii::Utilities::MPI::max(stop_signal(), scene.communicator))
           return stop_on_signal(signal);
         if (control->out_of_steps())
           {
@@ -979,17 +1019,8 @@ namespace GelMPM
     // The factorisation the next step's first Newton iteration may solve with (modified
     // Newton), as the entries it was made of and the classification of their pattern: a resumed
     // run refactorises them if its first grid reset gives that classification again.
-    if constexpr (Archive::is_saving::value)
-      {
-        resumed_classification = scene.system->classification_of_pattern();
-        resumed_tangent        = linear_solver.values_of_factorization();
-      }
+    // (write_checkpoint() gathers them.)
     ar &resumed_classification &resumed_tangent;
-    if constexpr (Archive::is_saving::value)
-      {
-        resumed_classification.clear();
-        resumed_tangent.clear();
-      }
   }
 
 
@@ -1008,16 +1039,45 @@ namespace GelMPM
                                      std::make_pair(&stability_file, "stability.csv"),
                                      std::make_pair(&events_file, "events.csv")})
       if (file->bytes() > 0)
-        {
+        header.file_sizes[name] = file->bytes();
+    // Every rank's points, as its own archive, and the factorised tangent's entries of every
+    // rank, gathered on rank 0, which writes the file.
+    std::string my_points;
+    {
+      std::ostringstream bytes;
+      {
+        boost::archive::binary_oarchive ar(bytes);
+        save_material_points(ar, scene.particles);
+      }
+      my_points = bytes.str();
+    }
+    std::vector<std::string> points = {my_points};
+    resumed_classification          = scene.system->classification_of_pattern();
+    resumed_tangent                 = linear_solver.entries_of_factorization();
+    if (Collective::is_parallel(scene.communicator))
+      {
+        points           = dealii::Utilities::MPI::gather(scene.communicator, my_points, 0);
+        const auto parts = dealii::Utilities::MPI::gather(scene.communicator, resumed_tangent, 0);
+        resumed_tangent.clear();
+        for (const auto &part : parts)
+          resumed_tangent.append(part);
+      }
+    std::uintmax_t size = 0;
+    Collective::on_root(scene.communicator, [&]() {
+      for (const auto &[file, name] : {std::make_pair(&statistics, "statistics.csv"),
+                                       std::make_pair(&stability_file, "stability.csv"),
+                                       std::make_pair(&events_file, "events.csv")})
+        if (file->bytes() > 0)
           sync_to_disk(output_settings.directory + "/" + name);
-          header.file_sizes[name] = file->bytes();
-        }
-    const auto size = GelMPM::write_checkpoint(output_settings.directory,
-                                               header,
-                                               [this](boost::archive::binary_oarchive &ar) {
-                                                 save_material_points(ar, scene.particles);
-                                                 serialize_run_state(ar);
-                                               });
+      size = GelMPM::write_checkpoint(output_settings.directory,
+                                      header,
+                                      [&](boost::archive::binary_oarchive &ar) {
+                                        ar << points;
+                                        serialize_run_state(ar);
+                                      });
+    });
+    resumed_classification.clear();
+    resumed_tangent.clear();
     last_checkpoint = std::chrono::steady_clock::now();
     checkpoint_step = step;
     pcout << "  checkpoint at step " << step;
@@ -1033,8 +1093,19 @@ namespace GelMPM
   void
   Simulator<dim>::restore_checkpoint()
   {
-    auto &ar = resume_from->archive();
-    load_material_points(ar, scene.particles, scene.triangulation);
+    auto                    &ar = resume_from->archive();
+    std::vector<std::string> points;
+    ar >> points;
+    scene.particles.clear_particles();
+    for (const auto &part : points)
+      {
+        std::istringstream              bytes(part);
+        boost::archive::binary_iarchive part_archive(bytes);
+        load_material_points(part_archive, scene.particles, *scene.triangulation);
+      }
+    scene.particles.update_cached_numbers();
+    // The saved points may sit elsewhere than the initial ones the grid was partitioned for.
+    scene.balance_partition();
     serialize_run_state(ar);
     open_statistics();
     if (output_settings.write_particles)
@@ -1067,20 +1138,21 @@ namespace GelMPM
         observables.set_contact_planes(scene.contact.planes(scene.grid.lower, scene.grid.upper),
                                        0.01 * scene.spaces->h_u());
       }
-    particle_output =
-      std::make_unique<ParticleOutput<dim>>(output_settings.directory, scene.material);
+    particle_output = std::make_unique<ParticleOutput<dim>>(output_settings.directory,
+                                                            scene.material,
+                                                            scene.communicator);
     mu_coefficients.assign(scene.spaces->mu_space().n_functions(), scene.material.mu_0());
     mu_known.assign(scene.spaces->mu_space().n_functions(), true);
     if (output_settings.write_grid)
       {
         grid_output =
-          std::make_unique<GridOutput<dim>>(output_settings.directory, scene.triangulation);
+          std::make_unique<GridOutput<dim>>(output_settings.directory, *scene.triangulation);
         if (!resume_from)
           record_initial_grid();
       }
     if (stability.write_mode)
       mode_output =
-        std::make_unique<GridOutput<dim>>(output_settings.directory, scene.triangulation, "mode");
+        std::make_unique<GridOutput<dim>>(output_settings.directory, *scene.triangulation, "mode");
     control         = std::make_unique<StepControl>(time_stepping,
                                             stability.bisection_tolerance,
                                             stability.unstable_step,
@@ -1107,9 +1179,9 @@ namespace GelMPM
       write_checkpoint();
     if (output_step != step)
       write_output();
-    std::cerr << "gelmpm: " << signal_name(signal) << " received: stopped after step " << step
-              << " at t/tau_d = " << time << " with a complete last output; the results are in "
-              << output_settings.directory << std::endl;
+    pcerr << "gelmpm: " << signal_name(signal) << " received: stopped after step " << step
+          << " at t/tau_d = " << time << " with a complete last output; the results are in "
+          << output_settings.directory << std::endl;
     return 128 + signal;
   }
 
@@ -1130,9 +1202,9 @@ namespace GelMPM
       }
     catch (const std::runtime_error &e)
       {
-        std::cerr << "gelmpm: the run stopped: " << e.what()
-                  << "; what was written up to t/tau_d = " << time << " is kept in "
-                  << output_settings.directory << std::endl;
+        pcerr << "gelmpm: the run stopped: " << e.what()
+              << "; what was written up to t/tau_d = " << time << " is kept in "
+              << output_settings.directory << std::endl;
         status = 1;
       }
     if (status == 0)
@@ -1140,7 +1212,12 @@ namespace GelMPM
     if (!output_settings.test_mode)
       pcout << "gelmpm: " << n_newton_iterations << " Newton iterations, " << n_factorizations
             << " factorisations (" << linear_solver.name() << "), " << n_new_patterns
-            << " sparsity patterns" << std::endl;
+            << " sparsity patterns";
+    if (!output_settings.test_mode && Collective::is_parallel(scene.communicator))
+      pcout << ", " << dealii::Utilities::MPI::n_mpi_processes(scene.communicator)
+            << " ranks, partitioned anew " << n_repartitions << " times";
+    if (!output_settings.test_mode)
+      pcout << std::endl;
     if (output_settings.test_mode && !statistics.rows().empty())
       {
         // The final row of statistics.csv, without timings, for comparison with a reference.

@@ -1,8 +1,12 @@
+#include <gelmpm/core/collective.h>
 #include <gelmpm/solvers/linear_solver.h>
 #include <gelmpm/stability/matrix_entries.h>
 
+#include <deal.II/base/mpi.h>
+
 #include <Amesos.h>
 #include <Epetra_CrsMatrix.h>
+#include <Epetra_MpiComm.h>
 #include <Epetra_Vector.h>
 #include <cmath>
 #include <stdexcept>
@@ -123,10 +127,16 @@ namespace GelMPM
     ++numeric_count;
     if (keep_values)
       {
-        factorized_values.clear();
-        for_each_entry(K, K.m(), [this](unsigned int, unsigned int, const double value) {
-          factorized_values.push_back(value);
-        });
+        factorized_entries.clear();
+        for_each_entry(K,
+                       K.m(),
+                       [this](const unsigned int row,
+                              const unsigned int column,
+                              const double       value) {
+                         factorized_entries.rows.push_back(row);
+                         factorized_entries.columns.push_back(column);
+                         factorized_entries.values.push_back(value);
+                       });
       }
   }
 
@@ -138,11 +148,11 @@ namespace GelMPM
   }
 
 
-  const std::vector<double> &
-  LinearSolver::values_of_factorization() const
+  const SparseEntries &
+  LinearSolver::entries_of_factorization() const
   {
-    static const std::vector<double> none;
-    return factorized ? factorized_values : none;
+    static const SparseEntries none;
+    return factorized ? factorized_entries : none;
   }
 
 
@@ -159,12 +169,35 @@ namespace GelMPM
     else
       {
         const Epetra_RowMatrix &matrix = *problem->GetMatrix();
-        Epetra_Vector           x_view(View, matrix.OperatorDomainMap(), x.begin());
-        Epetra_Vector b_view(View, matrix.OperatorRangeMap(), const_cast<double *>(b.begin()));
-        problem->SetLHS(&x_view);
-        problem->SetRHS(&b_view);
-        const int error = factorisation->Solve();
-        // The views die with this call: no dangling vectors in the kept problem.
+        int                     error  = 0;
+        if (matrix.Comm().NumProc() == 1)
+          {
+            Epetra_Vector x_view(View, matrix.OperatorDomainMap(), x.begin());
+            Epetra_Vector b_view(View, matrix.OperatorRangeMap(), const_cast<double *>(b.begin()));
+            problem->SetLHS(&x_view);
+            problem->SetRHS(&b_view);
+            error = factorisation->Solve();
+          }
+        else
+          {
+            // The Newton vectors are whole on every rank; Amesos takes the owned entries and
+            // the solution is made whole again by summing the ranks' owned parts.
+            const Epetra_Map &range  = matrix.OperatorRangeMap();
+            const Epetra_Map &domain = matrix.OperatorDomainMap();
+            Epetra_Vector     b_owned(range), x_owned(domain);
+            for (int i = 0; i < range.NumMyElements(); ++i)
+              b_owned[i] = b(range.GID64(i));
+            problem->SetLHS(&x_owned);
+            problem->SetRHS(&b_owned);
+            error = factorisation->Solve();
+            x.reinit(b.size());
+            for (int i = 0; i < domain.NumMyElements(); ++i)
+              x(domain.GID64(i)) = x_owned[i];
+            Collective::sum_in_place(dynamic_cast<const Epetra_MpiComm &>(matrix.Comm()).Comm(),
+                                     x.begin(),
+                                     x.size());
+          }
+        // The vectors die with this call: no dangling vectors in the kept problem.
         problem->SetLHS(nullptr);
         problem->SetRHS(nullptr);
         if (error != 0)

@@ -27,8 +27,37 @@ namespace GelMPM
     DMUMPS_STRUC_C         mumps;
     std::vector<MUMPS_INT> rows, columns;
     std::vector<double>    values;
-    bool                   initialized = false;
-    bool                   factorized  = false;
+    MPI_Comm               communicator = MPI_COMM_SELF;
+    bool                   distributed  = false;
+    bool                   initialized  = false;
+    bool                   factorized   = false;
+
+    /**
+     * Start MUMPS on the communicator of the matrix. On several ranks each passes the entries of
+     * the rows it owns (ICNTL(18) = 3) and the right-hand side and solution live on rank 0
+     * (ICNTL(20) = ICNTL(21) = 0), from where solve() broadcasts the solution; on one rank the
+     * matrix is passed whole, as before the distribution existed.
+     */
+    void
+    start(const MPI_Comm comm)
+    {
+      communicator       = comm;
+      distributed        = dealii::Utilities::MPI::n_mpi_processes(comm) > 1;
+      mumps.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(comm));
+      mumps.par          = 1; // the host takes part in the factorisation
+      mumps.sym          = 2; // general symmetric (indefinite): LDL^T
+      call(-1);
+      initialized = true;
+      // Silence MUMPS; errors are reported through INFOG.
+      mumps.icntl[icntl(1)]  = -1;
+      mumps.icntl[icntl(2)]  = -1;
+      mumps.icntl[icntl(3)]  = -1;
+      mumps.icntl[icntl(4)]  = 0;
+      mumps.icntl[icntl(13)] = 1; // sequential root: the negative-pivot count covers it
+      mumps.icntl[icntl(24)] = 1; // detect null pivots (INFOG(28))
+      if (distributed)
+        mumps.icntl[icntl(18)] = 3;
+    }
 
     /** The lower triangle of the leading @p n x @p n block of @p K, as MUMPS's triplets. */
     void
@@ -48,11 +77,21 @@ namespace GelMPM
                            values.push_back(value);
                          }
                      });
-      mumps.n   = n;
-      mumps.nnz = values.size();
-      mumps.irn = rows.data();
-      mumps.jcn = columns.data();
-      mumps.a   = values.data();
+      mumps.n = n;
+      if (distributed)
+        {
+          mumps.nnz_loc = values.size();
+          mumps.irn_loc = rows.data();
+          mumps.jcn_loc = columns.data();
+          mumps.a_loc   = values.data();
+        }
+      else
+        {
+          mumps.nnz = values.size();
+          mumps.irn = rows.data();
+          mumps.jcn = columns.data();
+          mumps.a   = values.data();
+        }
     }
 
     void
@@ -70,21 +109,7 @@ namespace GelMPM
 
   SymmetricFactorization::SymmetricFactorization()
     : data(std::make_unique<Data>())
-  {
-    auto &m        = data->mumps;
-    m.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(MPI_COMM_SELF));
-    m.par          = 1; // the host takes part in the factorisation
-    m.sym          = 2; // general symmetric (indefinite): LDL^T
-    data->call(-1);
-    data->initialized = true;
-    // Silence MUMPS; errors are reported through INFOG.
-    m.icntl[icntl(1)]  = -1;
-    m.icntl[icntl(2)]  = -1;
-    m.icntl[icntl(3)]  = -1;
-    m.icntl[icntl(4)]  = 0;
-    m.icntl[icntl(13)] = 1; // sequential root: the negative-pivot count covers it
-    m.icntl[icntl(24)] = 1; // detect null pivots (INFOG(28))
-  }
+  {}
 
 
   SymmetricFactorization::~SymmetricFactorization()
@@ -102,6 +127,11 @@ namespace GelMPM
                                     const unsigned int                            leading)
   {
     data->factorized = false;
+    if (!data->initialized)
+      data->start(K.get_mpi_communicator());
+    else if (data->communicator != K.get_mpi_communicator())
+      throw std::logic_error("SymmetricFactorization::factorize() with a matrix on another "
+                             "communicator than the first");
     data->gather(K, std::min<unsigned int>(leading, K.m()));
     data->call(4); // analysis + factorisation
     data->factorized = true;
@@ -147,6 +177,11 @@ namespace GelMPM
     m.lrhs  = m.n;
     m.rhs   = x.begin();
     data->call(3);
+    if (data->distributed)
+      {
+        const int ierr = MPI_Bcast(x.begin(), x.size(), MPI_DOUBLE, 0, data->communicator);
+        AssertThrowMPI(ierr);
+      }
   }
 
 

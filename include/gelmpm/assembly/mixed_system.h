@@ -4,10 +4,13 @@
 #include <gelmpm/assembly/contact_settings.h>
 #include <gelmpm/assembly/discretisation.h>
 #include <gelmpm/assembly/nitsche_settings.h>
+#include <gelmpm/core/sparse_entries.h>
 #include <gelmpm/material/flory_rehner_gel.h>
 #include <gelmpm/particles/property_layout.h>
 #include <gelmpm/scene/boundary_conditions.h>
 
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/full_matrix.h>
@@ -51,6 +54,13 @@ namespace GelMPM
    * Per step, setup() gathers the material points, classifies the cells, builds the extended
    * bases and caches every point's shape-function values and gradients: they do not change over
    * the Newton iterations of a step (the grid is reset, points sit at x_n).
+   *
+   * On several MPI ranks each rank holds the material points of its cells and assembles them;
+   * the classification, the spaces and their numbering, the residual and the Newton vectors are
+   * the same on every rank (whole), the tangent is a distributed Trilinos matrix whose rows are
+   * owned as owned_and_relevant_dofs() says (doc/architecture.md, "Distribution over MPI ranks").
+   * Everything that sums or maximises over points (errors, increments, contact, n_points) is
+   * reduced over the ranks, and every function that may fail on one rank's points fails on all.
    */
   template <int dim>
   class MixedSystem
@@ -59,7 +69,8 @@ namespace GelMPM
     MixedSystem(const FloryRehnerGel<dim> &material,
                 BoundaryConditions<dim>   &boundary_conditions,
                 const NitscheSettings     &nitsche,
-                DiscreteSpaces<dim>       &spaces);
+                DiscreteSpaces<dim>       &spaces,
+                const MPI_Comm             communicator = MPI_COMM_SELF);
 
     /**
      * Start a step: locate the points of @p particles, classify cells from the volume points,
@@ -101,13 +112,13 @@ namespace GelMPM
     classification_of_pattern() const;
 
     /**
-     * Overwrite the tangent's entries with @p values (in the matrix's row order, as
-     * LinearSolver::values_of_factorization() keeps them) if the pattern is the one built for
-     * @p classification; returns whether it did (a resumed run restoring the matrix its next
-     * Newton iteration starts from).
+     * Overwrite the tangent's entries with @p entries (all rows, as the ranks'
+     * LinearSolver::entries_of_factorization() together hold them) if the pattern is the one
+     * built for @p classification; returns whether it did (a resumed run restoring the matrix
+     * its next Newton iteration starts from). Each rank takes the rows it owns.
      */
     bool
-    restore_tangent(const std::vector<bool> &classification, const std::vector<double> &values);
+    restore_tangent(const std::vector<bool> &classification, const SparseEntries &entries);
 
     /** The residual assembled last. */
     const dealii::Vector<double> &
@@ -296,6 +307,13 @@ namespace GelMPM
     build_sparsity_pattern();
 
     /**
+     * On several ranks: the unknowns whose rows of the tangent this rank owns, and those its
+     * points contribute to (which it writes, sent to their owners by compress()).
+     */
+    std::pair<dealii::IndexSet, dealii::IndexSet>
+    owned_and_relevant_dofs() const;
+
+    /**
      * The L2 projection over the volume points onto the displacement (@p displacement) or the
      * chemical potential basis of the @p n_components point values @p value(r, component):
      * per component, the coefficients c of M c = b, M_ij = sum_p V_p N_i N_j,
@@ -374,6 +392,7 @@ namespace GelMPM
     BoundaryConditions<dim>            &boundary_conditions;
     const NitscheSettings              &nitsche;
     DiscreteSpaces<dim>                &spaces_;
+    const MPI_Comm                      communicator;
     ContactSettings                     contact;
     std::vector<ContactSettings::Plane> contact_planes;
 
@@ -386,6 +405,8 @@ namespace GelMPM
     // The classification (cells with volume points) of this step, and the one the sparsity
     // pattern was built for.
     std::vector<bool> classification, pattern_classification;
+    // The rank that holds the volume points of each active cell (invalid for the others).
+    std::vector<unsigned int> cell_holder, pattern_holder;
 
     dealii::TrilinosWrappers::SparseMatrix matrix_;
     dealii::Vector<double>                 residual_;

@@ -26,7 +26,10 @@ namespace GelMPM
   class ParticleOutput
   {
   public:
-    ParticleOutput(const std::string &directory, const FloryRehnerGel<dim> &material);
+    /** A series in @p directory; on several ranks of @p communicator each writes its points. */
+    ParticleOutput(const std::string         &directory,
+                   const FloryRehnerGel<dim> &material,
+                   const MPI_Comm             communicator = MPI_COMM_SELF);
 
     /** Write the points at @p time (in tau_d) and update the .pvd series. */
     void

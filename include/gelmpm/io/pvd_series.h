@@ -1,6 +1,8 @@
 #ifndef gelmpm_io_pvd_series_h
 #define gelmpm_io_pvd_series_h
 
+#include <deal.II/base/mpi.h>
+
 #include <boost/serialization/string.hpp>
 #include <boost/serialization/utility.hpp>
 #include <boost/serialization/vector.hpp>
@@ -20,12 +22,21 @@ namespace GelMPM
    * Each .vtu file and the .pvd file are written under a temporary name and renamed when
    * complete, and a file joins the .pvd only after that: the series only ever lists complete
    * files, also when a run stops early or the disk is full.
+   *
+   * On several MPI ranks an output is a `<name>-NNNNN.pvtu` record, written by rank 0, of the
+   * pieces `<name>-NNNNN.RRRR.vtu` that each rank writes of its own part; the .pvd lists the
+   * .pvtu files, and every rank keeps the same list.
    */
   class PvdSeries
   {
   public:
-    /** A series `<name>.pvd` in @p directory, which must exist. */
-    PvdSeries(const std::string &directory, const std::string &name);
+    /**
+     * A series `<name>.pvd` in @p directory, which must exist, written by the ranks of
+     * @p communicator.
+     */
+    PvdSeries(const std::string &directory,
+              const std::string &name,
+              const MPI_Comm     communicator = MPI_COMM_SELF);
 
     /** The file name (without directory) of the next output: `<name>-NNNNN.vtu`. */
     std::string
@@ -42,6 +53,17 @@ namespace GelMPM
      */
     void
     write(const double time, const std::function<void(std::ostream &)> &writer);
+
+    /**
+     * As write(), on several ranks: each rank writes its piece with @p writer, then rank 0 the
+     * .pvtu record with @p record_writer(out, piece file names). Collective. On one rank the
+     * same as write().
+     */
+    void
+    write(
+      const double                                                                 time,
+      const std::function<void(std::ostream &)>                                   &writer,
+      const std::function<void(std::ostream &, const std::vector<std::string> &)> &record_writer);
 
     /** Record that next_file_name() has been written for @p time and rewrite the .pvd file. */
     void
@@ -72,8 +94,13 @@ namespace GelMPM
     void
     write_file(const std::string &path, const std::function<void(std::ostream &)> &writer) const;
 
+    /** Whether this series is written by several ranks (as pieces and .pvtu records). */
+    bool
+    parallel() const;
+
     std::string                                 directory;
     std::string                                 name;
+    MPI_Comm                                    communicator;
     std::vector<std::pair<double, std::string>> series;
   };
 } // namespace GelMPM

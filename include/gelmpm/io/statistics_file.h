@@ -20,6 +20,14 @@ namespace GelMPM
   class StatisticsFile
   {
   public:
+    /**
+     * Whether this process writes the file (default). On several MPI ranks only rank 0 does;
+     * the others keep the same rows and byte count in memory, so that every rank's state (and
+     * checkpoint) is the same.
+     */
+    void
+    write_here(const bool writes);
+
     /** Create (truncate) @p file_name and write the header row. */
     void
     open(const std::string &file_name, const std::vector<std::string> &columns);
@@ -72,6 +80,7 @@ namespace GelMPM
 
     std::string                           name;
     std::uintmax_t                        complete = 0; // bytes of complete lines
+    bool                                  writes   = true;
     std::ofstream                         file;
     std::vector<std::string>              columns_;
     std::map<std::string, unsigned int>   index;

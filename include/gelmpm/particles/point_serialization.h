@@ -44,9 +44,12 @@ namespace GelMPM
 
 
   /**
-   * Replace the material points of @p particles, on @p triangulation (the grid they were saved
-   * on, regenerated), by those save_material_points() wrote into @p ar, in the same cells and
-   * the same order. Throws std::runtime_error if they do not fit the handler or the grid.
+   * Add to @p particles, on @p triangulation (the grid they were saved on, regenerated), the
+   * points save_material_points() wrote into @p ar that lie in cells this rank owns, in the
+   * same cells and the same order. On several ranks each rank saved its own points and each
+   * reads all of them (a resumed run may partition the grid otherwise). The caller clears the
+   * handler before and updates its cached numbers after. Throws std::runtime_error if the
+   * points do not fit the handler or the grid.
    */
   template <class Archive, int dim>
   void
@@ -65,7 +68,6 @@ namespace GelMPM
     for (const auto &cell : triangulation.active_cell_iterators())
       cells.push_back(cell);
 
-    particles.clear_particles();
     std::vector<double> properties(n_properties);
     for (std::uint64_t i = 0; i < n_points; ++i)
       {
@@ -77,13 +79,13 @@ namespace GelMPM
           throw std::runtime_error("a material point of the checkpoint lies in cell " +
                                    std::to_string(cell) + " of a grid of " +
                                    std::to_string(cells.size()) + " cells");
-        particles.insert_particle(location,
-                                  reference,
-                                  id,
-                                  cells[cell],
-                                  dealii::ArrayView<const double>(properties));
+        if (cells[cell]->is_locally_owned())
+          particles.insert_particle(location,
+                                    reference,
+                                    id,
+                                    cells[cell],
+                                    dealii::ArrayView<const double>(properties));
       }
-    particles.update_cached_numbers();
   }
 } // namespace GelMPM
 

@@ -105,6 +105,13 @@ namespace GelMPM
       ar &contact_seen &creases_seen;
     }
 
+    /**
+     * The ranks whose material points make the body (default: this process alone); every
+     * observable is reduced or gathered over them, and is the same on all.
+     */
+    void
+    set_communicator(const MPI_Comm communicator);
+
   private:
     /** What pore_shapes() measures of one pore. */
     struct PoreShape
@@ -141,6 +148,7 @@ namespace GelMPM
     std::array<int, 2>                  thickness_pieces = {{-1, -1}};
     std::array<int, 2>                  offset_pieces    = {{-1, -1}};
     int                                 pore_piece       = -1;
+    MPI_Comm                            communicator     = MPI_COMM_SELF;
     std::vector<dealii::Point<dim>>     pore_centres;
     std::vector<ContactSettings::Plane> contact_planes;
     double                              contact_tolerance = 0.;

@@ -37,6 +37,11 @@ namespace GelMPM
    * constructor parses the sections, create_material_points() builds the grid, the points and the
    * spaces (bad input is found there: a body outside the grid, a piece that selects nothing),
    * create_system() the mixed system on them.
+   *
+   * On several MPI ranks the background grid is a parallel::distributed::Triangulation (p4est)
+   * and each rank holds the material points of the cells it owns; the cells are partitioned by
+   * their material points (balance_partition()). On one rank it is a serial Triangulation, with
+   * which every result of the one-rank runs was made.
    */
   template <int dim>
   class Scene
@@ -50,8 +55,13 @@ namespace GelMPM
     declare_parameters(dealii::ParameterHandler       &prm,
                        const std::vector<std::string> &boundary_pieces);
 
-    /** Parse and check the sections declared by declare_parameters(). Throws InputError. */
-    Scene(dealii::ParameterHandler &prm, const std::vector<std::string> &boundary_pieces);
+    /**
+     * Parse and check the sections declared by declare_parameters(). Throws InputError. The
+     * run is distributed over the ranks of @p communicator.
+     */
+    Scene(dealii::ParameterHandler       &prm,
+          const std::vector<std::string> &boundary_pieces,
+          const MPI_Comm                  communicator = MPI_COMM_WORLD);
 
     /**
      * Create the triangulation of the background grid, the material points of the body in their
@@ -67,6 +77,21 @@ namespace GelMPM
     void
     create_system();
 
+    /**
+     * On several ranks: partition the cells anew so that each rank holds about as many material
+     * points (a cell weighs 1 + its points), moving the points with their cells. Nothing on one
+     * rank.
+     */
+    void
+    balance_partition();
+
+    /**
+     * The largest number of material points on a rank over the mean number per rank (1 on one
+     * rank): the run rebalances when it grows.
+     */
+    double
+    imbalance() const;
+
     FloryRehnerGel<dim>         material;
     BackgroundGrid<dim>         grid;
     Geometry<dim>               geometry;
@@ -76,11 +101,12 @@ namespace GelMPM
     NitscheSettings             nitsche;
     ContactSettings             contact;
 
-    dealii::Triangulation<dim>              triangulation;
-    dealii::MappingQ1<dim>                  mapping;
-    dealii::Particles::ParticleHandler<dim> particles;
-    std::unique_ptr<DiscreteSpaces<dim>>    spaces;
-    std::unique_ptr<MixedSystem<dim>>       system;
+    MPI_Comm                                    communicator;
+    std::unique_ptr<dealii::Triangulation<dim>> triangulation;
+    dealii::MappingQ1<dim>                      mapping;
+    dealii::Particles::ParticleHandler<dim>     particles;
+    std::unique_ptr<DiscreteSpaces<dim>>        spaces;
+    std::unique_ptr<MixedSystem<dim>>           system;
   };
 } // namespace GelMPM
 

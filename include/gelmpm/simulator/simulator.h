@@ -2,6 +2,7 @@
 #define gelmpm_simulator_simulator_h
 
 #include <gelmpm/core/parameters.h>
+#include <gelmpm/core/sparse_entries.h>
 #include <gelmpm/io/checkpoint.h>
 #include <gelmpm/io/grid_output.h>
 #include <gelmpm/io/output_settings.h>
@@ -104,6 +105,14 @@ namespace GelMPM
     /** InputError if a boundary function is not finite on its piece during the run. */
     void
     check_boundary_values();
+
+    /** prepare_output_directory()'s work, on the one rank that does it. */
+    void
+    prepare_output_directory_here() const;
+
+    /** The volume points in each cell of the background grid, over all ranks. */
+    std::vector<unsigned int>
+    volume_points_per_cell() const;
     /** InputError if the run would overwrite the scene file's own directory. */
     void
     check_output_directory() const;
@@ -215,6 +224,8 @@ namespace GelMPM
     std::string                scene_file;
     std::string                parameters_as_used;
     dealii::ConditionalOStream pcout;
+    // Errors and stops, which every rank meets together, are reported by rank 0 alone.
+    dealii::ConditionalOStream pcerr;
     dealii::TimerOutput        timer;
 
     std::unique_ptr<ParticleOutput<dim>> particle_output;
@@ -232,17 +243,21 @@ namespace GelMPM
     double                               last_eigenvalue = 0.;
     std::vector<double>                  mu_coefficients; // per mu control point
     // Over all attempts of the run, for the summary at its end.
-    unsigned long       n_newton_iterations = 0, n_factorizations = 0, n_new_patterns = 0;
-    std::vector<bool>   mu_known;                // coefficient holds a current value
-    std::vector<double> mu_projection;           // points' mu on the step's basis
-    std::vector<double> displacement_projection; // last step's motion on the step's basis
-    double              last_dt = 0.;            // the last accepted step (0 before the first)
+    unsigned long n_newton_iterations = 0, n_factorizations = 0, n_new_patterns = 0;
+    unsigned long n_repartitions = 0;
+    // On several ranks: the ratio of the largest number of points on a rank to the mean above
+    // which the grid is partitioned anew (a repartition costs about one grid reset).
+    static constexpr double largest_imbalance = 1.1;
+    std::vector<bool>       mu_known;                // coefficient holds a current value
+    std::vector<double>     mu_projection;           // points' mu on the step's basis
+    std::vector<double>     displacement_projection; // last step's motion on the step's basis
+    double                  last_dt = 0.;            // the last accepted step (0 before the first)
 
     CheckpointSettings checkpoint_settings;
     // Read from a checkpoint: the factorisation to restore at the first step (see
     // serialize_run_state()).
     std::vector<bool>                     resumed_classification;
-    std::vector<double>                   resumed_tangent;
+    SparseEntries                         resumed_tangent;
     std::unique_ptr<CheckpointReader>     resume_from;     // with --resume, until restored
     std::chrono::steady_clock::time_point last_checkpoint; // or the start
     unsigned int checkpoint_step = dealii::numbers::invalid_unsigned_int; // of the last one

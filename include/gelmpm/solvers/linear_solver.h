@@ -1,6 +1,7 @@
 #ifndef gelmpm_solvers_linear_solver_h
 #define gelmpm_solvers_linear_solver_h
 
+#include <gelmpm/core/sparse_entries.h>
 #include <gelmpm/stability/symmetric_factorization.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -81,16 +82,17 @@ namespace GelMPM
           const dealii::Vector<double>                 &b) const;
 
     /**
-     * With @p keep, every factorize() keeps a copy of the entries it factorised (in the
-     * matrix's row order): a checkpoint stores them, so that a resumed run refactorises the
-     * matrix the run's next Newton iteration would have solved with (modified Newton).
+     * With @p keep, every factorize() keeps a copy of the entries it factorised (of the rows
+     * this rank owns, with global indices): a checkpoint stores them, so that a resumed run
+     * refactorises the matrix the run's next Newton iteration would have solved with (modified
+     * Newton).
      */
     void
     keep_factorized_values(const bool keep);
 
     /** The entries of the current factorisation (empty: none, or not kept). */
-    const std::vector<double> &
-    values_of_factorization() const;
+    const SparseEntries &
+    entries_of_factorization() const;
 
     /** Whether a factorisation of the current pattern is there to solve with. */
     bool
@@ -130,7 +132,7 @@ namespace GelMPM
     mutable const Epetra_CrsMatrix *analysed_matrix = nullptr;
     mutable bool                    factorized      = false;
     bool                            keep_values     = false;
-    mutable std::vector<double>     factorized_values;
+    mutable SparseEntries           factorized_entries;
     mutable unsigned int            symbolic_count = 0;
     mutable unsigned int            numeric_count  = 0;
   };

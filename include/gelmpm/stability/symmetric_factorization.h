@@ -40,6 +40,12 @@ namespace GelMPM
    *
    * Only the lower triangle of K is passed; K must be symmetric. Every stored entry is passed,
    * zero or not, so that matrices with one sparsity pattern share one analysis (refactorize()).
+   *
+   * MUMPS runs on the communicator of the first matrix factorised. On several ranks each rank
+   * passes the rows it owns (MUMPS's distributed input) and the calls are collective: every
+   * rank factorises and solves together, with the right-hand side taken from rank 0 and the
+   * solution given to all (the Newton vectors are whole on every rank, doc/architecture.md).
+   * INFOG, and with it the inertia, is global and the same on every rank.
    */
   class SymmetricFactorization
   {
@@ -71,7 +77,10 @@ namespace GelMPM
     Inertia
     inertia() const;
 
-    /** Solve K x = b with the factorisation: @p x holds b on entry and x on exit. */
+    /**
+     * Solve K x = b with the factorisation: @p x holds b on entry (rank 0's is used) and x on
+     * exit (on every rank).
+     */
     void
     solve(dealii::Vector<double> &x) const;
 

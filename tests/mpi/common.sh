@@ -1,0 +1,71 @@
+# Sourced by the MPI tests: arguments, a scratch directory, runs on one and on two ranks, checks.
+set -u
+gelmpm="$1"
+compare="$2"
+mpiexec="$3"
+source_dir="$4"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 1
+fail=0
+
+check() { # check CONDITION-STATUS MESSAGE
+  [[ $1 -eq 0 ]] || { echo "FAIL: $2"; fail=1; }
+}
+
+# run_both SCENE [--set ...]: the scene into one/ on one rank and two/ on two ranks.
+run_both() {
+  local scene="$1"
+  shift
+  "$gelmpm" --set "Output/Directory=one" "$@" "$scene" > one.log 2>&1
+  check $? "the run on one rank failed: $(tail -3 one.log)"
+  # --oversubscribe: a machine may report fewer slots than its two cores.
+  "$mpiexec" -n 2 --oversubscribe "$gelmpm" --set "Output/Directory=two" "$@" "$scene" \
+    > two.log 2>&1
+  check $? "the run on two ranks failed: $(tail -3 two.log)"
+}
+
+# The statistics agree (the tool prints its judgement per column).
+compare_statistics() {
+  "$compare" "$@" one/statistics.csv two/statistics.csv
+  check $? "statistics.csv on two ranks differs from one rank"
+}
+
+# stability.csv and events.csv, where written, are identical but for the eigenvalue columns.
+compare_stability() {
+  for f in stability.csv events.csv; do
+    [[ -f one/$f ]] || continue
+    [[ -f two/$f ]] || { echo "FAIL: two/$f missing"; fail=1; continue; }
+    local columns
+    columns=$(head -1 "one/$f" | tr ',' '\n' | grep -nv '^eig_' | cut -d: -f1 | paste -sd,)
+    cmp -s <(cut -d, -f"$columns" "one/$f") <(cut -d, -f"$columns" "two/$f")
+    check $? "$f on two ranks differs from one rank"
+  done
+}
+
+# The last particle output on two ranks has two pieces, each with points, together as many as
+# on one rank: the points were distributed and none was lost.
+check_pieces() {
+  local last pieces total=0 expected
+  last=$(ls two/particles-*.pvtu 2>/dev/null | tail -1)
+  [[ -n $last ]] || { echo "FAIL: no .pvtu record on two ranks"; fail=1; return; }
+  grep -q '</VTKFile>' "$last" || { echo "FAIL: $last is torn"; fail=1; }
+  pieces=$(sed -n 's/.*Source="\([^"]*\)".*/\1/p' "$last")
+  [[ $(echo "$pieces" | wc -l) -eq 2 ]] || { echo "FAIL: $last has not two pieces"; fail=1; }
+  for p in $pieces; do
+    local n
+    n=$(grep -o 'NumberOfPoints="[0-9]*"' "two/$p" | head -1 | tr -dc 0-9)
+    [[ ${n:-0} -gt 0 ]] || { echo "FAIL: piece $p holds no point"; fail=1; }
+    total=$((total + ${n:-0}))
+  done
+  expected=$(grep -o 'NumberOfPoints="[0-9]*"' "$(ls one/particles-*.vtu | tail -1)" | head -1 |
+    tr -dc 0-9)
+  [[ $total -eq $expected ]] ||
+    { echo "FAIL: the pieces hold $total points, the run on one rank $expected"; fail=1; }
+  echo "points: $expected on one rank, $total in the pieces of two ranks"
+}
+
+finish() {
+  [[ $fail -eq 0 ]] && echo "PASS"
+  exit $fail
+}
