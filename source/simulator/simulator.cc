@@ -73,6 +73,18 @@ namespace GelMPM
               ": with fewer than 3 points per cell and direction the cells at the body's boundary "
               "hold too few points to keep the stiffness definite once the gel swells",
             "use at least 3 (the paper: 5 to 8)");
+    // Both are dense analyses of the whole tangent, made for small discretisations: they read
+    // the matrix's rows on the rank that holds them, which on several ranks is a part.
+    for (const auto &[on, entry] :
+         {std::make_pair(stability.inf_sup, "Stability/Inf-sup constant"),
+          std::make_pair(stability.condition, "Stability/Condition number")})
+      require(!on || !Collective::is_parallel(scene.communicator),
+              entry,
+              "is a dense analysis of the whole tangent and is computed on one MPI rank only, but "
+              "the run has " +
+                std::to_string(dealii::Utilities::MPI::n_mpi_processes(scene.communicator)) +
+                " ranks",
+              "run the scene on one rank (without mpirun) or set the entry to false");
     require(stability.perturbation_direction.size() >= dim,
             "Stability/Perturbation direction",
             "has fewer components than the scene's dimension " + std::to_string(dim),
