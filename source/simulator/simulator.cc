@@ -43,7 +43,9 @@ namespace GelMPM
                             const std::string        &scene_file,
                             const bool                resume)
     : structure(structure)
-    , scene(prm, structure.boundary_pieces)
+    , scene(prm,
+            structure.boundary_pieces,
+            scene_file.empty() ? "" : std::filesystem::path(scene_file).parent_path().string())
     , scene_file(scene_file)
     , pcout(std::cout, dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
     , timer(pcout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times)

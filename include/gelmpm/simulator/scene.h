@@ -50,8 +50,14 @@ namespace GelMPM
     declare_parameters(dealii::ParameterHandler       &prm,
                        const std::vector<std::string> &boundary_pieces);
 
-    /** Parse and check the sections declared by declare_parameters(). Throws InputError. */
-    Scene(dealii::ParameterHandler &prm, const std::vector<std::string> &boundary_pieces);
+    /**
+     * Parse and check the sections declared by declare_parameters(). Throws InputError. Files the
+     * scene names ("Geometry/Mesh file") are taken relative to @p scene_directory (empty: the
+     * current directory).
+     */
+    Scene(dealii::ParameterHandler       &prm,
+          const std::vector<std::string> &boundary_pieces,
+          const std::string              &scene_directory = "");
 
     /**
      * Create the triangulation of the background grid, the material points of the body in their
