@@ -3,7 +3,8 @@
 //
 // Lengths in units of the finger's length L = 1: base width 0.3 at y = 0.2, tip width 0.16 at
 // y = 1.2 with a semicircular cap, so the tip reaches y = 1.28. The sides are slanted and the tip
-// is round: no union of boxes minus disks makes this shape.
+// is round: no union of boxes minus disks makes this shape. The same finger in triangles is
+// tests/particles/gripper_finger_triangles.msh.
 //
 // Physical groups of the boundary (GelMPM selects boundary pieces by their numbers or names):
 //   1 base   (bonded to a rigid support)
@@ -32,8 +33,11 @@ Physical Curve("outer", 3) = {4};
 Physical Curve("tip", 4)   = {3};
 Physical Surface("gel", 5) = {1};
 
-// Quadrilaterals only: GelMPM places its points in quadrilaterals.
-Mesh.RecombineAll         = 1;
+// Quadrilaterals only (with -setnumber triangles 1: triangles only, for the tests).
+If (!Exists(triangles))
+  triangles = 0;
+EndIf
+Mesh.RecombineAll         = !triangles;
 Mesh.Algorithm            = 6;
-Mesh.SubdivisionAlgorithm = 1;
+Mesh.SubdivisionAlgorithm = !triangles;
 Mesh.MshFileVersion       = 4.1;

@@ -7,4 +7,6 @@ set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 top="$(cd "${here}/../.." && pwd)"
 gmsh -2 -format msh41 "${here}/gripper_finger.geo" -o "${top}/prm/gripper_finger.msh" >/dev/null
-echo "wrote prm/gripper_finger.msh"
+gmsh -2 -format msh41 -setnumber triangles 1 "${here}/gripper_finger.geo" \
+  -o "${top}/tests/particles/gripper_finger_triangles.msh" >/dev/null
+echo "wrote prm/gripper_finger.msh and tests/particles/gripper_finger_triangles.msh"

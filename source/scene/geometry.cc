@@ -7,7 +7,9 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_fe.h>
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_in.h>
 
@@ -221,6 +223,38 @@ namespace GelMPM
                     fix);
         }
     }
+
+    /**
+     * The linear element and mapping of a mesh whose cells are all quadrilaterals/hexahedra or,
+     * with @p simplex, all triangles/tetrahedra: what FEValues needs to give the points and JxW.
+     */
+    template <int dim>
+    std::pair<std::unique_ptr<dealii::FiniteElement<dim>>, std::unique_ptr<dealii::Mapping<dim>>>
+    linear_element(const bool simplex)
+    {
+      if (simplex)
+        return {std::make_unique<dealii::FE_SimplexP<dim>>(1),
+                std::make_unique<dealii::MappingFE<dim>>(dealii::FE_SimplexP<dim>(1))};
+      return {std::make_unique<dealii::FE_Q<dim>>(1), std::make_unique<dealii::MappingQ1<dim>>()};
+    }
+
+    /**
+     * @p q Gauss points per direction of a quadrilateral/hexahedron; for a simplex (and
+     * @p simplex), the centroids of its k^dim equal sub-simplices with k the smallest power of two
+     * (deal.II's QIteratedSimplex subdivides by halving the edges) at least @p q: points spread
+     * evenly over it as the Gauss points over a quadrilateral, each with the same weight.
+     */
+    template <int dim>
+    dealii::Quadrature<dim>
+    point_rule(const bool simplex, const unsigned int q)
+    {
+      if (!simplex || dim == 1)
+        return dealii::QGauss<dim>(q);
+      unsigned int k = 1;
+      while (k < q)
+        k *= 2;
+      return dealii::QIteratedSimplex<dim>(dealii::QGaussSimplex<dim>(1), k);
+    }
   } // namespace
 
 
@@ -255,15 +289,16 @@ namespace GelMPM
                       "",
                       dealii::Patterns::Anything(),
                       "Constants for the level set, e.g. 'a=0.5, b=0.3'.");
-    prm.declare_entry("Mesh file",
-                      "",
-                      dealii::Patterns::Anything(),
-                      "Instead of boxes: the body is this Gmsh mesh (.msh, format 2 or 4, "
-                      "quadrilaterals in 2D, hexahedra in 3D; relative to the directory of the "
-                      "scene file). Volume points at the Gauss points of its cells (V_0 = JxW), "
-                      "surface points at the Gauss points of its boundary faces (N_0 A_0 = "
-                      "normal x JxW); a boundary piece may select the faces of its physical "
-                      "groups: 'Selector = boundary id 3'. Empty: not used.");
+    prm.declare_entry(
+      "Mesh file",
+      "",
+      dealii::Patterns::Anything(),
+      "Instead of boxes: the body is this Gmsh mesh (.msh, ASCII format 2.2 or "
+      "4.1, all quadrilaterals or all triangles in 2D, all hexahedra or all "
+      "tetrahedra in 3D; relative to the directory of the scene file). Volume points at the Gauss points of its cells (V_0 = JxW), "
+      "surface points at the Gauss points of its boundary faces (N_0 A_0 = "
+      "normal x JxW); a boundary piece may select the faces of its physical "
+      "groups: 'Selector = boundary id 3'. Empty: not used.");
     prm.leave_subsection();
   }
 
@@ -451,12 +486,17 @@ namespace GelMPM
             entry,
             "'" + file_name + "' holds no " + std::to_string(dim) + "D cells",
             "mesh the body in " + std::to_string(dim) + "D, or set 'Dimension' to the mesh's");
-    require(mesh->all_reference_cells_are_hyper_cube(),
+    // One kind of cell, so that one element and mapping serve every cell.
+    require(mesh->all_reference_cells_are_hyper_cube() || mesh->all_reference_cells_are_simplex(),
             entry,
-            "'" + file_name + "' has " + (dim == 2 ? "triangles" : "cells that are not hexahedra") +
-              ", but GelMPM places points in " + (dim == 2 ? "quadrilaterals" : "hexahedra") +
-              " only",
-            "recombine the mesh in Gmsh (Mesh.RecombineAll = 1; Mesh.SubdivisionAlgorithm = 1)");
+            "'" + file_name + "' mixes " +
+              (dim == 2 ? "triangles and quadrilaterals" : "kinds of cells") +
+              ", but GelMPM reads meshes of one kind of cell",
+            "mesh the body with " +
+              std::string(dim == 2
+                            ? "quadrilaterals or triangles only (Gmsh: Mesh.RecombineAll = 1; "
+                              "Mesh.SubdivisionAlgorithm = 1 for quadrilaterals only)"
+                            : "hexahedra or tetrahedra only"));
     std::ifstream in(file_name);
     group_names = read_physical_names(in, dim - 1);
     mesh_       = mesh;
@@ -994,8 +1034,8 @@ namespace GelMPM
   Geometry<dim>::mesh_volume_elements(const unsigned int points_per_direction,
                                       const double       spacing) const
   {
-    const dealii::FE_Q<dim>                                        fe(1);
-    const dealii::MappingQ1<dim>                                   mapping;
+    const bool simplex       = mesh_->all_reference_cells_are_simplex();
+    const auto [fe, mapping] = linear_element<dim>(simplex);
     std::map<unsigned int, std::unique_ptr<dealii::FEValues<dim>>> values;
     std::vector<VolumeElement>                                     elements;
     for (const auto &cell : mesh_->active_cell_iterators())
@@ -1005,15 +1045,24 @@ namespace GelMPM
           longest = std::max(longest, cell->line(l)->diameter());
         // As many points per direction as sub-cells of the background grid would fit along the
         // longest edge: the density of a box body's points. (Unlike surface elements, no single
-        // volume point's extent is prescribed.)
-        const unsigned int q =
-          std::max(points_per_direction,
-                   static_cast<unsigned int>(std::ceil(longest / spacing - 1e-9)));
+        // volume point's extent is prescribed.) A simplex is divided into k^dim equal ones with
+        // k a power of two: as many as make each no larger than a sub-cell, and at least the
+        // share of a simplex (1/dim!) of the n^dim points of a quadrilateral/hexahedron.
+        unsigned int q = std::max(points_per_direction,
+                                  static_cast<unsigned int>(std::ceil(longest / spacing - 1e-9)));
+        if (simplex)
+          {
+            const double target =
+              std::max(std::pow(points_per_direction, dim) / (dim == 2 ? 2. : 6.),
+                       cell->measure() / std::pow(spacing, dim));
+            for (q = 1; std::pow(q, dim) < target; q *= 2)
+              ;
+          }
         auto &fe_values = values[q];
         if (!fe_values)
-          fe_values = std::make_unique<dealii::FEValues<dim>>(mapping,
-                                                              fe,
-                                                              dealii::QGauss<dim>(q),
+          fe_values = std::make_unique<dealii::FEValues<dim>>(*mapping,
+                                                              *fe,
+                                                              point_rule<dim>(simplex, q),
                                                               dealii::update_quadrature_points |
                                                                 dealii::update_JxW_values);
         fe_values->reinit(cell);
@@ -1028,8 +1077,8 @@ namespace GelMPM
   std::vector<typename Geometry<dim>::SurfaceElement>
   Geometry<dim>::mesh_surface_elements(const double spacing) const
   {
-    const dealii::FE_Q<dim>                                            fe(1);
-    const dealii::MappingQ1<dim>                                       mapping;
+    const bool simplex       = mesh_->all_reference_cells_are_simplex();
+    const auto [fe, mapping] = linear_element<dim>(simplex);
     std::map<unsigned int, std::unique_ptr<dealii::FEFaceValues<dim>>> values;
     std::vector<SurfaceElement>                                        elements;
     for (const auto &cell : mesh_->active_cell_iterators())
@@ -1048,9 +1097,9 @@ namespace GelMPM
           auto              &fe_values = values[q];
           if (!fe_values)
             fe_values =
-              std::make_unique<dealii::FEFaceValues<dim>>(mapping,
-                                                          fe,
-                                                          dealii::QGauss<dim - 1>(q),
+              std::make_unique<dealii::FEFaceValues<dim>>(*mapping,
+                                                          *fe,
+                                                          point_rule<dim - 1>(simplex, q),
                                                           dealii::update_quadrature_points |
                                                             dealii::update_JxW_values |
                                                             dealii::update_normal_vectors);

@@ -3,11 +3,12 @@
 //   = the mesh's area and sum x (x) N_0 A_0 = area I to round-off (Gauss points integrate the
 //   bilinear Jacobians exactly), sum N_0 A_0 = 0 to round-off, the area against the finger's exact
 //   shape within the area between the cap and its chords, the length of each physical group, and
-//   the boundary pieces selected by group number and name, as a scene generates them;
+//   the boundary pieces selected by group number and name, as a scene generates them; the same
+//   sums for the finger in triangles (centroids of equal sub-triangles);
 // - 3D, a cylinder of hexahedra written by deal.II's GridOut in Gmsh format: sum V_0 = the mesh's
 //   volume, sum N_0 A_0 = 0 and sum x (x) N_0 A_0 = volume I to round-off (the bilinear faces'
 //   normals are integrated exactly), and the volume that of the prism over the octagon that
-//   the mesh's round surface is.
+//   the mesh's round surface is; the same sums on a tetrahedron.
 #include <gelmpm/particles/material_point_generator.h>
 
 #include <deal.II/base/mpi.h>
@@ -114,6 +115,40 @@ main(int argc, char **argv)
     report("no surface element longer than 0.01", longest <= 0.01 * (1. + 1e-12));
   }
 
+  std::cout << "2D: the same finger in triangles (tests/particles/gripper_finger_triangles.msh):"
+            << std::endl;
+  {
+    Geometry<2> geometry;
+    geometry.read_mesh(std::string(SOURCE_DIR) + "/gripper_finger_triangles.msh");
+    const double area   = mesh_measure(geometry);
+    double       volume = 0.;
+    unsigned int n      = 0;
+    for (const auto &e : geometry.mesh_volume_elements(3, 0.01))
+      {
+        volume += e.volume;
+        ++n;
+      }
+    Tensor<1, 2>                  sum_na;
+    Tensor<2, 2>                  moment;
+    std::map<std::string, double> length_of_group;
+    for (const auto &e : geometry.mesh_surface_elements(0.01))
+      {
+        sum_na += e.normal_area;
+        moment += outer_product(e.centre, e.normal_area);
+        length_of_group[e.group_name] += e.normal_area.norm();
+      }
+    std::cout << "  " << geometry.mesh().n_active_cells() << " triangles, area " << area << ", "
+              << n << " volume points" << std::endl;
+    report("sum V_0 = the mesh's area to 1e-12", std::abs(volume - area) < 1e-12 * area);
+    report("sum N_0 A_0 = 0 to 1e-12", sum_na.norm() < 1e-12);
+    report("sum x (x) N_0 A_0 = area I to 1e-12",
+           (moment - area * unit_tensor<2>()).norm() < 1e-12 * area);
+    report("base 0.3, inner and outer sides sqrt(0.07^2 + 1) to 1e-12",
+           std::abs(length_of_group["base"] - 0.3) < 1e-12 &&
+             std::abs(length_of_group["inner"] - std::hypot(0.07, 1.)) < 1e-12 &&
+             std::abs(length_of_group["outer"] - std::hypot(0.07, 1.)) < 1e-12);
+  }
+
   std::cout << "2D: the finger as a scene generates it, pieces 'base' (boundary id 1) and "
                "'inner' (boundary id inner):"
             << std::endl;
@@ -218,6 +253,40 @@ main(int argc, char **argv)
     std::cout << "  prism over the inscribed octagon: volume " << octagon << std::endl;
     report("sum V_0 = the volume of the prism over the inscribed octagon to 1e-12",
            std::abs(volume - octagon) < 1e-12);
+  }
+
+  std::cout << "3D: the tetrahedron with corners 0, e_x, e_y, e_z (one tetrahedron, written here):"
+            << std::endl;
+  {
+    {
+      std::ofstream out("tetrahedron.msh");
+      out << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 0 1 0\n"
+             "4 0 0 1\n$EndNodes\n$Elements\n1\n1 4 2 1 1 1 2 3 4\n$EndElements\n";
+    }
+    Geometry<3> geometry;
+    geometry.read_mesh("tetrahedron.msh");
+    double       volume = 0.;
+    unsigned int n      = 0;
+    for (const auto &e : geometry.mesh_volume_elements(3, 0.2))
+      {
+        volume += e.volume;
+        ++n;
+      }
+    Tensor<1, 3> sum_na;
+    Tensor<2, 3> moment;
+    double       area = 0.;
+    for (const auto &e : geometry.mesh_surface_elements(0.2))
+      {
+        sum_na += e.normal_area;
+        moment += outer_product(e.centre, e.normal_area);
+        area += e.normal_area.norm();
+      }
+    std::cout << "  " << n << " volume points, surface " << area << std::endl;
+    report("sum V_0 = 1/6 to 1e-12", std::abs(volume - 1. / 6.) < 1e-12);
+    report("sum A_0 = 3/2 + sqrt(3)/2 to 1e-12", std::abs(area - 1.5 - std::sqrt(3.) / 2.) < 1e-12);
+    report("sum N_0 A_0 = 0 to 1e-12", sum_na.norm() < 1e-12);
+    report("sum x (x) N_0 A_0 = volume I to 1e-12",
+           (moment - (1. / 6.) * unit_tensor<3>()).norm() < 1e-12);
   }
 
   std::cout << (all_ok ? "all mesh body checks passed" : "SOME MESH BODY CHECKS FAILED")

@@ -25,8 +25,9 @@ namespace GelMPM
    *   its corners (§4.4).
    * - **level set**: the set where an expression phi(x, y[, z]) is negative ("Level set",
    *   "Level set constants"), inside the background grid.
-   * - **mesh**: the cells of a Gmsh mesh ("Mesh file"), whose boundary faces carry the boundary
-   *   ids of its physical groups.
+   * - **mesh**: the cells of a Gmsh mesh ("Mesh file"; all quadrilaterals or all triangles in 2D,
+   *   all hexahedra or all tetrahedra in 3D), whose boundary faces carry the boundary ids of its
+   *   physical groups.
    *
    * A level set and a mesh file exclude each other and the boxes: with either of them, "Boxes"
    * must keep its default and "Holes" be empty (an InputError names the entry otherwise). Holes
@@ -155,9 +156,12 @@ namespace GelMPM
                      const dealii::Point<dim> &upper = dealii::Point<dim>()) const;
 
     /**
-     * Mesh bodies: the Gauss points of every cell with V_0 = JxW. A cell gets q^dim points, with
-     * q = max(@p points_per_direction, ceil(longest edge / @p spacing)): with @p spacing the
-     * sub-cell size h/n, the points are about as dense as those of a box body.
+     * Mesh bodies: the Gauss points of every cell with V_0 = JxW. A quadrilateral/hexahedron gets
+     * q^dim points, with q = max(@p points_per_direction, ceil(longest edge / @p spacing)): with
+     * @p spacing the sub-cell size h/n, the points are about as dense as those of a box body. A
+     * triangle/tetrahedron gets the centroids of k^dim equal sub-simplices, k the smallest power of
+     * two for which they are no larger than a sub-cell and at least (points_per_direction)^dim/dim!
+     * many.
      */
     std::vector<VolumeElement>
     mesh_volume_elements(const unsigned int points_per_direction, const double spacing) const;
@@ -166,8 +170,9 @@ namespace GelMPM
      * Mesh bodies: the Gauss points of every boundary face with N_0 A_0 = the outward unit normal
      * times JxW, the face's boundary id and group name. A face gets q^(dim-1) points with q the
      * smallest number for which no Gauss point of its longest edge stands for more than
-     * @p spacing of it: in 2D no element is longer than @p spacing, as on boxes. Works in 2D and
-     * 3D.
+     * @p spacing of it: in 2D no element is longer than @p spacing, as on boxes (a triangular
+     * face in 3D: the centroids of k^2 equal sub-triangles, k the power of two at least q). Works
+     * in 2D and 3D.
      */
     std::vector<SurfaceElement>
     mesh_surface_elements(const double spacing) const;
