@@ -68,16 +68,63 @@ namespace GelMPM
       for (const auto &e : elements)
         {
           const dealii::Tensor<1, dim> normal = e.normal_area / e.normal_area.norm();
-          if (!piece.selects(e.centre, normal))
+          if (!piece.selects(e.centre, normal, e.boundary_id, e.group_name))
             continue;
-          const auto &first =
-            boundary_conditions.piece(boundary_conditions.piece_of(e.centre, normal));
+          const auto &first = boundary_conditions.piece(
+            boundary_conditions.piece_of(e.centre, normal, e.boundary_id, e.group_name));
           throw InputError("Boundary conditions/" + piece.name + "/Selector",
                            "overlaps the selector of the earlier piece '" + first.name +
                              "', which takes all its points, e.g. the one at " + text(e.centre) +
                              " (a point belongs to the first piece that selects it)",
                            "make the selectors of '" + first.name + "' and '" + piece.name +
                              "' disjoint");
+        }
+    }
+
+    /**
+     * Throw InputError if a piece selects by the physical groups of a mesh ('boundary id') but
+     * the body is not a mesh, or names a group that is not on the mesh's boundary.
+     */
+    template <int dim>
+    void
+    check_boundary_groups(const Geometry<dim> &geometry, const BoundaryConditions<dim> &bcs)
+    {
+      for (unsigned int i = 0; i < bcs.n_pieces(); ++i)
+        {
+          const auto &piece = bcs.piece(i);
+          if (piece.boundary_groups().empty())
+            continue;
+          const std::string entry = "Boundary conditions/" + piece.name + "/Selector";
+          require(geometry.source() == Geometry<dim>::Source::mesh,
+                  entry,
+                  "selects by 'boundary id', but the body is not a mesh ('" + geometry.entry() +
+                    "' gives it)",
+                  "select by position and normal, e.g. 'ny > 0.5', or give the body as "
+                  "'Geometry/Mesh file'");
+          const auto  ids   = geometry.mesh_boundary_ids();
+          const auto &names = geometry.mesh_group_names();
+          std::string known;
+          for (const auto id : ids)
+            {
+              known += (known.empty() ? "" : ", ") + std::to_string(id);
+              if (const auto n = names.find(id); n != names.end())
+                known += " (" + n->second + ")";
+            }
+          for (const auto &group : piece.boundary_groups())
+            {
+              bool found = false;
+              for (const auto id : ids)
+                {
+                  const auto n = names.find(id);
+                  found |= group == std::to_string(id) || (n != names.end() && n->second == group);
+                }
+              require(found,
+                      entry,
+                      "names the physical group '" + group +
+                        "', which is not on the boundary of the mesh (its boundary groups: " +
+                        known + ")",
+                      "name one of these groups by its number or name");
+            }
         }
     }
   } // namespace
@@ -114,66 +161,92 @@ namespace GelMPM
       ++next_id;
     };
 
-    // Volume points at sub-cell centres.
-    const unsigned int n          = points_per_cell;
-    double             sub_volume = 1.;
-    for (unsigned int d = 0; d < dim; ++d)
-      sub_volume *= grid.cell_size(d) / n;
-    unsigned int n_sub = 1, n_cells = 1;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        n_sub *= n;
-        n_cells *= grid.n_cells[d];
-      }
-    bool in_boxes = false;
-    for (unsigned int c = 0; c < n_cells; ++c)
-      for (unsigned int s = 0; s < n_sub; ++s)
-        {
-          dealii::Point<dim> x;
-          unsigned int       rest_c = c, rest_s = s;
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              const unsigned int ic = rest_c % grid.n_cells[d], is = rest_s % n;
-              rest_c /= grid.n_cells[d];
-              rest_s /= n;
-              x[d] = grid.lower[d] + (ic + (is + 0.5) / n) * grid.cell_size(d);
-            }
-          in_boxes |= geometry.inside_boxes(x);
-          if (!geometry.inside(x))
-            continue;
-          std::fill(properties.begin(), properties.end(), 0.);
-          properties[Layout::kind]      = static_cast<double>(PointKind::volume);
-          properties[Layout::piece]     = -1;
-          properties[Layout::measure_0] = properties[Layout::measure_n] = sub_volume;
-          insert(x);
-        }
-    require(next_id > 0 || !in_boxes,
-            "Geometry/Holes",
-            "leaves nothing of the body: the holes remove the whole body (no volume point of "
-            "'Geometry/Boxes' lies outside them)",
-            "make the holes smaller or move them off the body ('Geometry/Boxes')");
-    require(next_id > 0,
-            "Geometry/Boxes",
-            "places no volume point inside the background grid",
-            "put the body inside 'Background grid'");
-
-    // The body must lie in the grid: check the boundary (it bounds the body).
     double h_min = grid.cell_size(0);
     for (unsigned int d = 1; d < dim; ++d)
       h_min = std::min(h_min, grid.cell_size(d));
+
+    const auto insert_volume_point = [&](const dealii::Point<dim> &x, const double volume) {
+      std::fill(properties.begin(), properties.end(), 0.);
+      properties[Layout::kind]      = static_cast<double>(PointKind::volume);
+      properties[Layout::piece]     = -1;
+      properties[Layout::measure_0] = properties[Layout::measure_n] = volume;
+      insert(x);
+    };
+
+    if (geometry.source() == Geometry<dim>::Source::mesh)
+      // At the Gauss points of the mesh cells, as densely as the sub-cells of a box body.
+      for (const auto &e : geometry.mesh_volume_elements(points_per_cell, h_min / points_per_cell))
+        {
+          require(grid.contains(e.centre),
+                  geometry.entry(),
+                  "puts the body outside the background grid, e.g. at " + text(e.centre),
+                  "enlarge 'Background grid/Lower corner' and 'Upper corner' or move the body");
+          insert_volume_point(e.centre, e.volume);
+        }
+    else
+      {
+        // At sub-cell centres.
+        const unsigned int n          = points_per_cell;
+        double             sub_volume = 1.;
+        for (unsigned int d = 0; d < dim; ++d)
+          sub_volume *= grid.cell_size(d) / n;
+        unsigned int n_sub = 1, n_cells = 1;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            n_sub *= n;
+            n_cells *= grid.n_cells[d];
+          }
+        bool in_boxes = false;
+        for (unsigned int c = 0; c < n_cells; ++c)
+          for (unsigned int s = 0; s < n_sub; ++s)
+            {
+              dealii::Point<dim> x;
+              unsigned int       rest_c = c, rest_s = s;
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  const unsigned int ic = rest_c % grid.n_cells[d], is = rest_s % n;
+                  rest_c /= grid.n_cells[d];
+                  rest_s /= n;
+                  x[d] = grid.lower[d] + (ic + (is + 0.5) / n) * grid.cell_size(d);
+                }
+              in_boxes |= geometry.inside_boxes(x);
+              if (geometry.inside(x))
+                insert_volume_point(x, sub_volume);
+            }
+        require(next_id > 0 || !in_boxes,
+                "Geometry/Holes",
+                "leaves nothing of the body: the holes remove the whole body (no volume point of "
+                "'Geometry/Boxes' lies outside them)",
+                "make the holes smaller or move them off the body ('Geometry/Boxes')");
+        require(next_id > 0 || geometry.source() != Geometry<dim>::Source::level_set,
+                "Geometry/Level set",
+                "is negative nowhere inside the background grid (at none of the " +
+                  std::to_string(n_cells * n_sub) + " sub-cell centres), so there is no body",
+                "check the sign (the body is where the expression is negative) and the position "
+                "against 'Background grid'");
+        require(next_id > 0,
+                "Geometry/Boxes",
+                "places no volume point inside the background grid",
+                "put the body inside 'Background grid'");
+      }
+
+    // The body must lie in the grid: check the boundary (it bounds the body).
+    check_boundary_groups(geometry, boundary_conditions);
     if constexpr (dim == 2)
       {
-        const auto elements = geometry.surface_elements(h_min / surface_points_per_edge);
+        const auto elements =
+          geometry.surface_elements(h_min / surface_points_per_edge, grid.lower, grid.upper);
         std::vector<unsigned int> count(boundary_conditions.n_pieces(), 0);
         for (const auto &e : elements)
           {
             require(grid.contains(e.centre),
-                    "Geometry/Boxes",
+                    geometry.entry(),
                     "puts the body outside the background grid, e.g. at " + text(e.centre),
                     "enlarge 'Background grid/Lower corner' and 'Upper corner' or move the body");
             const double                 area   = e.normal_area.norm();
             const dealii::Tensor<1, dim> normal = e.normal_area / area;
-            const int                    piece  = boundary_conditions.piece_of(e.centre, normal);
+            const int                    piece =
+              boundary_conditions.piece_of(e.centre, normal, e.boundary_id, e.group_name);
             std::fill(properties.begin(), properties.end(), 0.);
             if (piece >= 0)
               {
@@ -199,7 +272,9 @@ namespace GelMPM
           require(count[i] > 0,
                   "Boundary conditions/" + boundary_conditions.piece(i).name + "/Selector",
                   "selects no point of the body's boundary",
-                  "check the expression against the geometry (variables x, y, nx, ny)");
+                  boundary_conditions.piece(i).boundary_groups().empty()
+                    ? "check the expression against the geometry (variables x, y, nx, ny)"
+                    : "check the groups against the mesh's physical groups");
       }
     else
       require(boundary_conditions.n_pieces() == 0,

@@ -1,6 +1,7 @@
 #include <gelmpm/core/input_error.h>
 #include <gelmpm/core/parameters.h>
 #include <gelmpm/scene/boundary_conditions.h>
+#include <gelmpm/scene/expression.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/lac/vector.h>
@@ -21,86 +22,6 @@ namespace GelMPM
       if (dim == 3)
         return "x,y,z";
       return with_normal ? "x,y,nx,ny" : "x,y";
-    }
-
-    /**
-     * Keeps std::cerr quiet while alive: deal.II's expression parser writes its own diagnostics
-     * there before throwing, and the InputError that follows says it once, in the user's terms.
-     */
-    class QuietCerr
-    {
-    public:
-      QuietCerr()
-        : saved(std::cerr.rdbuf(sink.rdbuf()))
-      {}
-      ~QuietCerr()
-      {
-        std::cerr.rdbuf(saved);
-      }
-
-    private:
-      std::ostringstream sink;
-      std::streambuf    *saved;
-    };
-
-    bool
-    is_name(const std::string &name)
-    {
-      if (name.empty() || !(std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_'))
-        return false;
-      for (const char c : name)
-        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_'))
-          return false;
-      return true;
-    }
-
-    /**
-     * The constants 'name=value, ...' of @p text, checked here because deal.II's expression
-     * parser aborts the program on a name that is not an identifier or that shadows a variable.
-     */
-    std::map<std::string, double>
-    parse_constants(const std::string &text,
-                    const std::string &variable_names,
-                    const std::string &entry)
-    {
-      const auto variables = dealii::Utilities::split_string_list(variable_names);
-      std::map<std::string, double> constants;
-      for (const auto &item : dealii::Utilities::split_string_list(text, ','))
-        {
-          const auto kv = dealii::Utilities::split_string_list(item, '=');
-          require(kv.size() == 2,
-                  entry,
-                  "has the item '" + item + "' that is not 'name=value'",
-                  "write e.g. 'H=1, tol=1e-9'");
-          require(is_name(kv[0]),
-                  entry,
-                  "has the constant name '" + kv[0] + "', which is not a name",
-                  "start the name with a letter and use letters, digits and '_' only");
-          require(std::find(variables.begin(), variables.end(), kv[0]) == variables.end(),
-                  entry,
-                  "has the constant '" + kv[0] + "', which is also a variable (" + variable_names +
-                    ")",
-                  "rename the constant");
-          require(constants.count(kv[0]) == 0,
-                  entry,
-                  "gives the constant '" + kv[0] + "' twice",
-                  "give each constant once");
-          double value;
-          try
-            {
-              value = dealii::Utilities::string_to_double(kv[1]);
-            }
-          catch (...)
-            {
-              throw InputError(entry, "has a non-number in '" + item + "'", "give numbers");
-            }
-          require(std::isfinite(value),
-                  entry,
-                  "has the value '" + kv[1] + "', which is not finite, in '" + item + "'",
-                  "give a finite number");
-          constants[kv[0]] = value;
-        }
-      return constants;
     }
 
     std::string
@@ -143,7 +64,11 @@ namespace GelMPM
                       "Expression in the initial position and outward normal of a surface point (" +
                         variables(dim, true) +
                         "); the point belongs to this piece where it is nonzero, e.g. 'ny > 0.5' "
-                        "for a top face, 'abs(x) < 1e-9' for a left face.");
+                        "for a top face, 'abs(x) < 1e-9' for a left face. For a body from "
+                        "'Geometry/Mesh file' also 'boundary id <groups>': the points on the "
+                        "boundary faces of these physical groups of the mesh, each a number (its "
+                        "boundary id) or a name from the file's $PhysicalNames, separated by "
+                        "commas, e.g. 'boundary id 3' or 'boundary id tip, 4'.");
     prm.declare_entry("Selector constants",
                       "",
                       Patterns::Anything(),
@@ -199,9 +124,9 @@ namespace GelMPM
         *targets[f] = std::make_unique<dealii::Functions::ParsedFunction<dim>>(n_components[f]);
         try
           {
-            parse_constants(prm.get("Function constants"),
-                            prm.get("Variable names"),
-                            where + "/" + function_names[f] + "/Function constants");
+            parse_expression_constants(prm.get("Function constants"),
+                                       prm.get("Variable names"),
+                                       where + "/" + function_names[f] + "/Function constants");
           }
         catch (...)
           {
@@ -231,9 +156,38 @@ namespace GelMPM
       }
     prm.leave_subsection();
 
-    const auto constants =
-      parse_constants(selector_constants, variables(dim, true), where + "/Selector constants");
-    selector = std::make_unique<dealii::FunctionParser<3>>(1);
+    // 'boundary id <groups>' selects by the physical groups of a mesh; which groups exist is
+    // known only once the mesh is read (MaterialPointGenerator checks them).
+    boundary_groups_.clear();
+    const std::string keyword = "boundary id";
+    if (const std::string trimmed = dealii::Utilities::trim(selector_text);
+        trimmed.rfind(keyword, 0) == 0)
+      {
+        const std::string list = trimmed.substr(keyword.size());
+        require(!list.empty() && std::isspace(static_cast<unsigned char>(list[0])),
+                where + "/Selector",
+                "'" + selector_text + "' is not 'boundary id <groups>'",
+                "write e.g. 'boundary id 3' or 'boundary id tip, 4'");
+        for (const auto &group : dealii::Utilities::split_string_list(list, ','))
+          {
+            require(!group.empty() && group.find_first_of(" \t\"") == std::string::npos,
+                    where + "/Selector",
+                    "'" + selector_text + "' has the group '" + group +
+                      "', which is neither a number nor a name",
+                    "separate the groups by commas, e.g. 'boundary id tip, 4'");
+            boundary_groups_.push_back(group);
+          }
+        require(!boundary_groups_.empty(),
+                where + "/Selector",
+                "'" + selector_text + "' names no group",
+                "write e.g. 'boundary id 3'");
+        return;
+      }
+
+    const auto constants = parse_expression_constants(selector_constants,
+                                                      variables(dim, true),
+                                                      where + "/Selector constants");
+    selector             = std::make_unique<dealii::FunctionParser<3>>(1);
     try
       {
         const QuietCerr quiet;
@@ -252,9 +206,21 @@ namespace GelMPM
 
   template <int dim>
   bool
-  BoundaryPiece<dim>::selects(const dealii::Point<dim>     &x,
-                              const dealii::Tensor<1, dim> &normal) const
+  BoundaryPiece<dim>::selects(const dealii::Point<dim>        &x,
+                              const dealii::Tensor<1, dim>    &normal,
+                              const dealii::types::boundary_id boundary_id,
+                              const std::string               &group_name) const
   {
+    if (!boundary_groups_.empty())
+      {
+        if (boundary_id == dealii::numbers::invalid_boundary_id)
+          return false;
+        const std::string id = std::to_string(boundary_id);
+        for (const auto &group : boundary_groups_)
+          if (group == id || (!group_name.empty() && group == group_name))
+            return true;
+        return false;
+      }
     dealii::Point<3> p;
     for (unsigned int d = 0; d < dim; ++d)
       p[d] = x[d];
@@ -270,6 +236,14 @@ namespace GelMPM
                          format_point(&p[0], dim) + " with normal " + format_point(&normal[0], dim),
                        "write a condition that is 0 or 1 everywhere, e.g. 'ny > 0.5'");
     return value != 0.;
+  }
+
+
+  template <int dim>
+  const std::vector<std::string> &
+  BoundaryPiece<dim>::boundary_groups() const
+  {
+    return boundary_groups_;
   }
 
 
@@ -436,11 +410,13 @@ namespace GelMPM
 
   template <int dim>
   int
-  BoundaryConditions<dim>::piece_of(const dealii::Point<dim>     &x,
-                                    const dealii::Tensor<1, dim> &normal) const
+  BoundaryConditions<dim>::piece_of(const dealii::Point<dim>        &x,
+                                    const dealii::Tensor<1, dim>    &normal,
+                                    const dealii::types::boundary_id boundary_id,
+                                    const std::string               &group_name) const
   {
     for (unsigned int i = 0; i < pieces_.size(); ++i)
-      if (pieces_[i]->selects(x, normal))
+      if (pieces_[i]->selects(x, normal, boundary_id, group_name))
         return i;
     return -1;
   }

@@ -25,12 +25,13 @@ namespace GelMPM
   template <int dim>
   Scene<dim>::Scene(dealii::ParameterHandler       &prm,
                     const std::vector<std::string> &boundary_pieces,
+                    const std::string              &scene_directory,
                     const MPI_Comm                  communicator)
     : communicator(communicator)
   {
     material.parse_parameters(prm);
     grid.parse_parameters(prm);
-    geometry.parse_parameters(prm);
+    geometry.parse_parameters(prm, scene_directory);
     boundary_conditions.parse_parameters(prm, boundary_pieces);
     generator.parse_parameters(prm);
     discretisation.parse_parameters(prm);

@@ -44,7 +44,9 @@ namespace GelMPM
                             const std::string        &scene_file,
                             const bool                resume)
     : structure(structure)
-    , scene(prm, structure.boundary_pieces)
+    , scene(prm,
+            structure.boundary_pieces,
+            scene_file.empty() ? "" : std::filesystem::path(scene_file).parent_path().string())
     , scene_file(scene_file)
     , pcout(std::cout, dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
     , pcerr(std::cerr, dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)

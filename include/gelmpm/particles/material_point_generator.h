@@ -16,9 +16,12 @@ namespace GelMPM
    * (paper §3.2) into a deal.II ParticleHandler with the PropertyLayout.
    *
    * Volume points: n^dim per background cell at the centres of the n^dim sub-cells that lie inside
-   * the body, each with V_0 = the sub-cell volume (area per unit thickness in 2D). Surface points:
-   * one per boundary element of length at most h/n_s (Geometry::surface_elements), with N_0 A_0,
-   * the boundary piece that selects it, and the kind that follows from that piece's conditions.
+   * the body (boxes, level set), each with V_0 = the sub-cell volume (area per unit thickness in
+   * 2D); for a body from a mesh, the Gauss points of its cells with V_0 = JxW, at least n per
+   * direction and cell and no farther apart than about h/n (Geometry::mesh_volume_elements()).
+   * Surface points: one per boundary element of length at most h/n_s
+   * (Geometry::surface_elements()), with N_0 A_0, the boundary piece that selects it, and the
+   * kind that follows from that piece's conditions.
    * All points start in the stress-free initial state: F = lambda_0 I, mu = mu_0.
    */
   template <int dim>
@@ -34,8 +37,10 @@ namespace GelMPM
     /**
      * Fill @p particles (initialised on @p tria, the grid's triangulation, with
      * PropertyLayout<dim>::n_properties properties). Throws InputError when the body reaches
-     * outside the grid ("Geometry/Boxes"), when a boundary piece selects no surface point
-     * ("Boundary conditions/<name>/Selector"), or when no volume point lies in the body.
+     * outside the grid (naming Geometry::entry()), when a boundary piece selects no surface
+     * point, selects by the physical groups of a body that is not a mesh or names a group the
+     * mesh does not have ("Boundary conditions/<name>/Selector"), or when no volume point lies in
+     * the body.
      */
     void
     generate(const Geometry<dim>                     &geometry,

@@ -4,6 +4,7 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/parsed_function.h>
+#include <deal.II/base/types.h>
 
 #include <memory>
 #include <string>
@@ -16,7 +17,10 @@ namespace GelMPM
    * "Boundary conditions/<name>".
    *
    * A surface point belongs to the piece when the piece's "Selector", an expression in the point's
-   * initial position and outward normal (x, y, nx, ny in 2D; x, y, z in 3D), is nonzero.
+   * initial position and outward normal (x, y, nx, ny in 2D; x, y, z in 3D), is nonzero. For a
+   * body from a mesh file the selector may instead be `boundary id <groups>`: the point belongs to
+   * the piece when it lies on a boundary face of one of the listed physical groups of the mesh,
+   * each given by its number (the boundary id) or its name in the file's $PhysicalNames.
    *
    * Displacement: `free` (traction "Traction" on the whole boundary), `fixed` (u = ū),
    * `normal` (u·N = ū·N: the paper's roller/symmetry condition; traction on the tangential part),
@@ -53,9 +57,23 @@ namespace GelMPM
     void
     parse_parameters(dealii::ParameterHandler &prm, const std::string &name);
 
-    /** Whether a surface point at @p x (initial position) with outward @p normal belongs here. */
+    /**
+     * Whether a surface point at @p x (initial position) with outward @p normal belongs here;
+     * @p boundary_id and @p group_name are those of the mesh face the point lies on (invalid and
+     * empty for a body that is not a mesh), read only by a `boundary id` selector.
+     */
     bool
-    selects(const dealii::Point<dim> &x, const dealii::Tensor<1, dim> &normal) const;
+    selects(const dealii::Point<dim>        &x,
+            const dealii::Tensor<1, dim>    &normal,
+            const dealii::types::boundary_id boundary_id = dealii::numbers::invalid_boundary_id,
+            const std::string               &group_name  = "") const;
+
+    /**
+     * The physical groups (numbers or names) of a `boundary id` selector; empty for a selector
+     * expression.
+     */
+    const std::vector<std::string> &
+    boundary_groups() const;
 
     bool
     displacement_prescribed() const;
@@ -95,6 +113,7 @@ namespace GelMPM
     // selector's variables x, y, nx, ny are passed as (x, y, nx) and time ny. In 3D it sees x, y,
     // z.
     std::unique_ptr<dealii::FunctionParser<3>>              selector;
+    std::vector<std::string>                                boundary_groups_;
     std::unique_ptr<dealii::Functions::ParsedFunction<dim>> displacement_value_;
     std::unique_ptr<dealii::Functions::ParsedFunction<dim>> traction_;
     std::unique_ptr<dealii::Functions::ParsedFunction<dim>> chemical_potential_value_;
@@ -124,9 +143,15 @@ namespace GelMPM
     const BoundaryPiece<dim> &
     piece(const unsigned int i) const;
 
-    /** Index of the first piece selecting the point, or -1. */
+    /**
+     * Index of the first piece selecting the point, or -1 (@p boundary_id, @p group_name: see
+     * BoundaryPiece::selects()).
+     */
     int
-    piece_of(const dealii::Point<dim> &x, const dealii::Tensor<1, dim> &normal) const;
+    piece_of(const dealii::Point<dim>        &x,
+             const dealii::Tensor<1, dim>    &normal,
+             const dealii::types::boundary_id boundary_id = dealii::numbers::invalid_boundary_id,
+             const std::string               &group_name  = "") const;
 
     /** Set the time (tau_d) of every piece's functions. */
     void

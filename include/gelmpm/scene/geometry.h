@@ -1,36 +1,85 @@
 #ifndef gelmpm_scene_geometry_h
 #define gelmpm_scene_geometry_h
 
+#include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
+#include <deal.II/base/types.h>
+#include <deal.II/grid/tria.h>
 
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
 #include <vector>
 
 namespace GelMPM
 {
   /**
    * @brief The "Geometry" section: the body in its initial (pre-swollen) configuration Omega_0,
-   * as a union of boxes minus balls. Enough for the paper's scenes: a block (§4.1), a square
-   * (§4.2), a column (§4.3), a square cell with quarter-circle holes at its corners (§4.4).
+   * given in one of three ways:
+   *
+   * - **boxes**: a union of boxes minus balls ("Boxes", "Holes"). Enough for the paper's scenes:
+   *   a block (§4.1), a square (§4.2), a column (§4.3), a square cell with quarter-circle holes at
+   *   its corners (§4.4).
+   * - **level set**: the set where an expression phi(x, y[, z]) is negative ("Level set",
+   *   "Level set constants"), inside the background grid.
+   * - **mesh**: the cells of a Gmsh mesh ("Mesh file"; all quadrilaterals or all triangles in 2D,
+   *   all hexahedra or all tetrahedra in 3D), whose boundary faces carry the boundary ids of its
+   *   physical groups.
+   *
+   * A level set and a mesh file exclude each other and the boxes: with either of them, "Boxes"
+   * must keep its default and "Holes" be empty (an InputError names the entry otherwise). Holes
+   * in a level-set body are written into the expression (max(phi, r - |x - c|)).
+   *
+   * The class describes the body and cuts its boundary into surface elements; where the volume
+   * points go is decided by MaterialPointGenerator (sub-cell centres for boxes and level sets,
+   * quadrature points of the mesh cells for a mesh: mesh_volume_elements()).
    */
   template <int dim>
   class Geometry
   {
   public:
-    /** A piece of the boundary: centre, outward normal times measure (N_0 A_0), and measure. */
+    /** How the body is given. */
+    enum class Source
+    {
+      boxes,
+      level_set,
+      mesh
+    };
+
+    /**
+     * A piece of the boundary: centre, outward normal times measure (N_0 A_0), and, for a body
+     * from a mesh, the boundary id of the face it lies on and the name of that physical group
+     * (empty if the file names none).
+     */
     struct SurfaceElement
     {
-      dealii::Point<dim>     centre;
-      dealii::Tensor<1, dim> normal_area;
+      dealii::Point<dim>         centre;
+      dealii::Tensor<1, dim>     normal_area;
+      dealii::types::boundary_id boundary_id = dealii::numbers::invalid_boundary_id;
+      std::string                group_name;
+    };
+
+    /** A piece of the body: a point and the volume (area in 2D) it stands for. */
+    struct VolumeElement
+    {
+      dealii::Point<dim> centre;
+      double             volume;
     };
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 
-    /** Read the section; throws InputError on malformed or degenerate boxes and holes. */
+    /**
+     * Read the section; throws InputError on malformed or degenerate boxes and holes, a level set
+     * that cannot be parsed, a mesh file that cannot be read or has another dimension, and an
+     * inconsistent combination of the entries. A relative "Mesh file" is taken from
+     * @p scene_directory (the directory of the scene file; empty: the current directory).
+     */
     void
-    parse_parameters(dealii::ParameterHandler &prm);
+    parse_parameters(dealii::ParameterHandler &prm, const std::string &scene_directory = "");
 
     /** Add a box [lower, upper] (for programmatic scenes and tests). */
     void
@@ -40,32 +89,142 @@ namespace GelMPM
     void
     add_hole(const dealii::Point<dim> &centre, const double radius);
 
-    /** Closed union of the boxes minus the open balls. */
+    /**
+     * Make the body the set where @p expression (in x, y[, z] and @p constants) is negative
+     * (for programmatic scenes and tests). Throws InputError naming "Geometry/Level set" if the
+     * expression cannot be parsed.
+     */
+    void
+    set_level_set(const std::string &expression, const std::string &constants = "");
+
+    /**
+     * Make the body the mesh in the Gmsh file @p file_name (for programmatic scenes and tests).
+     * Throws InputError naming "Geometry/Mesh file" if it cannot be read or is not a mesh of
+     * dimension dim.
+     */
+    void
+    read_mesh(const std::string &file_name);
+
+    Source
+    source() const;
+
+    /** The entry that gives the body ("Geometry/Boxes", ".../Level set", ".../Mesh file"). */
+    std::string
+    entry() const;
+
+    /**
+     * Whether @p p lies in the body: the closed union of the boxes minus the open balls, the
+     * open set {phi < 0}, or the closure of a mesh cell (a search over the cells: for tests).
+     */
     bool
     inside(const dealii::Point<dim> &p) const;
 
-    /** Whether @p p lies in one of the boxes, holes disregarded. */
+    /** Whether @p p lies in one of the boxes, holes disregarded (boxes only; else inside()). */
     bool
     inside_boxes(const dealii::Point<dim> &p) const;
 
+    /** The level set phi at @p p (level-set bodies only). */
+    double
+    level_set(const dealii::Point<dim> &p) const;
+
     /**
-     * The boundary of the body cut into elements of length at most @p spacing (2D): the parts of
-     * box edges that are not inside another box or a hole, and the arcs of hole boundaries that
-     * lie inside the boxes. Edges are split at their intersections with hole circles and arcs at
-     * their intersections with box edges, so that each element lies entirely on the boundary.
-     * For an arc element, normal_area is the exact integral of the outward normal over the arc,
-     * so the sum over a closed boundary vanishes to round-off. Throws std::logic_error in 3D.
+     * The boundary of the body cut into elements of length at most @p spacing (2D).
+     *
+     * Boxes: the parts of box edges that are not inside another box or a hole, and the arcs of
+     * hole boundaries that lie inside the boxes. Edges are split at their intersections with
+     * hole circles and arcs at their intersections with box edges, so that each element lies
+     * entirely on the boundary. For an arc element, normal_area is the exact integral of the
+     * outward normal over the arc, so the sum over a closed boundary vanishes to round-off.
+     *
+     * Level set: the zero contour inside the box [@p lower, @p upper] (the background grid),
+     * traced by marching squares on a sampling grid of spacing at most @p spacing / 2, each
+     * closed contour divided into elements of equal length along it; the end points and centres
+     * of the elements are projected onto the zero set by Newton steps along the gradient, and
+     * normal_area is the rotated chord between the end points, which is the exact integral of the
+     * normal over the piece of the zero set between them: the sum over a closed contour vanishes
+     * to round-off. Throws InputError if phi < 0 on the edge of the box (the body reaches
+     * outside the grid).
+     *
+     * Mesh: the Gauss points of the boundary faces (see mesh_surface_elements()).
+     *
+     * Throws InputError for a level set in 3D (not available) and std::logic_error for boxes in
+     * 3D.
      */
     std::vector<SurfaceElement>
-    surface_elements(const double spacing) const;
+    surface_elements(const double              spacing,
+                     const dealii::Point<dim> &lower = dealii::Point<dim>(),
+                     const dealii::Point<dim> &upper = dealii::Point<dim>()) const;
+
+    /**
+     * Mesh bodies: the Gauss points of every cell with V_0 = JxW. A quadrilateral/hexahedron gets
+     * q^dim points, with q = max(@p points_per_direction, ceil(longest edge / @p spacing)): with
+     * @p spacing the sub-cell size h/n, the points are about as dense as those of a box body. A
+     * triangle/tetrahedron gets the centroids of k^dim equal sub-simplices, k the smallest power of
+     * two for which they are no larger than a sub-cell and at least (points_per_direction)^dim/dim!
+     * many.
+     */
+    std::vector<VolumeElement>
+    mesh_volume_elements(const unsigned int points_per_direction, const double spacing) const;
+
+    /**
+     * Mesh bodies: the Gauss points of every boundary face with N_0 A_0 = the outward unit normal
+     * times JxW, the face's boundary id and group name. A face gets q^(dim-1) points with q the
+     * smallest number for which no Gauss point of its longest edge stands for more than
+     * @p spacing of it: in 2D no element is longer than @p spacing, as on boxes (a triangular
+     * face in 3D: the centroids of k^2 equal sub-triangles, k the power of two at least q). Works
+     * in 2D and 3D.
+     */
+    std::vector<SurfaceElement>
+    mesh_surface_elements(const double spacing) const;
+
+    /** Mesh bodies: the boundary ids on the mesh's boundary faces. */
+    std::set<dealii::types::boundary_id>
+    mesh_boundary_ids() const;
+
+    /** Mesh bodies: the names of the physical groups of dimension dim - 1 by boundary id. */
+    const std::map<dealii::types::boundary_id, std::string> &
+    mesh_group_names() const;
+
+    /** Mesh bodies: the mesh. */
+    const dealii::Triangulation<dim> &
+    mesh() const;
 
   private:
     /** Whether the point just outside (inside) @p p along @p normal is (not) in the body. */
     bool
     on_boundary(const dealii::Point<dim> &p, const dealii::Tensor<1, dim> &normal) const;
 
+    std::vector<SurfaceElement>
+    box_surface_elements(const double spacing) const;
+
+    std::vector<SurfaceElement>
+    level_set_surface_elements(const double              spacing,
+                               const dealii::Point<dim> &lower,
+                               const dealii::Point<dim> &upper) const;
+
+    /** Gradient of phi by central differences with step @p delta. */
+    dealii::Tensor<1, dim>
+    level_set_gradient(const dealii::Point<dim> &p, const double delta) const;
+
+    /**
+     * @p p moved onto the zero set of phi by Newton steps along the gradient, at most
+     * @p max_shift from where it started (else @p p itself: a degenerate gradient).
+     */
+    dealii::Point<dim>
+    project_onto_zero_set(const dealii::Point<dim> &p, const double max_shift) const;
+
+    Source source_ = Source::boxes;
+
     std::vector<std::pair<dealii::Point<dim>, dealii::Point<dim>>> boxes;
     std::vector<std::pair<dealii::Point<dim>, double>>             holes;
+
+    // Shared, not unique: a Geometry stays copyable, and neither is changed after parsing.
+    std::shared_ptr<dealii::FunctionParser<dim>> phi;
+    std::string                                  level_set_text;
+
+    std::shared_ptr<dealii::Triangulation<dim>>       mesh_;
+    std::string                                       mesh_file;
+    std::map<dealii::types::boundary_id, std::string> group_names;
   };
 } // namespace GelMPM
 

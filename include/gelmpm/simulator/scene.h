@@ -56,12 +56,14 @@ namespace GelMPM
                        const std::vector<std::string> &boundary_pieces);
 
     /**
-     * Parse and check the sections declared by declare_parameters(). Throws InputError. The
-     * run is distributed over the ranks of @p communicator.
+     * Parse and check the sections declared by declare_parameters(). Throws InputError. Files the
+     * scene names ("Geometry/Mesh file") are taken relative to @p scene_directory (empty: the
+     * current directory). The run is distributed over the ranks of @p communicator.
      */
     Scene(dealii::ParameterHandler       &prm,
           const std::vector<std::string> &boundary_pieces,
-          const MPI_Comm                  communicator = MPI_COMM_WORLD);
+          const std::string              &scene_directory = "",
+          const MPI_Comm                  communicator    = MPI_COMM_WORLD);
 
     /**
      * Create the triangulation of the background grid, the material points of the body in their
