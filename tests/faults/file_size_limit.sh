@@ -9,8 +9,12 @@ for _ in $(seq 600); do
   [[ $(cat results/statistics.csv 2>/dev/null | wc -l) -ge 4 ]] && break
   sleep 0.1
 done
+# Stopped while the limit is set: a row written between reading the size and setting the limit
+# (a loaded machine) would otherwise put the file beyond the limit before it holds.
+kill -STOP $pid
 size=$(stat -c %s results/statistics.csv)
 prlimit --pid $pid --fsize=$((size + 500))
+kill -CONT $pid
 wait $pid
 status=$?
 echo "exit status: $status"; cat stderr
