@@ -54,7 +54,7 @@ namespace GelMPM
         distributed->signals.weight.connect(
           [this](const typename dealii::Triangulation<dim>::cell_iterator &cell,
                  const typename dealii::Triangulation<dim>::CellStatus) -> unsigned int {
-            return 1 + particles.n_particles_in_cell(cell);
+            return added_weight(particles.n_particles_in_cell(cell));
           });
         triangulation = std::move(distributed);
       }
@@ -93,8 +93,11 @@ namespace GelMPM
   {
     if (!Collective::is_parallel(communicator))
       return 1.;
-    const double local = particles.n_locally_owned_particles();
-    const double mean  = dealii::Utilities::MPI::sum(local, communicator) /
+    double local = 0.;
+    for (const auto &cell : triangulation->active_cell_iterators())
+      if (cell->is_locally_owned())
+        local += base_weight + added_weight(particles.n_particles_in_cell(cell));
+    const double mean = dealii::Utilities::MPI::sum(local, communicator) /
                         dealii::Utilities::MPI::n_mpi_processes(communicator);
     return mean > 0. ? dealii::Utilities::MPI::max(local, communicator) / mean : 1.;
   }

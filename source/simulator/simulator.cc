@@ -913,9 +913,13 @@ namespace GelMPM
           sort_into_cells(scene.particles, scene.grid, *scene.triangulation);
           // The body moves and changes the points per rank: partition the grid anew when the
           // most loaded rank holds much more than its share (its time sets the step's).
-          if (scene.imbalance() > largest_imbalance)
+          // The partition cannot split a cell: where whole cells leave an imbalance, the run
+          // waits until the imbalance has grown beyond what the last partition left.
+          const double imbalance = scene.imbalance();
+          if (imbalance > std::max(largest_imbalance, 1.05 * imbalance_after_partition))
             {
               scene.balance_partition();
+              imbalance_after_partition = scene.imbalance();
               ++n_repartitions;
             }
           if (scene.particles.n_global_particles() != n_before)
@@ -1232,6 +1236,17 @@ namespace GelMPM
             << " ranks, partitioned anew " << n_repartitions << " times";
     if (!output_settings.test_mode)
       pcout << std::endl;
+    if (!output_settings.test_mode)
+      {
+        // The high-water mark of each rank's resident memory (VmHWM).
+        dealii::Utilities::System::MemoryStats memory;
+        dealii::Utilities::System::get_memory_stats(memory);
+        const double mb = memory.VmHWM / 1024.;
+        pcout << "gelmpm: peak memory " << std::setprecision(4)
+              << dealii::Utilities::MPI::max(mb, scene.communicator) << " MB / "
+              << dealii::Utilities::MPI::sum(mb, scene.communicator) << " MB"
+              << std::setprecision(6) << std::endl;
+      }
     if (output_settings.test_mode && !statistics.rows().empty())
       {
         // The final row of statistics.csv, without timings, for comparison with a reference.

@@ -5,7 +5,9 @@
 # as many material points.
 source "$(dirname "$0")/common.sh"
 scene="$source_dir/tests/simulator/free_swelling_scene.prm"
-options=(--set "Time stepping/End time=20" --set "Output/Write particles=true"
+# 40 x 40 cells: steps long enough (about 0.1 s) for the kills to fall inside the run.
+options=(--set "Time stepping/End time=12" --set "Output/Write particles=true"
+         --set "Background grid/Cells=40, 40"
          --set "Output/Interval steps=5" --set "Output/Directory=results")
 
 "$mpiexec" -n 2 --oversubscribe "$gelmpm" "$scene" "${options[@]}" \
@@ -23,16 +25,19 @@ run_until() {
   local pid=$!
   for _ in $(seq 1200); do
     [[ $(cat results/statistics.csv 2>/dev/null | wc -l) -ge $rows ]] && break
+    kill -0 $pid 2>/dev/null || break
     sleep 0.05
   done
-  sleep "0.$((RANDOM % 4))"
+  sleep "0.$((RANDOM % 2))"
+  kill -0 $pid 2>/dev/null
+  check $? "the run ended before SIG$signal: the test does not interrupt it"
   pkill -"$signal" -P $pid
   wait $pid 2>/dev/null
   echo "SIG$signal after $(($(wc -l <results/statistics.csv) - 1)) steps"
 }
-run_until KILL 15
-run_until KILL 15 --resume
-run_until TERM 10 --resume
+run_until KILL 10
+run_until KILL 10 --resume
+run_until TERM 6 --resume
 "$gelmpm" "$scene" "${options[@]}" --set "Checkpoint/Interval steps=1" --resume >>killed.log 2>&1
 check $? "the last resumed run (one rank) failed: $(tail -3 killed.log)"
 [[ $(grep -c "resumed from the checkpoint at step" killed.log) -eq 3 ]]

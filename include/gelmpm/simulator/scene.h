@@ -81,18 +81,34 @@ namespace GelMPM
 
     /**
      * On several ranks: partition the cells anew so that each rank holds about as many material
-     * points (a cell weighs 1 + its points), moving the points with their cells. Nothing on one
-     * rank.
+     * points, moving the points with their cells. Nothing on one rank.
+     *
+     * A cell's work is that of its points (their shape functions, their share of the tangent)
+     * and a cell without points costs next to nothing; deal.II weighs every cell with
+     * base_weight and adds added_weight(points).
      */
     void
     balance_partition();
 
     /**
-     * The largest number of material points on a rank over the mean number per rank (1 on one
-     * rank): the run rebalances when it grows.
+     * The largest weight (as balance_partition() weighs cells) on a rank over the mean weight
+     * per rank (1 on one rank): the run rebalances when it grows.
      */
     double
     imbalance() const;
+
+    /** The weight p4est gives every cell (deal.II 9.4) before the weight a scene adds. */
+    static constexpr unsigned int base_weight = 1000;
+
+    /**
+     * The weight added to a cell with @p n_points material points: as much as the base weight
+     * per point, and four points' worth for the cell's block of the tangent.
+     */
+    static unsigned int
+    added_weight(const unsigned int n_points)
+    {
+      return n_points > 0 ? base_weight * (n_points + 4) : 0;
+    }
 
     FloryRehnerGel<dim>         material;
     BackgroundGrid<dim>         grid;

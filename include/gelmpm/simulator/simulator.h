@@ -247,7 +247,8 @@ namespace GelMPM
     unsigned long n_repartitions = 0;
     // On several ranks: the ratio of the largest number of points on a rank to the mean above
     // which the grid is partitioned anew (a repartition costs about one grid reset).
-    static constexpr double largest_imbalance = 1.1;
+    static constexpr double largest_imbalance         = 1.1;
+    double                  imbalance_after_partition = 1.;
     std::vector<bool>       mu_known;                // coefficient holds a current value
     std::vector<double>     mu_projection;           // points' mu on the step's basis
     std::vector<double>     displacement_projection; // last step's motion on the step's basis
