@@ -121,7 +121,7 @@ namespace GelMPM
   MixedSystem<dim>::setup(dealii::Particles::ParticleHandler<dim> &particle_handler,
                           const std::function<void()>             &before_new_pattern)
   {
-    const bool new_pattern = classify_cells(particle_handler);
+    bool new_pattern = classify_cells(particle_handler);
 
     std::vector<PointRecord>                                                         unsorted;
     std::vector<typename dealii::Particles::ParticleHandler<dim>::particle_iterator> its;
@@ -145,6 +145,20 @@ namespace GelMPM
     Collective::agree_on_failure<std::runtime_error>(communicator, failure);
     group_points(unsorted, its, cells);
     evaluate_shape_functions();
+    if (Collective::is_parallel(communicator))
+      {
+        // A rank writes the rows of the blocks its points join. A surface point joins the active
+        // cell next to it, which another rank may hold, and moves between ranks with its cell:
+        // the writable rows change although the classification and the holders do not.
+        std::vector<unsigned int> block_cells;
+        for (const Block &b : blocks)
+          block_cells.push_back(b.u_cell);
+        const bool blocks_changed = block_cells != pattern_block_cells;
+        new_pattern =
+          dealii::Utilities::MPI::logical_or(new_pattern || blocks_changed, communicator);
+        if (new_pattern)
+          pattern_block_cells = std::move(block_cells);
+      }
     if (new_pattern)
       {
         before_new_pattern();

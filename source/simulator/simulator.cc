@@ -1225,6 +1225,18 @@ namespace GelMPM
               << output_settings.directory << std::endl;
         status = 1;
       }
+    catch (const std::exception &e)
+      {
+        // Not a failure the ranks found together (a library's logic error): on several ranks
+        // the others may be waiting in a collective call, and leaving would wait for them in
+        // the destructors' collective calls. End the whole job from here.
+        if (!Collective::is_parallel(scene.communicator))
+          throw;
+        std::cerr << "gelmpm: the run failed on rank "
+                  << dealii::Utilities::MPI::this_mpi_process(scene.communicator) << ": "
+                  << e.what() << std::endl;
+        MPI_Abort(MPI_COMM_WORLD, 1);
+      }
     if (status == 0)
       pcout << "gelmpm: reached t/tau_d = " << time << " in " << step << " steps" << std::endl;
     if (!output_settings.test_mode)

@@ -407,6 +407,8 @@ namespace GelMPM
     std::vector<bool> classification, pattern_classification;
     // The rank that holds the volume points of each active cell (invalid for the others).
     std::vector<unsigned int> cell_holder, pattern_holder;
+    // On several ranks: the cells of this rank's blocks when the pattern was built.
+    std::vector<unsigned int> pattern_block_cells;
 
     dealii::TrilinosWrappers::SparseMatrix matrix_;
     dealii::Vector<double>                 residual_;
