@@ -372,18 +372,11 @@ namespace GelMPM
   MixedSystem<dim>::build_sparsity_pattern()
   {
     // Every unknown of a cell with points couples with every other one of that cell.
-    const unsigned int                           n_u = spaces_.n_u_dofs();
     dealii::DynamicSparsityPattern               pattern(spaces_.n_dofs(), spaces_.n_dofs());
     std::vector<dealii::types::global_dof_index> dofs;
     for (const Block &b : blocks)
       {
-        dofs.clear();
-        for (const unsigned int i : spaces_.u().cell_dofs(b.u_cell))
-          for (unsigned int c = 0; c < dim; ++c)
-            dofs.push_back(dim * i + c);
-        for (const unsigned int j : spaces_.mu().cell_dofs(b.mu_cell))
-          dofs.push_back(n_u + j);
-        std::sort(dofs.begin(), dofs.end());
+        unknowns_of_block(b, dofs);
         for (const auto row : dofs)
           pattern.add_entries(row, dofs.begin(), dofs.end(), true);
       }
@@ -403,6 +396,22 @@ namespace GelMPM
       }
     distributed.compress();
     matrix_.reinit(distributed);
+  }
+
+
+  template <int dim>
+  void
+  MixedSystem<dim>::unknowns_of_block(const Block                                  &block,
+                                      std::vector<dealii::types::global_dof_index> &dofs) const
+  {
+    const unsigned int n_u = spaces_.n_u_dofs();
+    dofs.clear();
+    for (const unsigned int i : spaces_.u().cell_dofs(block.u_cell))
+      for (unsigned int c = 0; c < dim; ++c)
+        dofs.push_back(dim * i + c);
+    for (const unsigned int j : spaces_.mu().cell_dofs(block.mu_cell))
+      dofs.push_back(n_u + j);
+    std::sort(dofs.begin(), dofs.end());
   }
 
 
@@ -435,13 +444,7 @@ namespace GelMPM
     std::vector<dealii::types::global_dof_index> dofs;
     for (const Block &b : blocks)
       {
-        dofs.clear();
-        for (const unsigned int i : spaces_.u().cell_dofs(b.u_cell))
-          for (unsigned int c = 0; c < dim; ++c)
-            dofs.push_back(dim * i + c);
-        for (const unsigned int j : spaces_.mu().cell_dofs(b.mu_cell))
-          dofs.push_back(n_u + j);
-        std::sort(dofs.begin(), dofs.end());
+        unknowns_of_block(b, dofs);
         relevant.add_indices(dofs.begin(), dofs.end());
       }
     relevant.add_indices(owned);

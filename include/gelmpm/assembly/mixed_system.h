@@ -313,6 +313,10 @@ namespace GelMPM
     std::pair<dealii::IndexSet, dealii::IndexSet>
     owned_and_relevant_dofs() const;
 
+    /** The unknowns (u interleaved, then mu), sorted, that the points of @p block couple. */
+    void
+    unknowns_of_block(const Block &block, std::vector<dealii::types::global_dof_index> &dofs) const;
+
     /**
      * The L2 projection over the volume points onto the displacement (@p displacement) or the
      * chemical potential basis of the @p n_components point values @p value(r, component):
