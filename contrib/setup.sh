@@ -17,6 +17,7 @@ jobs="${GELMPM_JOBS:-$(nproc)}"
 # Each package and why GelMPM needs it (README.md, "Dependencies", says the same):
 packages=(
   libdeal.ii-dev # deal.II 9.4 with Trilinos (Amesos, Epetra), MUMPS, ARPACK, Boost, TBB, MPI
+  libmuparser-dev # boundary selectors in x, y, z, nx, ny, nz (the parser behind deal.II's)
   libvtk9-dev    # tests read written .vtu files back the way ParaView does
   libopenblas0-pthread # optimised BLAS behind MUMPS and LAPACK (replaces the reference BLAS)
   numdiff        # ctest compares outputs with tolerances

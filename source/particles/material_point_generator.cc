@@ -1,6 +1,7 @@
 #include <gelmpm/core/input_error.h>
 #include <gelmpm/particles/material_point_generator.h>
 #include <gelmpm/particles/point_location.h>
+#include <gelmpm/scene/expression.h>
 
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/tria.h>
@@ -232,55 +233,49 @@ namespace GelMPM
 
     // The body must lie in the grid: check the boundary (it bounds the body).
     check_boundary_groups(geometry, boundary_conditions);
-    if constexpr (dim == 2)
-      {
-        const auto elements =
-          geometry.surface_elements(h_min / surface_points_per_edge, grid.lower, grid.upper);
-        std::vector<unsigned int> count(boundary_conditions.n_pieces(), 0);
-        for (const auto &e : elements)
-          {
-            require(grid.contains(e.centre),
-                    geometry.entry(),
-                    "puts the body outside the background grid, e.g. at " + text(e.centre),
-                    "enlarge 'Background grid/Lower corner' and 'Upper corner' or move the body");
-            const double                 area   = e.normal_area.norm();
-            const dealii::Tensor<1, dim> normal = e.normal_area / area;
-            const int                    piece =
-              boundary_conditions.piece_of(e.centre, normal, e.boundary_id, e.group_name);
-            std::fill(properties.begin(), properties.end(), 0.);
-            if (piece >= 0)
-              {
-                const auto &p = boundary_conditions.piece(piece);
-                ++count[piece];
-                properties[Layout::kind] =
-                  static_cast<double>(surface_point_kind(p.displacement_prescribed(),
-                                                         p.chemical_potential_prescribed()));
-              }
-            else
-              properties[Layout::kind] = static_cast<double>(PointKind::neumann_neumann);
-            properties[Layout::piece]     = piece;
-            properties[Layout::measure_0] = properties[Layout::measure_n] = area;
-            for (unsigned int d = 0; d < dim; ++d)
-              properties[Layout::normal_area_0 + d] = properties[Layout::normal_area_n + d] =
-                e.normal_area[d];
-            insert(e.centre);
-          }
-        for (unsigned int i = 0; i < boundary_conditions.n_pieces(); ++i)
-          if (count[i] == 0)
-            check_not_overlapped(elements, boundary_conditions, i);
-        for (unsigned int i = 0; i < boundary_conditions.n_pieces(); ++i)
-          require(count[i] > 0,
-                  "Boundary conditions/" + boundary_conditions.piece(i).name + "/Selector",
-                  "selects no point of the body's boundary",
-                  boundary_conditions.piece(i).boundary_groups().empty()
-                    ? "check the expression against the geometry (variables x, y, nx, ny)"
-                    : "check the groups against the mesh's physical groups");
-      }
-    else
-      require(boundary_conditions.n_pieces() == 0,
-              "Boundary conditions/Pieces",
-              "is not empty, but surface points are implemented in 2D only",
-              "run the scene in 2D");
+    {
+      const auto elements =
+        geometry.surface_elements(h_min / surface_points_per_edge, grid.lower, grid.upper);
+      std::vector<unsigned int> count(boundary_conditions.n_pieces(), 0);
+      for (const auto &e : elements)
+        {
+          require(grid.contains(e.centre),
+                  geometry.entry(),
+                  "puts the body outside the background grid, e.g. at " + text(e.centre),
+                  "enlarge 'Background grid/Lower corner' and 'Upper corner' or move the body");
+          const double                 area   = e.normal_area.norm();
+          const dealii::Tensor<1, dim> normal = e.normal_area / area;
+          const int                    piece =
+            boundary_conditions.piece_of(e.centre, normal, e.boundary_id, e.group_name);
+          std::fill(properties.begin(), properties.end(), 0.);
+          if (piece >= 0)
+            {
+              const auto &p = boundary_conditions.piece(piece);
+              ++count[piece];
+              properties[Layout::kind] = static_cast<double>(
+                surface_point_kind(p.displacement_prescribed(), p.chemical_potential_prescribed()));
+            }
+          else
+            properties[Layout::kind] = static_cast<double>(PointKind::neumann_neumann);
+          properties[Layout::piece]     = piece;
+          properties[Layout::measure_0] = properties[Layout::measure_n] = area;
+          for (unsigned int d = 0; d < dim; ++d)
+            properties[Layout::normal_area_0 + d] = properties[Layout::normal_area_n + d] =
+              e.normal_area[d];
+          insert(e.centre);
+        }
+      for (unsigned int i = 0; i < boundary_conditions.n_pieces(); ++i)
+        if (count[i] == 0)
+          check_not_overlapped(elements, boundary_conditions, i);
+      for (unsigned int i = 0; i < boundary_conditions.n_pieces(); ++i)
+        require(count[i] > 0,
+                "Boundary conditions/" + boundary_conditions.piece(i).name + "/Selector",
+                "selects no point of the body's boundary",
+                boundary_conditions.piece(i).boundary_groups().empty()
+                  ? "check the expression against the geometry (variables " +
+                      PointNormalExpression::variable_names(dim) + ")"
+                  : "check the groups against the mesh's physical groups");
+    }
     particles.update_cached_numbers();
   }
 

@@ -19,9 +19,9 @@ namespace GelMPM
     std::string
     variables(const int dim, const bool with_normal)
     {
-      if (dim == 3)
-        return "x,y,z";
-      return with_normal ? "x,y,nx,ny" : "x,y";
+      if (with_normal)
+        return PointNormalExpression::variable_names(dim);
+      return dim == 3 ? "x,y,z" : "x,y";
     }
 
     std::string
@@ -187,18 +187,14 @@ namespace GelMPM
     const auto constants = parse_expression_constants(selector_constants,
                                                       variables(dim, true),
                                                       where + "/Selector constants");
-    selector             = std::make_unique<dealii::FunctionParser<3>>(1);
     try
       {
-        const QuietCerr quiet;
-        selector->initialize(variables(dim, true), selector_text, constants, dim == 2);
-        // The parser compiles lazily: evaluate once to surface syntax errors here.
-        (void)selector->value(dealii::Point<3>());
+        selector = std::make_unique<PointNormalExpression>(dim, selector_text, constants);
       }
-    catch (const dealii::ExceptionBase &e)
+    catch (const std::invalid_argument &e)
       {
         throw InputError(where + "/Selector",
-                         "'" + selector_text + "' cannot be parsed: " + describe(e),
+                         "'" + selector_text + "' cannot be parsed: " + e.what(),
                          "write an expression in " + variables(dim, true));
       }
   }
@@ -221,19 +217,11 @@ namespace GelMPM
             return true;
         return false;
       }
-    dealii::Point<3> p;
-    for (unsigned int d = 0; d < dim; ++d)
-      p[d] = x[d];
-    if (dim == 2)
-      {
-        p[2] = normal[0];
-        selector->set_time(normal[1]);
-      }
-    const double value = selector->value(p);
+    const double value = selector->value(&x[0], &normal[0]);
     if (!std::isfinite(value))
       throw InputError("Boundary conditions/" + name + "/Selector",
                        "is not a number (" + number(value) + ") at the surface point " +
-                         format_point(&p[0], dim) + " with normal " + format_point(&normal[0], dim),
+                         format_point(&x[0], dim) + " with normal " + format_point(&normal[0], dim),
                        "write a condition that is 0 or 1 everywhere, e.g. 'ny > 0.5'");
     return value != 0.;
   }

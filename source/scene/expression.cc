@@ -6,6 +6,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <limits>
+#include <muParser.h>
+#include <stdexcept>
 
 namespace GelMPM
 {
@@ -67,5 +70,98 @@ namespace GelMPM
         constants[kv[0]] = value;
       }
     return constants;
+  }
+
+
+  struct PointNormalExpression::Parser
+  {
+    mu::Parser            parser;
+    std::array<double, 6> variables = {};
+    unsigned int          dim       = 2;
+  };
+
+
+  PointNormalExpression::PointNormalExpression(const unsigned int                   dim,
+                                               const std::string                   &expression,
+                                               const std::map<std::string, double> &constants)
+    : parser(std::make_unique<Parser>())
+  {
+    parser->dim      = dim;
+    auto      &p     = parser->parser;
+    const auto names = dealii::Utilities::split_string_list(variable_names(dim));
+    try
+      {
+        for (unsigned int i = 0; i < names.size(); ++i)
+          p.DefineVar(names[i], &parser->variables[i]);
+        for (const auto &[name, value] : constants)
+          p.DefineConst(name, value);
+        // The functions deal.II's FunctionParser adds to muParser, with the same meaning.
+        p.DefineFun("if", [](double c, double a, double b) {
+          return c != 0. ? a : b;
+        });
+        p.DefineFun("int", [](double x) {
+          return static_cast<double>(static_cast<long>(x));
+        });
+        p.DefineFun("ceil", [](double x) {
+          return std::ceil(x);
+        });
+        p.DefineFun("floor", [](double x) {
+          return std::floor(x);
+        });
+        p.DefineFun("cot", [](double x) {
+          return 1. / std::tan(x);
+        });
+        p.DefineFun("csc", [](double x) {
+          return 1. / std::sin(x);
+        });
+        p.DefineFun("sec", [](double x) {
+          return 1. / std::cos(x);
+        });
+        p.DefineFun("log", [](double x) {
+          return std::log(x);
+        });
+        p.DefineFun("pow", [](double x, double y) {
+          return std::pow(x, y);
+        });
+        p.DefineFun("erfc", [](double x) {
+          return std::erfc(x);
+        });
+        p.SetExpr(expression);
+        // muParser compiles lazily: evaluate once so that syntax errors surface here.
+        (void)p.Eval();
+      }
+    catch (const mu::Parser::exception_type &e)
+      {
+        throw std::invalid_argument(e.GetMsg());
+      }
+  }
+
+
+  PointNormalExpression::~PointNormalExpression() = default;
+
+
+  std::string
+  PointNormalExpression::variable_names(const unsigned int dim)
+  {
+    return dim == 3 ? "x,y,z,nx,ny,nz" : "x,y,nx,ny";
+  }
+
+
+  double
+  PointNormalExpression::value(const double *x, const double *normal) const
+  {
+    for (unsigned int d = 0; d < parser->dim; ++d)
+      {
+        parser->variables[d]               = x[d];
+        parser->variables[parser->dim + d] = normal[d];
+      }
+    try
+      {
+        return parser->parser.Eval();
+      }
+    catch (const mu::Parser::exception_type &)
+      {
+        return std::numeric_limits<double>::quiet_NaN();
+      }
   }
 } // namespace GelMPM

@@ -273,8 +273,10 @@ namespace GelMPM
     prm.declare_entry("Holes",
                       "",
                       dealii::Patterns::Anything(),
-                      "Balls removed from the boxes, each 'centre : radius', separated by ';'. "
-                      "Example (§4.4, quarter holes at the corners of a cell of size a): "
+                      "Balls (disks in 2D) removed from the boxes, each 'centre : radius', "
+                      "separated by ';'; in 3D also cylinders, 'point on the axis : radius : "
+                      "axis direction', e.g. '0.5, 0.5, 0 : 0.2 : 0, 0, 1'. Example (§4.4, "
+                      "quarter holes at the corners of a cell of size a): "
                       "'0, 0 : R; a, 0 : R; 0, a : R; a, a : R'. Empty: no holes. Boxes only.");
     prm.declare_entry("Level set",
                       "",
@@ -282,9 +284,9 @@ namespace GelMPM
                       "Instead of boxes: the body is where this expression in x, y (2D) or x, y, "
                       "z (3D) is negative, e.g. '(x-1)^2/0.5^2 + (y-1)^2/0.3^2 - 1' for an "
                       "ellipse. It must be non-negative on the edge of the background grid. "
-                      "Volume points at the sub-cell centres where it is negative; in 2D surface "
-                      "points on its zero contour, normals from its gradient (3D: no surface "
-                      "points). Empty: not used.");
+                      "Volume points at the sub-cell centres where it is negative; surface points "
+                      "on its zero contour (2D) or surface (3D), normals from its gradient. "
+                      "Empty: not used.");
     prm.declare_entry("Level set constants",
                       "",
                       dealii::Patterns::Anything(),
@@ -382,10 +384,14 @@ namespace GelMPM
     for (const auto &item : dealii::Utilities::split_string_list(hole_text, ';'))
       {
         const auto parts = dealii::Utilities::split_string_list(item, ':');
-        require(parts.size() == 2,
+        require(parts.size() == 2 || (dim == 3 && parts.size() == 3),
                 "Geometry/Holes",
-                "has the item '" + item + "' that is not 'centre : radius'",
-                "write e.g. '0.5, 0.5 : 0.2'");
+                "has the item '" + item + "' that is not 'centre : radius'" +
+                  (dim == 3 ? " or 'centre : radius : axis'" : ""),
+                dim == 3
+                  ? "write e.g. '0.5, 0.5, 0.5 : 0.2' (a ball) or '0.5, 0.5, 0 : 0.2 : 0, 0, "
+                    "1' (a cylinder along z)"
+                  : "write e.g. '0.5, 0.5 : 0.2'");
         const auto c = parse_numbers(parts[0], dim, "Geometry/Holes", item);
         const auto r = parse_numbers(parts[1], 1, "Geometry/Holes", item);
         require(r[0] > 0.,
@@ -395,7 +401,20 @@ namespace GelMPM
         dealii::Point<dim> centre;
         for (unsigned int d = 0; d < dim; ++d)
           centre[d] = c[d];
-        add_hole(centre, r[0]);
+        if (parts.size() == 2)
+          {
+            add_hole(centre, r[0]);
+            continue;
+          }
+        const auto             a = parse_numbers(parts[2], dim, "Geometry/Holes", item);
+        dealii::Tensor<1, dim> axis;
+        for (unsigned int d = 0; d < dim; ++d)
+          axis[d] = a[d];
+        require(axis.norm() > 0.,
+                "Geometry/Holes",
+                "has the cylinder '" + item + "' with a zero axis",
+                "give the direction of the axis, e.g. '0, 0, 1'");
+        add_cylinder(centre, r[0], axis);
       }
   }
 
@@ -413,6 +432,16 @@ namespace GelMPM
   Geometry<dim>::add_hole(const dealii::Point<dim> &centre, const double radius)
   {
     holes.emplace_back(centre, radius);
+  }
+
+
+  template <int dim>
+  void
+  Geometry<dim>::add_cylinder(const dealii::Point<dim>     &centre,
+                              const double                  radius,
+                              const dealii::Tensor<1, dim> &axis)
+  {
+    cylinders.push_back({centre, radius, axis / axis.norm()});
   }
 
 
@@ -559,6 +588,9 @@ namespace GelMPM
     for (const auto &[centre, radius] : holes)
       if (p.distance(centre) < radius)
         return false;
+    for (const auto &cylinder : cylinders)
+      if (cylinder.distance_to_axis(p) < cylinder.radius)
+        return false;
     return inside_boxes(p);
   }
 
@@ -595,6 +627,34 @@ namespace GelMPM
 
 
   template <int dim>
+  bool
+  Geometry<dim>::on_earlier_box_face(const unsigned int            box,
+                                     const dealii::Point<dim>     &p,
+                                     const dealii::Tensor<1, dim> &normal) const
+  {
+    unsigned int a = 0;
+    for (unsigned int d = 1; d < dim; ++d)
+      if (std::abs(normal[d]) > std::abs(normal[a]))
+        a = d;
+    double size = 0.;
+    for (const auto &[lower, upper] : boxes)
+      size = std::max(size, lower.distance(upper));
+    const double eps = 1e-9 * size;
+    for (unsigned int j = 0; j < box; ++j)
+      {
+        const auto &[lower, upper] = boxes[j];
+        const double plane         = normal[a] > 0. ? upper[a] : lower[a];
+        bool         on            = std::abs(p[a] - plane) <= eps;
+        for (unsigned int d = 0; d < dim && on; ++d)
+          on = d == a || (p[d] >= lower[d] - eps && p[d] <= upper[d] + eps);
+        if (on)
+          return true;
+      }
+    return false;
+  }
+
+
+  template <int dim>
   std::vector<typename Geometry<dim>::SurfaceElement>
   Geometry<dim>::surface_elements(const double              spacing,
                                   const dealii::Point<dim> &lower,
@@ -603,11 +663,12 @@ namespace GelMPM
     switch (source_)
       {
         case Source::level_set:
-          return level_set_surface_elements(spacing, lower, upper);
+          return dim == 3 ? level_set_surface_elements_3d(spacing, lower, upper)
+                          : level_set_surface_elements(spacing, lower, upper);
         case Source::mesh:
           return mesh_surface_elements(spacing);
         default:
-          return box_surface_elements(spacing);
+          return dim == 3 ? box_surface_elements_3d(spacing) : box_surface_elements(spacing);
       }
   }
 
@@ -617,18 +678,19 @@ namespace GelMPM
   Geometry<dim>::box_surface_elements(const double spacing) const
   {
     if (dim != 2)
-      throw std::logic_error("surface material points are implemented in 2D only");
+      throw std::logic_error("box_surface_elements is the 2D version");
     std::vector<SurfaceElement> elements;
     using P = dealii::Point<dim>;
     using T = dealii::Tensor<1, dim>;
 
     // Box edges, split where hole circles cross them.
-    for (const auto &[lower, upper] : boxes)
+    for (unsigned int box = 0; box < boxes.size(); ++box)
       {
-        const P corners[4] = {P(lower[0], lower[1]),
-                              P(upper[0], lower[1]),
-                              P(upper[0], upper[1]),
-                              P(lower[0], upper[1])};
+        const auto &[lower, upper] = boxes[box];
+        const P corners[4]         = {P(lower[0], lower[1]),
+                                      P(upper[0], lower[1]),
+                                      P(upper[0], upper[1]),
+                                      P(lower[0], upper[1])};
         for (unsigned int e = 0; e < 4; ++e)
           {
             const P             a = corners[e], b = corners[(e + 1) % 4];
@@ -658,7 +720,7 @@ namespace GelMPM
                 for (unsigned int j = 0; j < m; ++j)
                   {
                     const P c = a + (breaks[k] + (j + 0.5) * length / m) * t;
-                    if (on_boundary(c, n))
+                    if (on_boundary(c, n) && !on_earlier_box_face(box, c, n))
                       elements.push_back(
                         {c, (length / m) * n, dealii::numbers::invalid_boundary_id, {}});
                   }
@@ -767,11 +829,7 @@ namespace GelMPM
         (void)spacing;
         (void)lower;
         (void)upper;
-        throw InputError("Geometry/Level set",
-                         "gives a 3D body, but surface points on a level set are available in "
-                         "2D only",
-                         "give the 3D body as a mesh ('Geometry/Mesh file') or run the scene in "
-                         "2D");
+        throw std::logic_error("level_set_surface_elements is the 2D version");
       }
     else
       {

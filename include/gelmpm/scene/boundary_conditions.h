@@ -1,6 +1,8 @@
 #ifndef gelmpm_scene_boundary_conditions_h
 #define gelmpm_scene_boundary_conditions_h
 
+#include <gelmpm/scene/expression.h>
+
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/parsed_function.h>
@@ -109,10 +111,7 @@ namespace GelMPM
     ChemicalCondition     chemical_condition     = ChemicalCondition::flux;
 
   private:
-    // deal.II instantiates FunctionParser up to three space variables plus time; in 2D the
-    // selector's variables x, y, nx, ny are passed as (x, y, nx) and time ny. In 3D it sees x, y,
-    // z.
-    std::unique_ptr<dealii::FunctionParser<3>>              selector;
+    std::unique_ptr<PointNormalExpression>                  selector;
     std::vector<std::string>                                boundary_groups_;
     std::unique_ptr<dealii::Functions::ParsedFunction<dim>> displacement_value_;
     std::unique_ptr<dealii::Functions::ParsedFunction<dim>> traction_;

@@ -1,8 +1,10 @@
 #ifndef gelmpm_scene_expression_h
 #define gelmpm_scene_expression_h
 
+#include <array>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <string>
 
@@ -41,6 +43,42 @@ namespace GelMPM
   parse_expression_constants(const std::string &text,
                              const std::string &variable_names,
                              const std::string &entry);
+
+  /**
+   * @brief An expression in a point and a unit normal, x, y[, z], nx, ny[, nz]: the selector of
+   * a boundary piece.
+   *
+   * deal.II's FunctionParser takes at most three space variables and time, one too few for a
+   * point and a normal in 3D, so this class drives muParser (the parser FunctionParser wraps)
+   * directly, with the functions FunctionParser adds to it (if, int, ceil, floor, pow, log, cot,
+   * csc, sec, erfc): an expression means the same in 2D and 3D, and the same as in the other
+   * entries of a scene file.
+   */
+  class PointNormalExpression
+  {
+  public:
+    /**
+     * Parse @p expression in the variables of variable_names(@p dim) and @p constants. Throws
+     * std::invalid_argument with muParser's message if it cannot be parsed.
+     */
+    PointNormalExpression(const unsigned int                   dim,
+                          const std::string                   &expression,
+                          const std::map<std::string, double> &constants);
+    ~PointNormalExpression();
+
+    /** "x,y,nx,ny" in 2D, "x,y,z,nx,ny,nz" in 3D. */
+    static std::string
+    variable_names(const unsigned int dim);
+
+    /** The value at the point @p x with normal @p normal (dim entries each). */
+    double
+    value(const double *x, const double *normal) const;
+
+  private:
+    struct Parser;
+    // Not copied or moved: the parser refers to the addresses of its variables.
+    std::unique_ptr<Parser> parser;
+  };
 } // namespace GelMPM
 
 #endif

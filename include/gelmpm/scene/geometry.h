@@ -8,6 +8,8 @@
 #include <deal.II/base/types.h>
 #include <deal.II/grid/tria.h>
 
+#include <array>
+#include <functional>
 #include <map>
 #include <memory>
 #include <set>
@@ -20,9 +22,9 @@ namespace GelMPM
    * @brief The "Geometry" section: the body in its initial (pre-swollen) configuration Omega_0,
    * given in one of three ways:
    *
-   * - **boxes**: a union of boxes minus balls ("Boxes", "Holes"). Enough for the paper's scenes:
-   *   a block (§4.1), a square (§4.2), a column (§4.3), a square cell with quarter-circle holes at
-   *   its corners (§4.4).
+   * - **boxes**: a union of boxes minus balls, and in 3D cylinders ("Boxes", "Holes"). Enough for
+   * the paper's scenes: a block (§4.1), a square (§4.2), a column (§4.3), a square cell with
+   * quarter-circle holes at its corners (§4.4).
    * - **level set**: the set where an expression phi(x, y[, z]) is negative ("Level set",
    *   "Level set constants"), inside the background grid.
    * - **mesh**: the cells of a Gmsh mesh ("Mesh file"; all quadrilaterals or all triangles in 2D,
@@ -62,6 +64,42 @@ namespace GelMPM
       std::string                group_name;
     };
 
+    /**
+     * A cylindrical hole (3D): the points closer than @p radius to the line through @p centre
+     * along the unit vector @p axis.
+     */
+    struct Cylinder
+    {
+      dealii::Point<dim>     centre;
+      double                 radius;
+      dealii::Tensor<1, dim> axis;
+
+      double
+      distance_to_axis(const dealii::Point<dim> &p) const
+      {
+        const dealii::Tensor<1, dim> r = p - centre;
+        return (r - (r * axis) * axis).norm();
+      }
+
+      /** Two unit vectors orthogonal to the axis and to each other (3D). */
+      std::pair<dealii::Tensor<1, dim>, dealii::Tensor<1, dim>>
+      frame() const
+      {
+        // The coordinate axis least aligned with the cylinder's, made orthogonal to it.
+        unsigned int least = 0;
+        for (unsigned int d = 1; d < dim; ++d)
+          if (std::abs(axis[d]) < std::abs(axis[least]))
+            least = d;
+        dealii::Tensor<1, dim> e1, e2;
+        e1[least] = 1.;
+        e1 -= (e1 * axis) * axis;
+        e1 /= e1.norm();
+        if constexpr (dim == 3)
+          e2 = dealii::cross_product_3d(axis, e1);
+        return {e1, e2};
+      }
+    };
+
     /** A piece of the body: a point and the volume (area in 2D) it stands for. */
     struct VolumeElement
     {
@@ -88,6 +126,12 @@ namespace GelMPM
     /** Remove a ball (for programmatic scenes and tests). */
     void
     add_hole(const dealii::Point<dim> &centre, const double radius);
+
+    /** Remove a cylinder, 3D (for programmatic scenes and tests); @p axis need not be unit. */
+    void
+    add_cylinder(const dealii::Point<dim>     &centre,
+                 const double                  radius,
+                 const dealii::Tensor<1, dim> &axis);
 
     /**
      * Make the body the set where @p expression (in x, y[, z] and @p constants) is negative
@@ -128,7 +172,7 @@ namespace GelMPM
     level_set(const dealii::Point<dim> &p) const;
 
     /**
-     * The boundary of the body cut into elements of length at most @p spacing (2D).
+     * The boundary of the body cut into elements of length at most @p spacing.
      *
      * Boxes: the parts of box edges that are not inside another box or a hole, and the arcs of
      * hole boundaries that lie inside the boxes. Edges are split at their intersections with
@@ -147,8 +191,8 @@ namespace GelMPM
      *
      * Mesh: the Gauss points of the boundary faces (see mesh_surface_elements()).
      *
-     * Throws InputError for a level set in 3D (not available) and std::logic_error for boxes in
-     * 3D.
+     * In 3D: box faces and holes by box_surface_elements_3d(), a level set by
+     * level_set_surface_elements_3d(), elements of size at most @p spacing.
      */
     std::vector<SurfaceElement>
     surface_elements(const double              spacing,
@@ -190,6 +234,67 @@ namespace GelMPM
     mesh() const;
 
   private:
+    /**
+     * A patch of a surface parametrised over a rectangle of (s, t): the point at (s, t) and the
+     * body's outward normal times the area element per unit parameter area.
+     */
+    using PatchMap = std::function<
+      void(const double, const double, dealii::Point<dim> &, dealii::Tensor<1, dim> &)>;
+
+    /**
+     * Whether a part of the boundary other than the hole @p own_hole (balls first, then
+     * cylinders; -1: none) comes within @p radius of @p p: a hole surface, and, with
+     * @p boxes_too, a box face.
+     */
+    bool
+    near_cut(const dealii::Point<dim> &p,
+             const double              radius,
+             const int                 own_hole,
+             const bool                boxes_too) const;
+
+    /**
+     * Add the element of the patch @p map over @p range = {s0, s1, t0, t1}: the integral of the
+     * normal over the part of it on the boundary (two-point Gauss rule in each direction, on 8 x 8
+     * sub-patches kept by their centres if another part of the boundary crosses it, near_cut()),
+     * at the point of the patch at the mean parameter of that part. Nothing if no part is on the
+     * boundary.
+     */
+    void
+    add_patch(std::vector<SurfaceElement> &elements,
+              const PatchMap              &map,
+              const std::array<double, 4> &range,
+              const int                    own_hole,
+              const bool                   boxes_cut) const;
+
+    /**
+     * 3D boxes minus holes: box faces cut along the other boxes' edges into rectangles of side at
+     * most @p spacing; ball holes as six patches of a cube projected onto the sphere, cylinder
+     * holes in angle and along the axis, both divided to about @p spacing.
+     */
+    std::vector<SurfaceElement>
+    box_surface_elements_3d(const double spacing) const;
+
+    /**
+     * 3D level sets: one element in each sampling cube (edge at most @p spacing) the zero
+     * surface crosses, with the integral of the normal over the surface in it from the
+     * divergence theorem (exact closure), at the mean of its edge crossings projected onto the
+     * zero set.
+     */
+    std::vector<SurfaceElement>
+    level_set_surface_elements_3d(const double              spacing,
+                                  const dealii::Point<dim> &lower,
+                                  const dealii::Point<dim> &upper) const;
+
+    /**
+     * Whether @p p lies on the face with outward @p normal (a coordinate direction) of one of the
+     * boxes before @p box: where faces of two boxes coincide, the first box's face alone is
+     * boundary.
+     */
+    bool
+    on_earlier_box_face(const unsigned int            box,
+                        const dealii::Point<dim>     &p,
+                        const dealii::Tensor<1, dim> &normal) const;
+
     /** Whether the point just outside (inside) @p p along @p normal is (not) in the body. */
     bool
     on_boundary(const dealii::Point<dim> &p, const dealii::Tensor<1, dim> &normal) const;
@@ -217,6 +322,7 @@ namespace GelMPM
 
     std::vector<std::pair<dealii::Point<dim>, dealii::Point<dim>>> boxes;
     std::vector<std::pair<dealii::Point<dim>, double>>             holes;
+    std::vector<Cylinder>                                          cylinders;
 
     // Shared, not unique: a Geometry stays copyable, and neither is changed after parsing.
     std::shared_ptr<dealii::FunctionParser<dim>> phi;
