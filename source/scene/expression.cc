@@ -132,7 +132,11 @@ namespace GelMPM
       }
     catch (const mu::Parser::exception_type &e)
       {
-        throw std::invalid_argument(e.GetMsg());
+        // Without muParser's closing full stop: the InputError adds its own punctuation.
+        std::string message = e.GetMsg();
+        while (!message.empty() && (message.back() == '.' || message.back() == ' '))
+          message.pop_back();
+        throw std::invalid_argument(message);
       }
   }
 
