@@ -126,6 +126,13 @@ namespace GelMPM
     pore_piece = -1;
     if (!pore_name.empty())
       {
+        // A pore's outline is a polyline ordered by angle about its centre: a curve in the
+        // plane. In 3D the points of a pore's surface form no such curve.
+        require(dim == 2,
+                "Observables/Pore piece",
+                "is set in a 3D scene, but pore outlines (ratios, turning, creases) are measured "
+                "in 2D only",
+                "leave 'Pore piece' empty in 3D");
         const auto it = std::find(pieces.begin(), pieces.end(), pore_name);
         require(it != pieces.end(),
                 "Observables/Pore piece",
