@@ -14,18 +14,8 @@
 set -euo pipefail
 
 top="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
-build_dir="${GELMPM_BUILD_DIR:-${top}/build}"
-update_doc=0
-out=""
-for argument in "$@"; do
-  case "${argument}" in
-    --update-doc) update_doc=1 ;;
-    *) out="${argument}" ;;
-  esac
-done
-out="${out:-${top}/output/paper_suite}"
-mkdir -p "${out}"
-[[ -x /usr/bin/time ]] || { echo "paper_suite.sh: needs /usr/bin/time (apt-get install time)" >&2; exit 1; }
+source "${top}/contrib/benchmarks/doc_driver.sh"
+doc_driver_arguments paper_suite "$@"
 echo "paper_suite.sh: about 25 minutes on a 2-core machine; results in ${out}"
 
 run_case() {

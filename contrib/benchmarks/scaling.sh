@@ -15,18 +15,8 @@
 set -euo pipefail
 
 top="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
-build_dir="${GELMPM_BUILD_DIR:-${top}/build}"
-update_doc=0
-out=""
-for argument in "$@"; do
-  case "${argument}" in
-    --update-doc) update_doc=1 ;;
-    *) out="${argument}" ;;
-  esac
-done
-out="${out:-${top}/output/scaling}"
-mkdir -p "${out}"
-[[ -x /usr/bin/time ]] || { echo "scaling.sh: needs /usr/bin/time (apt-get install time)" >&2; exit 1; }
+source "${top}/contrib/benchmarks/doc_driver.sh"
+doc_driver_arguments scaling "$@"
 # Open MPI refuses root unless told twice (containers).
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 echo "scaling.sh: about 6 minutes on a 2-core machine; results in ${out}"
@@ -88,15 +78,5 @@ table="${out}/scaling.md"
 cat "${table}"
 
 if [[ ${update_doc} -eq 1 ]]; then
-  doc="${top}/doc/scaling.md"
-  /usr/bin/python3 - "${doc}" "${table}" <<'EOF'
-import sys
-doc, table = sys.argv[1], open(sys.argv[2]).read()
-text = open(doc).read()
-begin, end = "<!-- scaling: begin -->", "<!-- scaling: end -->"
-head, rest = text.split(begin)
-_, tail = rest.split(end)
-open(doc, "w").write(head + begin + "\n" + table + end + tail)
-EOF
-  echo "scaling.sh: table written into ${doc}"
+  write_between_markers "${top}/doc/scaling.md" scaling "${table}"
 fi

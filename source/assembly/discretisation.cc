@@ -195,6 +195,24 @@ namespace GelMPM
 
 
   template <int dim>
+  std::vector<double>
+  DiscreteSpaces<dim>::u_dof_greville_points() const
+  {
+    std::vector<double> points(n_u_dofs(), 0.);
+    for (unsigned int i = 0; i < u_space_.n_functions(); ++i)
+      {
+        const unsigned int dof = u_->dof_of_control_point(i);
+        if (dof == dealii::numbers::invalid_unsigned_int)
+          continue;
+        const auto index = u_space_.function_multi_index(i);
+        for (unsigned int d = 0; d < dim; ++d)
+          points[dim * dof + d] = u_space_.basis_1d(d).greville(index[d]);
+      }
+    return points;
+  }
+
+
+  template <int dim>
   unsigned int
   DiscreteSpaces<dim>::n_u_dofs() const
   {

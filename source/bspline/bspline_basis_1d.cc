@@ -78,6 +78,16 @@ namespace GelMPM
 
 
   double
+  BSplineBasis1D::greville(const unsigned int j) const
+  {
+    double sum = 0.;
+    for (unsigned int k = 1; k <= degree(); ++k)
+      sum += knot(j + k);
+    return sum / degree();
+  }
+
+
+  double
   BSplineBasis1D::knot(const int i) const
   {
     const int k = std::clamp(i - static_cast<int>(degree_), 0, static_cast<int>(n_cells_));

@@ -87,6 +87,12 @@ namespace GelMPM
                 std::to_string(dealii::Utilities::MPI::n_mpi_processes(scene.communicator)) +
                 " ranks",
               "run the scene on one rank (without mpirun) or set the entry to false");
+    require(!linear_solver.iterative() || !Collective::is_parallel(scene.communicator),
+            "Linear solver/Solver",
+            "is Krylov, which reads the blocks of the tangent on one MPI rank, but the run has " +
+              std::to_string(dealii::Utilities::MPI::n_mpi_processes(scene.communicator)) +
+              " ranks",
+            "run the scene on one rank or use MUMPS");
     require(stability.perturbation_direction.size() >= dim,
             "Stability/Perturbation direction",
             "has fewer components than the scene's dimension " + std::to_string(dim),
@@ -774,6 +780,10 @@ namespace GelMPM
             linear_solver.new_pattern();
           }))
         ++n_new_patterns;
+      if (linear_solver.iterative())
+        linear_solver.set_block_structure(scene.spaces->n_u_dofs(),
+                                          dim,
+                                          scene.spaces->u_dof_greville_points());
       if (!resumed_tangent.empty())
         {
           if (scene.system->restore_tangent(resumed_classification, resumed_tangent))
@@ -1246,6 +1256,12 @@ namespace GelMPM
     if (!output_settings.test_mode && Collective::is_parallel(scene.communicator))
       pcout << ", " << dealii::Utilities::MPI::n_mpi_processes(scene.communicator)
             << " ranks, partitioned anew " << n_repartitions << " times";
+    if (!output_settings.test_mode && linear_solver.iterative())
+      {
+        const auto [iterations, solves] = linear_solver.krylov_iterations();
+        pcout << ", " << iterations << " Krylov iterations in " << solves << " solves ("
+              << (solves > 0 ? double(iterations) / solves : 0.) << " per solve)";
+      }
     if (!output_settings.test_mode)
       pcout << std::endl;
     if (!output_settings.test_mode)

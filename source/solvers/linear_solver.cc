@@ -25,12 +25,31 @@ namespace GelMPM
     prm.enter_subsection("Linear solver");
     prm.declare_entry("Solver",
                       "MUMPS",
-                      dealii::Patterns::Selection("KLU|MUMPS"),
-                      "Sparse direct solver for the Newton system: MUMPS (multifrontal, fast "
+                      dealii::Patterns::Selection("KLU|MUMPS|Krylov"),
+                      "Solver for the Newton system: MUMPS (sparse direct, multifrontal, fast "
                       "with an optimised BLAS such as OpenBLAS; the default; LDL^T for the "
-                      "symmetric tangent of the symmetric Nitsche variant, LU otherwise) or KLU "
+                      "symmetric tangent of the symmetric Nitsche variant, LU otherwise), KLU "
                       "(LU, no BLAS; slower on the wide stencils of B-splines, "
-                      "doc/performance.md).");
+                      "doc/performance.md), or Krylov: GMRES with algebraic multigrid on the "
+                      "displacement block (rigid-body modes) and a direct solve of an "
+                      "approximate Schur complement of mu (one MPI rank; doc/performance.md, "
+                      "'Iterative solver'). With 'Stability' on, the analysis factorises the "
+                      "tangent itself.");
+    prm.declare_entry("Krylov tolerance",
+                      "1e-8",
+                      dealii::Patterns::Double(1e-14, 0.1),
+                      "Krylov: the reduction of the residual each linear solve must reach. "
+                      "Newton converges to its own tolerance as long as this is well below the "
+                      "contraction of its iterations.");
+    prm.declare_entry("Krylov iterations",
+                      "500",
+                      dealii::Patterns::Integer(1),
+                      "Krylov: the most iterations of one solve; a solve that needs more fails, "
+                      "and the time step is retried shorter.");
+    prm.declare_entry("Krylov restart",
+                      "200",
+                      dealii::Patterns::Integer(1),
+                      "Krylov: the GMRES restart length (memory: this many vectors).");
     prm.leave_subsection();
   }
 
@@ -39,7 +58,11 @@ namespace GelMPM
   LinearSolver::parse_parameters(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection("Linear solver");
-    solver_type = (prm.get("Solver") == "MUMPS") ? "Amesos_Mumps" : "Amesos_Klu";
+    const std::string solver = prm.get("Solver");
+    solver_type = solver == "MUMPS" ? "Amesos_Mumps" : solver == "KLU" ? "Amesos_Klu" : "Krylov";
+    krylov_settings.relative_tolerance = prm.get_double("Krylov tolerance");
+    krylov_settings.max_iterations     = prm.get_integer("Krylov iterations");
+    krylov_settings.restart            = prm.get_integer("Krylov restart");
     prm.leave_subsection();
   }
 
@@ -59,6 +82,31 @@ namespace GelMPM
   }
 
 
+  bool
+  LinearSolver::iterative() const
+  {
+    return solver_type == "Krylov";
+  }
+
+
+  void
+  LinearSolver::set_block_structure(const unsigned int         n_u,
+                                    const unsigned int         dim,
+                                    const std::vector<double> &u_dof_points)
+  {
+    // The same unknowns at the same places keep the preconditioner for modified Newton.
+    if (krylov.set_structure(n_u, dim, u_dof_points))
+      factorized = false;
+  }
+
+
+  std::pair<unsigned long, unsigned long>
+  LinearSolver::krylov_iterations() const
+  {
+    return {n_krylov_iterations, n_krylov_solves};
+  }
+
+
   void
   LinearSolver::new_pattern() const
   {
@@ -75,7 +123,12 @@ namespace GelMPM
   {
     const Epetra_CrsMatrix &matrix = K.trilinos_matrix();
     factorized                     = false;
-    if (uses_ldlt())
+    if (iterative())
+      {
+        krylov.setup(K, krylov_settings);
+        ++symbolic_count;
+      }
+    else if (uses_ldlt())
       {
         try
           {
@@ -161,7 +214,12 @@ namespace GelMPM
   {
     if (!factorized)
       throw std::logic_error("LinearSolver::solve() without a factorisation");
-    if (ldlt)
+    if (iterative())
+      {
+        n_krylov_iterations += krylov.solve(x, b);
+        ++n_krylov_solves;
+      }
+    else if (ldlt)
       {
         x = b;
         ldlt->solve(x);
@@ -256,6 +314,6 @@ namespace GelMPM
   std::string
   LinearSolver::name() const
   {
-    return uses_ldlt() ? "MUMPS LDL^T" : solver_type;
+    return uses_ldlt() ? "MUMPS LDL^T" : iterative() ? "GMRES with AMG and Schur" : solver_type;
   }
 } // namespace GelMPM

@@ -2,14 +2,7 @@
 set -u
 gelmpm="$1"
 scene="$2"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work" || exit 1
-fail=0
-
-check() { # check CONDITION-STATUS MESSAGE
-  [[ $1 -eq 0 ]] || { echo "FAIL: $2"; fail=1; }
-}
+source "$(dirname "${BASH_SOURCE[0]}")/../scratch.sh"
 
 # Every row of results/statistics.csv has as many fields as the header and ends with a newline.
 check_statistics() {

@@ -1,17 +1,10 @@
-# Sourced by the MPI tests: arguments, a scratch directory, runs on one and on two ranks, checks.
+# Sourced by the tests that run on MPI ranks: arguments, scratch directory, runs, checks.
 set -u
 gelmpm="$1"
 compare="$2"
 mpiexec="$3"
 source_dir="$4"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work" || exit 1
-fail=0
-
-check() { # check CONDITION-STATUS MESSAGE
-  [[ $1 -eq 0 ]] || { echo "FAIL: $2"; fail=1; }
-}
+source "$(dirname "${BASH_SOURCE[0]}")/../scratch.sh"
 
 # run_both SCENE [--set ...]: the scene into one/ on one rank and two/ on two ranks.
 run_both() {

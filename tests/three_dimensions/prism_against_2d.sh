@@ -14,13 +14,7 @@ set -u
 gelmpm="$1"
 compare="$2"
 source_dir="$3"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work" || exit 1
-fail=0
-check() { # check CONDITION-STATUS MESSAGE
-  if [[ $1 -eq 0 ]]; then echo "PASS: $2"; else echo "FAIL: $2"; fail=1; fi
-}
+source "$(dirname "${BASH_SOURCE[0]}")/../scratch.sh"
 
 common=(--set "Time stepping/End time=0.02" --set "Time stepping/Tolerance=1e-2"
         --set "Time stepping/Growth factor=2" --set "Time stepping/Step caps="

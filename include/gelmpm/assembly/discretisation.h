@@ -98,6 +98,14 @@ namespace GelMPM
     unsigned int
     mu_cell_of(const unsigned int u_cell) const;
 
+    /**
+     * Per displacement unknown (n_u_dofs() of them, components interleaved), the coordinate of
+     * its component's direction at the Greville point of its control point: the coefficient of
+     * the linear field x_c in component c. (Rigid-body modes for algebraic multigrid.)
+     */
+    std::vector<double>
+    u_dof_greville_points() const;
+
     /** Number of displacement unknowns (dim per DoF of the extended u space). */
     unsigned int
     n_u_dofs() const;

@@ -56,6 +56,13 @@ namespace GelMPM
              const unsigned int n_derivatives,
              double            *values) const;
 
+    /**
+     * The Greville abscissa of function @p j, the mean of its interior knots: sum_j greville(j)
+     * N_j(x) = x, so these are the coefficients of a linear field.
+     */
+    double
+    greville(const unsigned int j) const;
+
   private:
     /** Knot i of the open knot vector (q+1 repeated end knots). */
     double

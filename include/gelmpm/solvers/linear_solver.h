@@ -2,6 +2,7 @@
 #define gelmpm_solvers_linear_solver_h
 
 #include <gelmpm/core/sparse_entries.h>
+#include <gelmpm/solvers/block_krylov.h>
 #include <gelmpm/stability/symmetric_factorization.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -32,6 +33,11 @@ namespace GelMPM
    * inertia comes with it); otherwise, or with KLU, by Trilinos' Amesos (Amesos_Mumps,
    * Amesos_Klu), used directly rather than through TrilinosWrappers::SolverDirect to keep the
    * symbolic factorisation.
+   *
+   * "Krylov" instead solves iteratively (BlockKrylov: GMRES with AMG on the displacement block
+   * and an approximate Schur complement of mu): factorize() builds the preconditioner, solve()
+   * iterates. It needs the block structure (set_block_structure()) after every change of the
+   * unknowns, and runs on one MPI rank.
    */
   class LinearSolver
   {
@@ -121,6 +127,23 @@ namespace GelMPM
     bool
     uses_ldlt() const;
 
+    /** Whether the Newton systems are solved iteratively ("Krylov"). */
+    bool
+    iterative() const;
+
+    /**
+     * For the iterative solver: the number of displacement unknowns (dim interleaved components
+     * per DoF, before mu's) and each one's Greville-point coordinate (BlockKrylov::set_structure).
+     */
+    void
+    set_block_structure(const unsigned int         n_u,
+                        const unsigned int         dim,
+                        const std::vector<double> &u_dof_points);
+
+    /** Krylov iterations of all solves so far, and the number of solves. */
+    std::pair<unsigned long, unsigned long>
+    krylov_iterations() const;
+
   private:
     std::string solver_type = "Amesos_Mumps";
     bool        symmetric   = false;
@@ -135,6 +158,9 @@ namespace GelMPM
     mutable SparseEntries           factorized_entries;
     mutable unsigned int            symbolic_count = 0;
     mutable unsigned int            numeric_count  = 0;
+    mutable BlockKrylov             krylov;
+    BlockKrylov::Settings           krylov_settings;
+    mutable unsigned long           n_krylov_iterations = 0, n_krylov_solves = 0;
   };
 } // namespace GelMPM
 

@@ -1,0 +1,51 @@
+# GMRES with AMG and the approximate Schur complement (Linear solver/Solver = Krylov) solves the
+# same Newton systems as MUMPS: the runs must take the same steps with the same Newton iterations
+# (within one: modified Newton's reuse decisions see residuals at the linear tolerance) and give
+# the same physical statistics to 1e-6 of each column's largest value (each solve reduces the
+# residual by 1e-8; Newton stops at its own tolerance). Checked on
+# - §4.1 (prm/constrained_swelling.prm) to 0.5 tau_d with the paper's step control;
+# - the undrained limit, 3 steps of dt = 1e-6 tau_d on §4.1, where the mu block C vanishes and
+#   the Schur approximation rests on the coupling alone: at most 50 Krylov iterations per solve
+#   (measured 35);
+# - 3D, 2 steps of the free-swelling cube (prm/free_swelling_cube.prm) at 14^3 cells: the AMG
+#   with six rigid-body modes;
+# and the refusal of Krylov on two MPI ranks (exit 2, the entry named).
+# Same arguments as the MPI tests (gelmpm, compare tool, mpiexec, source directory).
+source "$(dirname "${BASH_SOURCE[0]}")/../mpi/common.sh"
+# run NAME SCENE [--set ...]: one run with each solver, NAME_MUMPS and NAME_Krylov.
+run() {
+  local name="$1" scene="$2"
+  shift 2
+  for solver in MUMPS Krylov; do
+    "$gelmpm" "$source_dir/prm/$scene" --set "Output/Directory=${name}_${solver}" \
+      --set "Output/Write particles=false" --set "Linear solver/Solver=${solver}" "$@" \
+      > "${name}_${solver}.log" 2>&1
+    check $? "$name with $solver finished ($(grep -m1 'reached\|error\|failed' "${name}_${solver}.log"))"
+  done
+  "$compare" --relative 1e-6 --newton 1 "${name}_MUMPS/statistics.csv" "${name}_Krylov/statistics.csv" \
+    > "${name}_compare.log"
+  check $? "$name: Krylov and MUMPS statistics agree ($(tail -1 "${name}_compare.log"))"
+}
+fixed_steps() { # fixed_steps DT STEPS: the entries for STEPS steps of DT, in ${steps[@]}
+  steps=(--set "Time stepping/Initial step=$1" --set "Time stepping/Growth factor=1"
+         --set "Time stepping/Step caps=" --set "Time stepping/Stop at times="
+         --set "Time stepping/End time=$(awk -v d="$1" -v n="$2" 'BEGIN { print d * n }')")
+}
+
+run swelling constrained_swelling.prm --set "Time stepping/End time=0.5" \
+  --set "Time stepping/Stop at times=0.5"
+fixed_steps 1e-6 3
+run undrained constrained_swelling.prm "${steps[@]}"
+per_solve=$(grep -o "([0-9.e+-]* per solve)" undrained_Krylov.log | tr -d '(' | awk '{print $1}')
+awk -v p="${per_solve:-1e9}" 'BEGIN { exit !(p <= 50) }'
+check $? "undrained limit: ${per_solve:-no} Krylov iterations per solve (at most 50)"
+fixed_steps 0.01 2
+run cube free_swelling_cube.prm "${steps[@]}" --set "Background grid/Cells=14, 14, 14" \
+  --set "Time stepping/Tolerance=0"
+
+"$mpiexec" -n 2 --oversubscribe "$gelmpm" "$source_dir/prm/constrained_swelling.prm" \
+  --set "Output/Directory=two_ranks" --set "Linear solver/Solver=Krylov" > two_ranks.log 2>&1
+status=$?
+[[ $status -eq 2 ]] && grep -q "Linear solver/Solver" two_ranks.log && [[ ! -e two_ranks/statistics.csv ]]
+check $? "Krylov on two ranks: exit 2 (got $status), the entry named, nothing written"
+finish
