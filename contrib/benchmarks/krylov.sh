@@ -7,7 +7,7 @@
 #      the counts measure the Schur approximation alone) and on 40 x 320 (two AMG levels);
 #   2. against h: §4.1 on 20 x 160, 40 x 320 and 80 x 640 cells (3 points per cell), dt = 1e-2;
 #   3. wall time and peak memory of Krylov and MUMPS on the same steps, in 2D (the grids of 2)
-#      and 3D (prm/free_swelling_cube.prm at 26^3 and 34^3 cells, dt = 1e-3: at 34^3, dt = 1e-2
+#      and 3D (prm/free_swelling_cube.prm at 26^3, 34^3 and 50^3 cells, dt = 1e-3: at 34^3, dt = 1e-2
 #      takes both solvers into step-size cuts from the second step on).
 # Every case takes a few steps of a fixed dt (Growth factor 1, no caps, no tolerance) so that
 # each solver solves the same systems; the Newton iteration counts of the two must agree, and
@@ -96,7 +96,7 @@ for grid in "${grids[@]}"; do
   done
 done
 # 3. 3D.
-cubes=(26 34)
+cubes=(26 34 50)
 for n in "${cubes[@]}"; do
   for solver in Krylov MUMPS; do
     run_case "h3d_${n}_${solver}" "${cube}" "${solver}" 1e-3 2 --set "Background grid/Cells=${n}, ${n}, ${n}"
