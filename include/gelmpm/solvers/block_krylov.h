@@ -20,14 +20,15 @@ namespace GelMPM
    *
    * With K = [A B^T'; B C] (A = K_uu, B = K_mu,u, B^T' = K_u,mu, C = K_mu,mu) the preconditioner
    * is the lower block triangle [A 0; B S], applied as y_u = AMG(A)^{-1} r_u and
-   * y_mu = S^{-1} (r_mu - B y_u), with S = C - B diag(A)^{-1} B^T'. Right-preconditioned GMRES
+   * y_mu = S^{-1} (r_mu - B y_u), with S = C - B |diag(A)|^{-1} B^T'. Right-preconditioned GMRES
    * with the exact A and S would converge in two iterations. The approximation of S keeps both
    * limits: for large dt the mu block C (dt times the mobility's Laplacian) dominates S, and in
-   * the undrained limit dt -> 0, where C vanishes, the coupling term B diag(A)^{-1} B^T' alone
+   * the undrained limit dt -> 0, where C vanishes, the coupling term B |diag(A)|^{-1} B^T' alone
    * keeps S definite, as it does for the pressure of nearly incompressible elasticity; the
    * subdivision-stabilised pair (mu on the 2h grid) keeps the pair inf–sup stable, so S stays
    * bounded away from zero. mu has few unknowns (the coarse grid's, one per node), so S is
-   * factorised directly (UMFPACK).
+   * factorised directly (UMFPACK). The absolute value keeps the sign of S where a strongly
+   * compressed point makes a diagonal entry of A negative.
    *
    * Serial: the blocks are read from the rows of the matrix on one process.
    */
@@ -58,8 +59,8 @@ namespace GelMPM
 
     /**
      * Build the preconditioner of @p K: the blocks, the AMG hierarchy of A and the factorised
-     * approximate Schur complement. Throws std::runtime_error if a diagonal entry of A is not
-     * positive or S cannot be factorised.
+     * approximate Schur complement. Throws std::runtime_error if a diagonal entry of A is zero or
+     * not finite, or S cannot be factorised.
      */
     void
     setup(const dealii::TrilinosWrappers::SparseMatrix &K, const Settings &settings);
