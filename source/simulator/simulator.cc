@@ -727,9 +727,10 @@ namespace GelMPM
   {
     // The first step has no predictor: its estimate would be the whole motion.
     const bool displacement_rule = time_stepping.displacement_tolerance > 0.;
-    // A step more than ten times the last (after a landing on a stop time) would amplify the
-    // last step's noise into its predictor: no estimate of the tolerance rule for it.
-    const bool tolerance_rule = time_stepping.tolerance > 0. && dt <= 10. * last_dt;
+    // A step far longer than the last (after a landing on a stop time) would amplify the last
+    // step's noise into its predictor: no estimate of the tolerance rule for it.
+    const bool tolerance_rule =
+      time_stepping.tolerance > 0. && StepControl::estimate_applies(dt, last_dt);
     if (!(displacement_rule || tolerance_rule) || !(last_dt > 0.))
       return true;
     const double difference =

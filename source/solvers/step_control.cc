@@ -96,6 +96,10 @@ namespace GelMPM
     const double factor = 0.9 / excess;
     if (excess <= 1.)
       {
+        // A first attempt that meets the tolerance shows the estimate resolving the error
+        // again; a retake that does may only have met the noise at a lucky moment.
+        if (retaken_step == 0.)
+          noise_rate = 0.;
         error_limit  = current * factor;
         retaken_step = 0.;
         first_retake = 0.;
@@ -109,16 +113,17 @@ namespace GelMPM
     const double noise_exponent = estimate.per_unit_time ? 0.5 : 0.25;
     if (retaken_step > current &&
         excess > retaken_excess * std::pow(current / retaken_step, noise_exponent))
+      return accept_as_noise(estimate.per_unit_time);
+    double shorter = current * std::clamp(factor, 0.2, 0.9);
+    // Below the relative step at which the estimate showed its noise it cannot tell an error
+    // from noise: a retake goes no shorter, and an attempt at that size is accepted.
+    if (estimate.per_unit_time && noise_rate > 0. && noise_rate < 1.)
       {
-        uncontrolled = true;
-        retaken_step = 0.;
-        // The next step need not stay as short as the retakes made this one: shorter steps
-        // would not meet the tolerance either.
-        noise_step   = estimate.per_unit_time ? first_retake : 0.;
-        first_retake = 0.;
-        return true;
+        const double floor = noise_rate * time_ / (1. - noise_rate);
+        if (current <= floor * (1. + relative_time_tolerance))
+          return accept_as_noise(true);
+        shorter = std::max(shorter, floor);
       }
-    const double shorter = current * std::clamp(factor, 0.2, 0.9);
     if (shorter < settings_.minimum_step)
       return true;
     if (retaken_step == 0.)
@@ -128,6 +133,28 @@ namespace GelMPM
     bisecting      = false;
     proposed       = shorter;
     return false;
+  }
+
+
+  bool
+  StepControl::estimate_applies(const double dt, const double last_dt)
+  {
+    return last_dt > 0. && dt <= estimate_reach * last_dt * (1. + relative_time_tolerance);
+  }
+
+
+  bool
+  StepControl::accept_as_noise(const bool per_unit_time)
+  {
+    uncontrolled = true;
+    retaken_step = 0.;
+    // The next step need not stay as short as the retakes made this one: shorter steps would
+    // not meet the tolerance either.
+    noise_step = per_unit_time ? first_retake : 0.;
+    if (per_unit_time)
+      noise_rate = current / (time_ + current);
+    first_retake = 0.;
+    return true;
   }
 
 
@@ -230,7 +257,7 @@ namespace GelMPM
     if (error_limit > 0. && full_step)
       proposed = std::min(proposed, error_limit);
     if (noise_step > 0.)
-      proposed = std::max(proposed, noise_step);
+      proposed = std::max(proposed, std::min(noise_step, estimate_reach * current));
     noise_step   = 0.;
     error_limit  = 0.;
     retaken_step = 0.;

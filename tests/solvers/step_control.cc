@@ -264,5 +264,54 @@ main()
     noise.accept(3);
     ok = ok && close(noise.time(), 0.0225) && close(noise.attempt(), 0.1);
     std::cout << "integration noise is accepted and does not shrink the steps: " << ok << std::endl;
+
+    // After cuts by more than StepControl::estimate_reach, the next step starts at most that
+    // far above the accepted one: its error is then estimated, not taken unchecked.
+    s.minimum_step = 1e-6;
+    StepControl far(s);
+    far.attempt();                                                         // 0.1
+    ok = !judge_tolerance(far, 1000.) && close(far.attempt(), 0.02);       // clamped to 0.2
+    ok = ok && !judge_tolerance(far, 200.) && close(far.attempt(), 0.004); // shrank: an error
+    ok = ok && !judge_tolerance(far, 40.) && close(far.attempt(), 0.0008);
+    ok = ok && judge_tolerance(far, 39.) && far.error_uncontrolled(); // 40 sqrt(0.2) = 17.9
+    far.accept(3);
+    ok = ok && close(far.attempt(), 0.008) &&
+         StepControl::estimate_applies(far.attempt_size(), 0.0008) &&
+         !StepControl::estimate_applies(0.1, 0.0008);
+    std::cout << "after noise the next step stays within reach of the error estimate: " << ok
+              << std::endl;
+
+    // Noise accepted at t = 0.1, dt = 0.025 (a relative step 0.025 / 0.125 = 0.2): from
+    // t = 0.125 a retake goes no shorter than 0.2 t / (1 - 0.2) = 0.03125, and an attempt of
+    // that size is accepted as noise.
+    StepControl fl(s);
+    fl.attempt(); // 0.1
+    ok = judge_tolerance(fl, 0.5);
+    fl.accept(3);
+    ok =
+      ok && close(fl.attempt(), 0.125) && !judge_tolerance(fl, 10.) && close(fl.attempt(), 0.025);
+    ok = ok && judge_tolerance(fl, 9.) && fl.error_uncontrolled(); // 10 sqrt(0.2) = 4.5
+    fl.accept(3);
+    ok = ok && close(fl.time(), 0.125) && close(fl.attempt(), 0.125) &&
+         !judge_tolerance(fl, 100.) && close(fl.attempt(), 0.03125);
+    ok = ok && judge_tolerance(fl, 100.) && fl.error_uncontrolled();
+    fl.accept(3);
+    // A retake that meets the tolerance keeps the floor (t / 4 here): the next attempt, 1.25
+    // times that retake, lies below the floor at its own start and is accepted as noise.
+    fl.attempt();
+    ok = ok && !judge_tolerance(fl, 100.) && close(fl.attempt(), fl.time() / 4.);
+    ok = ok && judge_tolerance(fl, 0.5) && !fl.error_uncontrolled();
+    fl.accept(3);
+    fl.attempt();
+    ok = ok && judge_tolerance(fl, 100.) && fl.error_uncontrolled();
+    fl.accept(3);
+    // Once a first attempt meets the tolerance the floor is gone: a retake is 0.2 of it again.
+    fl.attempt();
+    ok = ok && judge_tolerance(fl, 0.5) && !fl.error_uncontrolled();
+    fl.accept(3);
+    const double after = fl.attempt();
+    ok                 = ok && !judge_tolerance(fl, 4.5) && close(fl.attempt(), after * 0.2);
+    std::cout << "noise sets a floor on the relative step until the estimate resolves the error: "
+              << ok << std::endl;
   }
 }

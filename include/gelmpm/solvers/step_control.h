@@ -52,6 +52,17 @@ namespace GelMPM
   class StepControl
   {
   public:
+    /**
+     * The error estimates extrapolate the last step's motion to the current one (a predictor):
+     * beyond this ratio of the steps the extrapolation amplifies the last step's noise more
+     * than it measures this step's error, and a loop does not estimate (estimate_applies()).
+     */
+    static constexpr double estimate_reach = 10.;
+
+    /** Whether a step @p dt after an accepted step @p last_dt is within estimate_reach of it. */
+    static bool
+    estimate_applies(const double dt, const double last_dt);
+
     /** What judge_signature() decided about a converged attempt. */
     enum class Verdict
     {
@@ -166,8 +177,14 @@ namespace GelMPM
      * last retaken attempt for the displacement rule, the square root for 'Tolerance'), so
      * that it is no time-stepping error but a jump in the last step's motion (a perturbation,
      * a change of branch) or the points' integration noise: error_uncontrolled() is then true,
-     * and with 'Tolerance' the next step starts again from the first retaken attempt. An
-     * accepted estimate bounds the next step by dt 0.9 / excess.
+     * and with 'Tolerance' the next step starts again from the first retaken attempt, but at
+     * most estimate_reach times the accepted step, so that its error is estimated (an unchecked
+     * long step would put its own error into the next step's predictor, which then looks like
+     * noise again). From then on, until the first attempt of a step meets the tolerance, the
+     * 'Tolerance' rule retakes no shorter than the relative step dt / (t + dt) of the attempt
+     * accepted as noise and accepts an attempt of that size: below it the estimate cannot tell an
+     * error from noise, and without that floor the retakes would ratchet the step down to the
+     * minimum. An accepted estimate bounds the next step by dt 0.9 / excess.
      */
     bool
     judge_error(const ErrorExcess &excess);
@@ -228,11 +245,16 @@ namespace GelMPM
     serialize(Archive &ar, const unsigned int)
     {
       ar &onset_seen_ &time_ &step_ &proposed &current &attempt_limit &error_limit &retaken_step
-        &retaken_excess &first_retake &noise_step &uncontrolled &stable_ &bisecting &unstable_time
-          &bracket_;
+        &retaken_excess &first_retake &noise_step &noise_rate &uncontrolled &stable_ &bisecting
+          &unstable_time &bracket_;
     }
 
   private:
+    /** Accept the current attempt as one whose excess is not a time-stepping error
+     * (judge_error()). */
+    bool
+    accept_as_noise(const bool per_unit_time);
+
     TimeStepping settings_;
     double       bisection_tolerance;
     double       unstable_step;
@@ -249,6 +271,7 @@ namespace GelMPM
     double       retaken_excess = 0.;
     double       first_retake   = 0.; // the first attempt of the step the error retook
     double       noise_step     = 0.; // the next step after an uncontrolled excess
+    double       noise_rate     = 0.; // dt / (t + dt) of the last attempt accepted as noise
     bool         uncontrolled   = false;
     bool         stable_        = true;
     bool         bisecting      = false;
