@@ -456,8 +456,31 @@ namespace GelMPM
 
   template <int dim>
   void
-  MixedSystem<dim>::set_boundary_values(const double t_over_tau_d)
+  MixedSystem<dim>::set_boundary_values(const double t_over_tau_d, const double step_start)
   {
+    // The symmetric Nitsche term of a prescribed displacement adds (g (x) N) : dP/dmu A to the
+    // mu equation, a balance of the solvent gained over the step: like the volume points'
+    // J_n, its value at the start of the step is subtracted, or the violation g left by
+    // every step would add solvent again at the next, however short (doc/method.md).
+    boundary_conditions.set_time(step_start);
+    for (auto &r : points)
+      {
+        r.adjoint_solvent_n = 0.;
+        if (r.kind == PointKind::volume || r.piece < 0 || nitsche.symmetry == 0.)
+          continue;
+        const auto &piece = boundary_conditions.piece(r.piece);
+        if (!piece.displacement_prescribed())
+          continue;
+        const Point<dim> X0 = r.x - r.u_n;
+        Tensor<1, dim>   u_bar_n;
+        for (unsigned int d = 0; d < dim; ++d)
+          u_bar_n[d] = piece.displacement_value().value(X0, d);
+        const auto start =
+          material.incremental(dealii::unit_symmetric_tensor<dim>(), r.mu_n, r.F_p);
+        r.adjoint_solvent_n =
+          r.measure *
+          dealii::scalar_product(outer(r.projector * (r.u_n - u_bar_n), r.normal), start.dP_n_dmu);
+      }
     boundary_conditions.set_time(t_over_tau_d);
     for (auto &r : points)
       {
@@ -714,14 +737,18 @@ namespace GelMPM
       }
 
     if (piece.displacement_prescribed())
-      add_displacement_nitsche(point,
-                               point.projector,
-                               point.projector * (point.u_n + s.du_at_point - point.u_bar),
-                               nitsche.displacement_penalty * material.shear_modulus() /
-                                 spaces_.h_u(),
-                               with_matrix,
-                               s,
-                               copy);
+      {
+        add_displacement_nitsche(point,
+                                 point.projector,
+                                 point.projector * (point.u_n + s.du_at_point - point.u_bar),
+                                 nitsche.displacement_penalty * material.shear_modulus() /
+                                   spaces_.h_u(),
+                                 with_matrix,
+                                 s,
+                                 copy);
+        for (unsigned int b = 0; b < s.n_mu; ++b)
+          r(mu0 + b) += sym * point.adjoint_solvent_n * s.M[b];
+      }
     else if (contact.enabled())
       add_plane_contact(point, with_matrix, s, copy);
 

@@ -808,7 +808,7 @@ namespace GelMPM
       {
         const double t_begin = control->time();
         const double step_dt = control->attempt();
-        scene.system->set_boundary_values(t_begin + step_dt);
+        scene.system->set_boundary_values(t_begin + step_dt, t_begin);
         initial_guess(solution, step_dt);
         NewtonReport report = solve_newton(*scene.system,
                                            solution,

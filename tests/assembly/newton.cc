@@ -23,7 +23,7 @@ main(int argc, char **argv)
   Vector<double> x(spaces.n_dofs()), dx(spaces.n_dofs());
   for (unsigned int i = spaces.n_u_dofs(); i < spaces.n_dofs(); ++i)
     x(i) = scene.material.mu_0();
-  system.set_boundary_values(0.05);
+  system.set_boundary_values(0.05, 0.);
   const Vector<double> x_0 = x;
   const double         dt  = 1e-3;
   std::vector<double>  history;
@@ -47,7 +47,8 @@ main(int argc, char **argv)
   double       worst_constant = 0.;
   unsigned int n_checked      = 0;
   for (unsigned int k = 1; k < history.size(); ++k)
-    if (history[k - 1] / r0 < 1e-3)
+    // Below 1e-13 the residual is rounding: no order of convergence shows there.
+    if (history[k - 1] / r0 < 1e-3 && history[k] / r0 > 1e-13)
       {
         worst_constant =
           std::max(worst_constant, (history[k] / r0) / std::pow(history[k - 1] / r0, 2));

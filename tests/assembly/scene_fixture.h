@@ -97,6 +97,6 @@ struct SceneFixture : private scene_fixture::Parameters, public GelMPM::Scene<2>
     create_material_points();
     create_system();
     system->setup(particles);
-    system->set_boundary_values(0.5);
+    system->set_boundary_values(0.5, 0.);
   }
 };

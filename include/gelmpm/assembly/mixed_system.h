@@ -89,11 +89,12 @@ namespace GelMPM
       const std::function<void()>             &before_new_pattern = [] {});
 
     /**
-     * Evaluate the boundary data (ubar, traction, mubar, flux) at time @p t_over_tau_d for
-     * every surface point; called once per attempt of a step.
+     * Evaluate the boundary data (ubar, traction, mubar, flux) at the end @p t_over_tau_d of
+     * a step from the points' state at @p step_start for every surface point, and ubar also
+     * at @p step_start; called once per attempt of a step.
      */
     void
-    set_boundary_values(const double t_over_tau_d);
+    set_boundary_values(const double t_over_tau_d, const double step_start);
 
     /**
      * Assemble the residual (and, if @p with_matrix, the tangent) at the unknowns @p solution
@@ -252,6 +253,8 @@ namespace GelMPM
       unsigned int           mu_offset; // into mu shape arrays
       dealii::Tensor<2, dim> projector; // Pi (zero unless u is prescribed)
       dealii::Tensor<1, dim> u_bar;
+      // The adjoint Nitsche term's solvent, (g (x) N) : dP/dmu A, at the start of the step.
+      double adjoint_solvent_n = 0.;
       dealii::Tensor<1, dim> traction;
       double                 mu_bar = 0.;
       double                 flux   = 0.;
