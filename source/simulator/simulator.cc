@@ -58,6 +58,7 @@ namespace GelMPM
     linear_solver.set_symmetric(scene.nitsche.symmetry > 0.);
     newton.parse_parameters(prm);
     time_stepping.parse_parameters(prm);
+    newton.minimum_iterations = time_stepping.tolerance > 0. ? 1 : 0;
     observables.parse_parameters(prm, structure.boundary_pieces);
     stability.parse_parameters(prm);
     checkpoint_settings.parse_parameters(prm);

@@ -31,6 +31,12 @@ namespace GelMPM
   {
     unsigned int maximum_iterations = 15;
     double       tolerance          = 1e-10;
+    /** Iterations taken even when the initial guess already meets the tolerance (not a
+     * parameter: the simulator sets 1 under 'Time stepping/Tolerance', whose error estimate
+     * compares the solution with the predictor, the initial guess; on a step short enough that
+     * the predictor's residual is below the tolerance, a step of none left the predictor as the
+     * solution and the estimate measured nothing but the predictor's own extrapolation). */
+    unsigned int minimum_iterations = 0;
     /** How the Newton update is damped (see solve_newton()). */
     enum class LineSearch
     {
@@ -165,7 +171,8 @@ namespace GelMPM
             report.failure = "the residual is not finite";
             return report;
           }
-        if (report.residual_u <= settings.tolerance && report.residual_mu <= settings.tolerance)
+        if (k >= settings.minimum_iterations && report.residual_u <= settings.tolerance &&
+            report.residual_mu <= settings.tolerance)
           {
             report.converged = true;
             report.failure.clear();
