@@ -254,7 +254,7 @@ namespace GelMPM
       dealii::Tensor<2, dim> projector; // Pi (zero unless u is prescribed)
       dealii::Tensor<1, dim> u_bar;
       // The adjoint Nitsche term's solvent, (g (x) N) : dP/dmu A, at the start of the step.
-      double adjoint_solvent_n = 0.;
+      double                 adjoint_solvent_n = 0.;
       dealii::Tensor<1, dim> traction;
       double                 mu_bar = 0.;
       double                 flux   = 0.;
