@@ -381,9 +381,21 @@ namespace GelMPM
           pattern.add_entries(row, dofs.begin(), dofs.end(), true);
       }
     residual_.reinit(spaces_.n_dofs());
+    rows_are_local_and_sorted = false;
     if (!Collective::is_parallel(communicator))
       {
         matrix_.reinit(pattern);
+        const Epetra_CrsMatrix &A = matrix_.trilinos_matrix();
+        rows_are_local_and_sorted =
+          A.RowMap().LinearMap() && A.RowMap().MinMyGID() == 0 && A.ColMap().SameAs(A.RowMap());
+        for (int row = 0; rows_are_local_and_sorted && row < A.NumMyRows(); ++row)
+          {
+            int     length;
+            double *values;
+            int    *columns;
+            A.ExtractMyRowView(row, length, values, columns);
+            rows_are_local_and_sorted = std::is_sorted(columns, columns + length);
+          }
         return;
       }
     const auto [owned, relevant] = owned_and_relevant_dofs();
@@ -530,7 +542,7 @@ namespace GelMPM
         for (unsigned int i = 0; i < copy.dofs.size(); ++i)
           residual_(copy.dofs[i]) += copy.residual(i);
         if (with_matrix)
-          matrix_.add(copy.dofs, copy.matrix);
+          add_to_matrix(copy);
       },
       ScratchData(),
       CopyData());
@@ -539,6 +551,39 @@ namespace GelMPM
     Collective::sum_in_place(communicator, residual_.begin(), residual_.size());
     // Collective: every rank learns of a failure on any, before the next collective call.
     Collective::agree_on_failure<NonPhysicalState>(communicator, failed ? failure : "");
+  }
+
+
+  template <int dim>
+  void
+  MixedSystem<dim>::add_to_matrix(const CopyData &copy)
+  {
+    if (!rows_are_local_and_sorted)
+      {
+        matrix_.add(copy.dofs, copy.matrix);
+        return;
+      }
+    // One rank: local and global indices coincide and every row's columns are sorted, as are
+    // the block's unknowns, so one merge per row finds the entries; the generic add searches
+    // for each entry and was the largest serial part of the assembly.
+    const Epetra_CrsMatrix &A = matrix_.trilinos_matrix();
+    const unsigned int      n = copy.dofs.size();
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        int     length;
+        double *values;
+        int    *columns;
+        A.ExtractMyRowView(static_cast<int>(copy.dofs[i]), length, values, columns);
+        int k = 0;
+        for (unsigned int j = 0; j < n; ++j)
+          {
+            const int column = static_cast<int>(copy.dofs[j]);
+            while (columns[k] < column)
+              ++k;
+            Assert(k < length && columns[k] == column, dealii::ExcInternalError());
+            values[k] += copy.matrix(i, j);
+          }
+      }
   }
 
 
@@ -654,11 +699,11 @@ namespace GelMPM
                                      ScratchData       &s,
                                      CopyData          &copy) const
   {
-    const auto         state = material.incremental(s.delta_F, s.mu_at_point, point.F_p);
-    const double       V     = point.measure;
-    const double       kTnu  = material.kT_over_nu();
-    const double       m     = point.mobility;
-    const unsigned int mu0   = dim * s.n_u;
+    const auto   state     = material.incremental(s.delta_F, s.mu_at_point, point.F_p, with_matrix);
+    const double V         = point.measure;
+    const double kTnu      = material.kT_over_nu();
+    const double m         = point.mobility;
+    const unsigned int mu0 = dim * s.n_u;
 
     for (unsigned int a = 0; a < s.n_u; ++a)
       {
@@ -833,6 +878,15 @@ namespace GelMPM
             const auto   plus = material.incremental(s.delta_F + eps * W, s.mu_at_point, point.F_p);
             const auto minus  = material.incremental(s.delta_F - eps * W, s.mu_at_point, point.F_p);
             H                 = (plus.A_n - minus.A_n) / (2. * eps);
+            // The exact H has the major symmetry; the difference has it only to round-off
+            // divided by eps, which would make the symmetric Nitsche tangent unsymmetric at
+            // 1e-11.
+            for (unsigned int k = 0; k < dim; ++k)
+              for (unsigned int L = 0; L < dim; ++L)
+                for (unsigned int m = 0; m < dim; ++m)
+                  for (unsigned int Q = 0; Q < dim; ++Q)
+                    if (dim * m + Q > dim * k + L)
+                      H[k][L][m][Q] = H[m][Q][k][L] = 0.5 * (H[k][L][m][Q] + H[m][Q][k][L]);
             // P_n is affine in mu, so this difference is exact.
             const auto mu_plus = material.incremental(s.delta_F, s.mu_at_point + 1., point.F_p);
             for (unsigned int k = 0; k < dim; ++k)

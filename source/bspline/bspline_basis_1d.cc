@@ -1,6 +1,7 @@
 #include <gelmpm/bspline/bspline_basis_1d.h>
 #include <gelmpm/core/round_off.h>
 
+#include <deal.II/base/exceptions.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 
 #include <algorithm>
@@ -24,6 +25,22 @@ namespace GelMPM
       throw std::invalid_argument("B-spline degree must lie in 1..." + std::to_string(max_degree));
     if (!(x_max > x_min) || n_cells < 1)
       throw std::invalid_argument("B-spline basis needs x_max > x_min and at least one cell");
+
+    // c_k = N^(k)(midpoint) h^k / k!, the Taylor coefficients in t = (x - midpoint)/h.
+    const unsigned int  n = degree + 1;
+    std::vector<double> derivatives(n * n);
+    coefficients.resize(n_cells * n * n);
+    for (unsigned int cell = 0; cell < n_cells; ++cell)
+      {
+        evaluate_by_recursion(x_min + (cell + 0.5) * h, cell, degree, derivatives.data());
+        double scale = 1.;
+        for (unsigned int k = 0; k < n; ++k)
+          {
+            for (unsigned int a = 0; a < n; ++a)
+              coefficients[(cell * n + a) * n + k] = derivatives[k * n + a] * scale;
+            scale *= h / (k + 1);
+          }
+      }
   }
 
 
@@ -100,6 +117,36 @@ namespace GelMPM
                            const unsigned int cell,
                            const unsigned int n_derivatives,
                            double            *values) const
+  {
+    Assert(n_derivatives <= 2, dealii::ExcIndexRange(n_derivatives, 0, 3));
+    const unsigned int n     = degree_ + 1;
+    const double       t     = (x - x_min_) / h - (cell + 0.5);
+    const double      *c     = coefficients.data() + cell * n * n;
+    const double       scale = 1. / h;
+    for (unsigned int a = 0; a < n; ++a, c += n)
+      {
+        // Horner's rule for p(t), p'(t) and p''(t)/2 at once.
+        double value = c[degree_], first = 0., second = 0.;
+        for (int k = static_cast<int>(degree_) - 1; k >= 0; --k)
+          {
+            second = second * t + first;
+            first  = first * t + value;
+            value  = value * t + c[k];
+          }
+        values[a] = value;
+        if (n_derivatives >= 1)
+          values[n + a] = first * scale;
+        if (n_derivatives >= 2)
+          values[2 * n + a] = 2. * second * scale * scale;
+      }
+  }
+
+
+  void
+  BSplineBasis1D::evaluate_by_recursion(const double       x,
+                                        const unsigned int cell,
+                                        const unsigned int n_derivatives,
+                                        double            *values) const
   {
     constexpr unsigned int M    = max_degree + 1;
     const unsigned int     p    = degree_;

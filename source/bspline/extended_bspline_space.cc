@@ -286,7 +286,7 @@ namespace GelMPM
   ExtendedBSplineSpace<dim>::build_cell_matrices()
   {
     dofs_of_cell.assign(space_.n_cells(), {});
-    matrix_of_cell.assign(space_.n_cells(), dealii::FullMatrix<double>());
+    matrix_of_cell.assign(space_.n_cells(), CellMatrix());
     std::vector<unsigned int> local;
     for (unsigned int cell = 0; cell < space_.n_cells(); ++cell)
       {
@@ -306,14 +306,18 @@ namespace GelMPM
           }
         auto &dofs   = dofs_of_cell[cell];
         auto &matrix = matrix_of_cell[cell];
-        matrix.reinit(rows.size(), local.size());
-        unsigned int r = 0;
-        for (const auto &[dof, entries] : rows)
+        matrix.row_start.push_back(0);
+        for (auto &[dof, entries] : rows)
           {
             dofs.push_back(dof);
+            std::sort(entries.begin(), entries.end());
             for (const auto &[a, E] : entries)
-              matrix(r, a) += E;
-            ++r;
+              if (E != 0.)
+                {
+                  matrix.column.push_back(a);
+                  matrix.weight.push_back(E);
+                }
+            matrix.row_start.push_back(matrix.column.size());
           }
       }
   }
@@ -378,16 +382,15 @@ namespace GelMPM
   {
     space_.evaluate(p, cell, scratch_values, scratch_gradients);
     const auto &E = matrix_of_cell[cell];
-    for (unsigned int r = 0; r < E.m(); ++r)
+    for (unsigned int r = 0; r + 1 < E.row_start.size(); ++r)
       {
         double                 v = 0.;
         dealii::Tensor<1, dim> g;
-        for (unsigned int a = 0; a < E.n(); ++a)
-          if (E(r, a) != 0.)
-            {
-              v += E(r, a) * scratch_values[a];
-              g += E(r, a) * scratch_gradients[a];
-            }
+        for (unsigned int k = E.row_start[r]; k < E.row_start[r + 1]; ++k)
+          {
+            v += E.weight[k] * scratch_values[E.column[k]];
+            g += E.weight[k] * scratch_gradients[E.column[k]];
+          }
         values[r]    = v;
         gradients[r] = g;
       }

@@ -357,7 +357,8 @@ namespace GelMPM
   typename FloryRehnerGel<dim>::Incremental
   FloryRehnerGel<dim>::incremental(const Tensor<2, dim> &delta_F,
                                    const double          mu,
-                                   const Tensor<2, dim> &F_p) const
+                                   const Tensor<2, dim> &F_p,
+                                   const bool            with_tangent) const
   {
     const Tensor<2, dim> F   = delta_F * F_p;
     const double         J_p = J(F_p);
@@ -371,6 +372,8 @@ namespace GelMPM
     const Tensor<2, dim> Fit = dealii::transpose(dealii::invert(F));
     const Tensor<2, dim> P   = shear_modulus_ * (F - Fit) + dpsi * result.J * Fit;
     result.P_n               = P * dealii::transpose(F_p) / J_p;
+    if (!with_tangent)
+      return result;
 
     // A_n_iJkL = (1/J_p) A_iMkN F_p_JM F_p_LN; with G = F^-T F_p^T = dF^-T the pulled-back
     // inverse, A_n = [G I(ik) (F_p F_p^T)_JL + a G_iL G_kJ + b G_iJ G_kL] / J_p.

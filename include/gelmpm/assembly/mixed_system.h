@@ -271,6 +271,10 @@ namespace GelMPM
     struct CopyData;
     struct ScratchData;
 
+    /** Add a block's local matrix to the tangent (the copier of the assembly). */
+    void
+    add_to_matrix(const CopyData &copy);
+
     /**
      * The steps of setup(), in order. Classify the cells of the step from the cells that hold
      * volume points and rebuild the extended spaces; throws std::runtime_error if a point has
@@ -419,6 +423,8 @@ namespace GelMPM
 
     dealii::TrilinosWrappers::SparseMatrix matrix_;
     dealii::Vector<double>                 residual_;
+    // Whether add_to_matrix() may write into the rows directly (one rank, sorted columns).
+    bool rows_are_local_and_sorted = false;
   };
 } // namespace GelMPM
 

@@ -11,9 +11,12 @@ namespace GelMPM
    * @brief Maximally smooth (C^{q-1}) B-splines of degree q on the open uniform knot vector over
    * [x_min, x_max] with n_cells equal cells (paper eq. (41)–(42)).
    *
-   * There are n_cells + q functions; on cell c the nonzero ones are c, c+1, ..., c+q. Values and
-   * derivatives by the Cox–de Boor recursion in its triangular form (Piegl & Tiller, A2.3),
-   * without heap allocation (q <= max_degree).
+   * There are n_cells + q functions; on cell c the nonzero ones are c, c+1, ..., c+q. On each
+   * cell every function is a polynomial of degree q: the constructor expands it about the cell's
+   * midpoint from its derivatives there (Cox–de Boor recursion in its triangular form, Piegl &
+   * Tiller, A2.3), and evaluate() applies Horner's rule to these coefficients. The material
+   * points are evaluated at every step, and Horner's rule on a local variable in [-1/2, 1/2]
+   * costs a fraction of the recursion at the same round-off.
    */
   class BSplineBasis1D
   {
@@ -67,6 +70,22 @@ namespace GelMPM
     /** Knot i of the open knot vector (q+1 repeated end knots). */
     double
     knot(const int i) const;
+
+    /**
+     * The Cox–de Boor recursion: values[r*(q+1) + a] = r-th derivative (r = 0..n_derivatives,
+     * any order) of function first_function(cell) + a at x.
+     */
+    void
+    evaluate_by_recursion(const double       x,
+                          const unsigned int cell,
+                          const unsigned int n_derivatives,
+                          double            *values) const;
+
+    /**
+     * coefficients[(cell*(q+1) + a)*(q+1) + k]: on @p cell, function first_function(cell) + a
+     * is sum_k c_k t^k with t = (x - midpoint)/h.
+     */
+    std::vector<double> coefficients;
 
     unsigned int degree_;
     double       x_min_, x_max_;

@@ -133,7 +133,17 @@ namespace GelMPM
     unsigned int                                              n_dofs_ = 0;
     std::vector<std::vector<std::pair<unsigned int, double>>> weights;
     std::vector<std::vector<unsigned int>>                    dofs_of_cell;
-    std::vector<dealii::FullMatrix<double>>                   matrix_of_cell;
+    /**
+     * E_cell in compressed rows: most rows of a cell are a single B-spline (weight 1), so the
+     * dense product would spend its time on zeros.
+     */
+    struct CellMatrix
+    {
+      std::vector<unsigned int> row_start;
+      std::vector<unsigned int> column;
+      std::vector<double>       weight;
+    };
+    std::vector<CellMatrix> matrix_of_cell;
   };
 } // namespace GelMPM
 

@@ -114,11 +114,16 @@ namespace GelMPM
       double J;
     };
 
-    /** P_n, A_n and dP_n/dmu at the increment @p delta_F from F_p = F_n F_0. */
+    /**
+     * P_n, A_n and dP_n/dmu at the increment @p delta_F from F_p = F_n F_0; without
+     * @p with_tangent only P_n, dJ and J (A_n and dP_n/dmu are left zero), which is all a
+     * residual needs.
+     */
     Incremental
     incremental(const dealii::Tensor<2, dim> &delta_F,
                 const double                  mu,
-                const dealii::Tensor<2, dim> &F_p) const;
+                const dealii::Tensor<2, dim> &F_p,
+                const bool                    with_tangent = true) const;
 
     /**
      * The largest mu/(k_BT) at which the gel has a stress-free swollen state (plane strain with
