@@ -87,7 +87,8 @@ namespace GelMPM
     double                      mu_at_point = 0.;
     Tensor<1, dim>              grad_mu;
     // Work arrays for the tangent.
-    std::vector<Tensor<3, dim>> A_dot_G; // [c][i][J][k] = sum_L A_iJkL G_c[L]
+    std::vector<Tensor<3, dim>> A_dot_G;      // [c][i][J][k] = sum_L A_iJkL G_c[L]
+    dealii::FullMatrix<double>  volume_lower; // the volume points' sum, lower triangle
   };
 
 
@@ -163,6 +164,8 @@ namespace GelMPM
       {
         before_new_pattern();
         build_sparsity_pattern();
+        for (auto &pattern : projection_patterns)
+          pattern.reset();
         // Only now: a setup that throws on the way leaves the next one to rebuild the pattern.
         pattern_classification = classification;
         pattern_holder         = cell_holder;
@@ -624,6 +627,8 @@ namespace GelMPM
       scratch.mu[b] = solution(n_u_global + mu_dofs[b]);
     if (with_matrix && scratch.A_dot_G.size() < n_u)
       scratch.A_dot_G.resize(n_u);
+    if (with_matrix)
+      scratch.volume_lower.reinit(n, n);
 
     unsigned int failed_point = block.first;
     try
@@ -659,6 +664,15 @@ namespace GelMPM
             else
               add_surface_point(point, dt, with_matrix, scratch, copy);
           }
+        if (with_matrix)
+          for (unsigned int r = 0; r < n; ++r)
+            for (unsigned int c = 0; c <= r; ++c)
+              {
+                const double value = scratch.volume_lower(r, c);
+                copy.matrix(r, c) += value;
+                if (c != r)
+                  copy.matrix(c, r) += value;
+              }
       }
     catch (const NonPhysicalState &e)
       {
@@ -718,40 +732,45 @@ namespace GelMPM
     if (!with_matrix)
       return;
 
-    auto &K = copy.matrix;
+    // A volume point's tangent is symmetric (A has the major symmetry A_iJkL = A_kLiJ, and
+    // K_mu,u = K_u,mu^T): only its lower triangle is summed here, and assemble_block() mirrors
+    // the block's sum once.
+    auto &L = s.volume_lower;
     for (unsigned int c = 0; c < s.n_u; ++c)
       for (unsigned int i = 0; i < dim; ++i)
         for (unsigned int J = 0; J < dim; ++J)
           for (unsigned int k = 0; k < dim; ++k)
             s.A_dot_G[c][i][J][k] = state.A_n[i][J][k] * s.G[c];
-    // K_uu is symmetric (A has the major symmetry A_iJkL = A_kLiJ): compute one triangle of
-    // function pairs and mirror it.
     for (unsigned int a = 0; a < s.n_u; ++a)
-      for (unsigned int c = 0; c <= a; ++c)
-        for (unsigned int i = 0; i < dim; ++i)
-          for (unsigned int k = 0; k < dim; ++k)
-            {
-              double value = 0.;
-              for (unsigned int J = 0; J < dim; ++J)
-                value += s.G[a][J] * s.A_dot_G[c][i][J][k];
-              K(dim * a + i, dim * c + k) += V * value;
-              if (c != a)
-                K(dim * c + k, dim * a + i) += V * value;
-            }
+      for (unsigned int i = 0; i < dim; ++i)
+        {
+          double *row = &L(dim * a + i, 0);
+          for (unsigned int c = 0; c <= a; ++c)
+            for (unsigned int k = 0; k < (c == a ? i + 1 : dim); ++k)
+              {
+                double value = 0.;
+                for (unsigned int J = 0; J < dim; ++J)
+                  value += s.G[a][J] * s.A_dot_G[c][i][J][k];
+                row[dim * c + k] += V * value;
+              }
+        }
     for (unsigned int a = 0; a < s.n_u; ++a)
       {
-        const Tensor<1, dim> q = state.dP_n_dmu * s.G[a];
-        for (unsigned int i = 0; i < dim; ++i)
-          for (unsigned int b = 0; b < s.n_mu; ++b)
-            {
-              const double value = V * q[i] * s.M[b];
-              K(dim * a + i, mu0 + b) += value;
-              K(mu0 + b, dim * a + i) += value;
-            }
+        const Tensor<1, dim> Vq = V * (state.dP_n_dmu * s.G[a]);
+        for (unsigned int b = 0; b < s.n_mu; ++b)
+          {
+            double *row = &L(mu0 + b, dim * a);
+            for (unsigned int i = 0; i < dim; ++i)
+              row[i] += Vq[i] * s.M[b];
+          }
       }
+    const double Vdtm = V * dt * m;
     for (unsigned int b = 0; b < s.n_mu; ++b)
-      for (unsigned int d = 0; d < s.n_mu; ++d)
-        K(mu0 + b, mu0 + d) -= V * dt * m * (s.GM[b] * s.GM[d]);
+      {
+        double *row = &L(mu0 + b, mu0);
+        for (unsigned int d = 0; d <= b; ++d)
+          row[d] -= Vdtm * (s.GM[b] * s.GM[d]);
+      }
   }
 
 
@@ -1146,25 +1165,29 @@ namespace GelMPM
     // that the ranks' sums of the mass matrix add entry by entry and each rank solves the whole
     // projection (it is small against the Newton system). On one rank the blocks are the
     // active cells anyway.
-    dealii::DynamicSparsityPattern pattern(n, n);
-    const auto                     add_cell = [&](const unsigned int cell) {
-      const auto &dofs = space.cell_dofs(cell);
-      for (const auto i : dofs)
-        for (const auto j : dofs)
-          pattern.add(i, j);
-    };
-    if (Collective::is_parallel(communicator))
+    // Both depend on the classification alone: the pattern is kept with the tangent's.
+    auto &sparsity = projection_patterns[displacement ? 1 : 0];
+    if (!sparsity)
       {
-        for (unsigned int c = 0; c < classification.size(); ++c)
-          if (classification[c])
-            add_cell(displacement ? c : spaces_.mu_cell_of(c));
+        dealii::DynamicSparsityPattern pattern(n, n);
+        const auto                     add_cell = [&](const unsigned int cell) {
+          const auto &dofs = space.cell_dofs(cell);
+          for (const auto i : dofs)
+            pattern.add_entries(i, dofs.begin(), dofs.end(), true);
+        };
+        if (Collective::is_parallel(communicator))
+          {
+            for (unsigned int c = 0; c < classification.size(); ++c)
+              if (classification[c])
+                add_cell(displacement ? c : spaces_.mu_cell_of(c));
+          }
+        else
+          for (const Block &b : blocks)
+            add_cell(cell_of(b));
+        sparsity = std::make_unique<dealii::SparsityPattern>();
+        sparsity->copy_from(pattern);
       }
-    else
-      for (const Block &b : blocks)
-        add_cell(cell_of(b));
-    dealii::SparsityPattern sparsity;
-    sparsity.copy_from(pattern);
-    dealii::SparseMatrix<double>        mass(sparsity);
+    dealii::SparseMatrix<double>        mass(*sparsity);
     std::vector<dealii::Vector<double>> rhs(n_components, dealii::Vector<double>(n));
     // The points of a block share the functions of its cell: sum their contributions locally
     // and add each block once.
@@ -1190,22 +1213,22 @@ namespace GelMPM
                 const double Vi = r.measure * values[i];
                 for (unsigned int c = 0; c < n_components; ++c)
                   local_rhs(c, i) += Vi * point_values[c];
-                for (unsigned int j = 0; j < m; ++j)
+                for (unsigned int j = 0; j <= i; ++j)
                   local_mass(i, j) += Vi * values[j];
               }
           }
         for (unsigned int i = 0; i < m; ++i)
-          {
-            for (unsigned int c = 0; c < n_components; ++c)
-              rhs[c](dofs[i]) += local_rhs(c, i);
-            for (unsigned int j = 0; j < m; ++j)
-              mass.add(dofs[i], dofs[j], local_mass(i, j));
-          }
+          for (unsigned int j = 0; j < i; ++j)
+            local_mass(j, i) = local_mass(i, j);
+        for (unsigned int c = 0; c < n_components; ++c)
+          for (unsigned int i = 0; i < m; ++i)
+            rhs[c](dofs[i]) += local_rhs(c, i);
+        mass.add(dofs, local_mass);
       }
     if (Collective::is_parallel(communicator))
       {
         std::vector<double> entries;
-        entries.reserve(sparsity.n_nonzero_elements());
+        entries.reserve(sparsity->n_nonzero_elements());
         for (const auto &entry : mass)
           entries.push_back(entry.value());
         Collective::sum_in_place(communicator, entries);

@@ -14,11 +14,14 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/particles/particle_handler.h>
 
+#include <array>
 #include <functional>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -425,6 +428,9 @@ namespace GelMPM
     dealii::Vector<double>                 residual_;
     // Whether add_to_matrix() may write into the rows directly (one rank, sorted columns).
     bool rows_are_local_and_sorted = false;
+    // The sparsity of the mass matrices of project_point_values() (mu, displacement), built on
+    // first use after each new pattern.
+    mutable std::array<std::unique_ptr<dealii::SparsityPattern>, 2> projection_patterns;
   };
 } // namespace GelMPM
 
