@@ -1081,69 +1081,89 @@ namespace GelMPM
   {
     using Layout              = PropertyLayout<dim>;
     const double lambda_0_dim = std::pow(material.lambda_0(), dim);
-    std::string  failure;
-    for (unsigned int p = 0; p < points.size() && failure.empty(); ++p)
+    // Every point writes its own particle: update them in parallel. A point beyond the grid's
+    // edge is marked and the first of them (in the serial order) reported below.
+    std::vector<unsigned char> outside(points.size(), 0);
+    std::vector<Point<dim>>    moved(points.size());
+    const auto                 update_point = [&](const unsigned int p) {
+      const PointRecord &r = points[p];
+      Tensor<1, dim>     du;
+      Tensor<2, dim>     delta_F;
+      double             mu;
+      fields_at_point(r, solution, du, delta_F, mu);
+
+      const Tensor<2, dim> F_p = delta_F * r.F_p;
+      // J_n relative to the initial configuration (the out-of-plane stretch stays lambda_0).
+      const double J_n = dealii::determinant(F_p) / lambda_0_dim;
+
+      auto props = particles[p]->get_properties();
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          props[Layout::F + i * dim + j] = F_p[i][j];
+      props[Layout::mu_increment] = mu - r.mu_n;
+      props[Layout::mu]           = mu;
+      for (unsigned int d = 0; d < dim; ++d)
+        props[Layout::increment + d] = du[d];
+      if (r.kind == PointKind::volume)
+        props[Layout::measure_n] = J_n * props[Layout::measure_0];
+      else
+        {
+          // eq. (34): N_n A_n = J_n F_n^{-T} N_0 A_0 with F_n = F_p / lambda_0.
+          Tensor<1, dim> na0;
+          for (unsigned int d = 0; d < dim; ++d)
+            na0[d] = props[Layout::normal_area_0 + d];
+          const Tensor<1, dim> na =
+            J_n * (dealii::transpose(dealii::invert(F_p)) * na0) * material.lambda_0();
+          for (unsigned int d = 0; d < dim; ++d)
+            props[Layout::normal_area_n + d] = na[d];
+          props[Layout::measure_n] = na.norm();
+        }
+      // A point held normal to a grid edge (a roller or a fixed piece on the edge, or a contact
+      // plane there) crosses it by the small violation of the weakly imposed condition: keep it
+      // on the edge. So are volume points next to such an edge; where the edge is a free face,
+      // its surface points lie beyond the volume points and report the crossing. Any other
+      // point beyond the edge is material the grid cannot carry.
+      Point<dim> x = r.x + du;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          const auto  &basis     = spaces_.u_space().basis_1d(d);
+          const double tolerance = 0.25 * basis.cell_size();
+          const bool   held = r.kind == PointKind::volume || r.projector[d][d] > 0.5;
+          if ((held || on_contact_plane(d, -1.)) && x[d] < basis.x_min() &&
+              x[d] > basis.x_min() - tolerance)
+            x[d] = basis.x_min();
+          if ((held || on_contact_plane(d, 1.)) && x[d] > basis.x_max() &&
+              x[d] < basis.x_max() + tolerance)
+            x[d] = basis.x_max();
+          if (x[d] < basis.x_min() || x[d] > basis.x_max())
+            outside[p] = 1;
+        }
+      moved[p] = x;
+      if (!outside[p])
+        particles[p]->set_location(x);
+    };
+    dealii::parallel::apply_to_subranges(
+      0u,
+      static_cast<unsigned int>(points.size()),
+      [&](const unsigned int begin, const unsigned int end) {
+        for (unsigned int p = begin; p < end; ++p)
+          update_point(p);
+      },
+      256);
+
+    std::string failure;
+    const auto  first_outside = std::find(outside.begin(), outside.end(), 1);
+    if (first_outside != outside.end())
       {
+        const unsigned int p = first_outside - outside.begin();
         const PointRecord &r = points[p];
-        Tensor<1, dim>     du;
-        Tensor<2, dim>     delta_F;
-        double             mu;
-        fields_at_point(r, solution, du, delta_F, mu);
-
-        const Tensor<2, dim> F_p = delta_F * r.F_p;
-        // J_n relative to the initial configuration (the out-of-plane stretch stays lambda_0).
-        const double J_n = dealii::determinant(F_p) / lambda_0_dim;
-
-        auto props = particles[p]->get_properties();
-        for (unsigned int i = 0; i < dim; ++i)
-          for (unsigned int j = 0; j < dim; ++j)
-            props[Layout::F + i * dim + j] = F_p[i][j];
-        props[Layout::mu_increment] = mu - r.mu_n;
-        props[Layout::mu]           = mu;
-        for (unsigned int d = 0; d < dim; ++d)
-          props[Layout::increment + d] = du[d];
-        if (r.kind == PointKind::volume)
-          props[Layout::measure_n] = J_n * props[Layout::measure_0];
-        else
-          {
-            // eq. (34): N_n A_n = J_n F_n^{-T} N_0 A_0 with F_n = F_p / lambda_0.
-            Tensor<1, dim> na0;
-            for (unsigned int d = 0; d < dim; ++d)
-              na0[d] = props[Layout::normal_area_0 + d];
-            const Tensor<1, dim> na =
-              J_n * (dealii::transpose(dealii::invert(F_p)) * na0) * material.lambda_0();
-            for (unsigned int d = 0; d < dim; ++d)
-              props[Layout::normal_area_n + d] = na[d];
-            props[Layout::measure_n] = na.norm();
-          }
-        // A point held normal to a grid edge (a roller or a fixed piece on the edge, or a contact
-        // plane there) crosses it by the small violation of the weakly imposed condition: keep it
-        // on the edge. So are volume points next to such an edge; where the edge is a free face,
-        // its surface points lie beyond the volume points and report the crossing. Any other
-        // point beyond the edge is material the grid cannot carry.
-        Point<dim> x = r.x + du;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            const auto  &basis     = spaces_.u_space().basis_1d(d);
-            const double tolerance = 0.25 * basis.cell_size();
-            const bool   held      = r.kind == PointKind::volume || r.projector[d][d] > 0.5;
-            if ((held || on_contact_plane(d, -1.)) && x[d] < basis.x_min() &&
-                x[d] > basis.x_min() - tolerance)
-              x[d] = basis.x_min();
-            if ((held || on_contact_plane(d, 1.)) && x[d] > basis.x_max() &&
-                x[d] < basis.x_max() + tolerance)
-              x[d] = basis.x_max();
-            if ((x[d] < basis.x_min() || x[d] > basis.x_max()) && failure.empty())
-              failure = std::string(
-                "the material point at " + format_point(x) + " (initially at " +
-                format_point(r.x - r.u_n) + ", " +
-                (r.kind == PointKind::volume ? std::string("inside the body")
-                                             : "on the boundary, free normal to the grid edge") +
-                ") has crossed the edge of the background grid; enlarge the grid so that the body "
-                "stays inside it ('Background grid/Lower corner', 'Upper corner')");
-          }
-        if (failure.empty())
-          particles[p]->set_location(x);
+        failure              = std::string(
+          "the material point at " + format_point(moved[p]) + " (initially at " +
+          format_point(r.x - r.u_n) + ", " +
+          (r.kind == PointKind::volume ? std::string("inside the body")
+                                                    : "on the boundary, free normal to the grid edge") +
+          ") has crossed the edge of the background grid; enlarge the grid so that the body "
+                       "stays inside it ('Background grid/Lower corner', 'Upper corner')");
       }
     Collective::agree_on_failure<std::runtime_error>(communicator, failure);
   }
