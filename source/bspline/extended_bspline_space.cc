@@ -307,10 +307,10 @@ namespace GelMPM
         auto &dofs   = dofs_of_cell[cell];
         auto &matrix = matrix_of_cell[cell];
         matrix.row_start.push_back(0);
-        for (auto &[dof, entries] : rows)
+        // Each row's entries arrive in increasing local index a.
+        for (const auto &[dof, entries] : rows)
           {
             dofs.push_back(dof);
-            std::sort(entries.begin(), entries.end());
             for (const auto &[a, E] : entries)
               if (E != 0.)
                 {
