@@ -235,8 +235,10 @@ namespace GelMPM
     r.x       = particle.get_location();
     for (unsigned int d = 0; d < dim; ++d)
       {
-        r.u_n[d]     = r.x[d] - props[Layout::position_0 + d];
-        r.du_last[d] = props[Layout::increment + d];
+        r.edge_offset[d] = props[Layout::edge_offset + d];
+        r.X0[d]          = props[Layout::position_0 + d];
+        r.u_n[d]         = r.x[d] + r.edge_offset[d] - r.X0[d];
+        r.du_last[d]     = props[Layout::increment + d];
       }
     for (unsigned int i = 0; i < dim; ++i)
       for (unsigned int j = 0; j < dim; ++j)
@@ -486,8 +488,8 @@ namespace GelMPM
         const auto &piece = boundary_conditions.piece(r.piece);
         if (!piece.displacement_prescribed())
           continue;
-        const Point<dim> X0 = r.x - r.u_n;
-        Tensor<1, dim>   u_bar_n;
+        const Point<dim> &X0 = r.X0;
+        Tensor<1, dim>    u_bar_n;
         for (unsigned int d = 0; d < dim; ++d)
           u_bar_n[d] = piece.displacement_value().value(X0, d);
         const auto start =
@@ -501,8 +503,8 @@ namespace GelMPM
       {
         if (r.kind == PointKind::volume || r.piece < 0)
           continue;
-        const auto      &piece = boundary_conditions.piece(r.piece);
-        const Point<dim> X0    = r.x - r.u_n;
+        const auto       &piece = boundary_conditions.piece(r.piece);
+        const Point<dim> &X0    = r.X0;
         for (unsigned int d = 0; d < dim; ++d)
           {
             r.u_bar[d]    = piece.displacement_value().value(X0, d);
@@ -699,8 +701,8 @@ namespace GelMPM
     if (point.piece >= 0)
       message << " of piece '" << boundary_conditions.piece(point.piece).name << "'";
     message << " at x = " << format_point(Point<dim>(point.x + scratch.du_at_point))
-            << " (x_n = " << format_point(point.x) << ", initially "
-            << format_point(Point<dim>(point.x - point.u_n)) << "), background cell " << u_cell;
+            << " (x_n = " << format_point(point.x) << ", initially " << format_point(point.X0)
+            << "), background cell " << u_cell;
     return message.str();
   }
 
@@ -960,8 +962,8 @@ namespace GelMPM
       traction = material.incremental(s.delta_F, s.mu_at_point, point.F_p).P_n * point.normal;
     for (const auto &plane : contact_planes)
       {
-        const double g =
-          plane.sign * (point.x[plane.axis] + s.du_at_point[plane.axis] - plane.value);
+        const double   g = plane.sign * (point.x[plane.axis] + point.edge_offset[plane.axis] +
+                                       s.du_at_point[plane.axis] - plane.value);
         Tensor<1, dim> n;
         n[plane.axis] = plane.sign;
         if (contact.method == ContactSettings::Method::nitsche)
@@ -1119,11 +1121,13 @@ namespace GelMPM
           props[Layout::measure_n] = na.norm();
         }
       // A point held normal to a grid edge (a roller or a fixed piece on the edge, or a contact
-      // plane there) crosses it by the small violation of the weakly imposed condition: keep it
-      // on the edge. So are volume points next to such an edge; where the edge is a free face,
-      // its surface points lie beyond the volume points and report the crossing. Any other
-      // point beyond the edge is material the grid cannot carry.
-      Point<dim> x = r.x + du;
+      // plane there) crosses it by the small violation of the weakly imposed condition: its
+      // particle stays on the edge and the edge offset keeps the rest of its displacement. So
+      // do volume points next to such an edge; where the edge is a free face, its surface
+      // points lie beyond the volume points and report the crossing. Any other point beyond
+      // the edge is material the grid cannot carry.
+      const Point<dim> x_next = r.x + r.edge_offset + du;
+      Point<dim>       x      = x_next;
       for (unsigned int d = 0; d < dim; ++d)
         {
           const auto  &basis     = spaces_.u_space().basis_1d(d);
@@ -1138,6 +1142,8 @@ namespace GelMPM
           if (x[d] < basis.x_min() || x[d] > basis.x_max())
             outside[p] = 1;
         }
+      for (unsigned int d = 0; d < dim; ++d)
+        props[Layout::edge_offset + d] = x_next[d] - x[d];
       moved[p] = x;
       if (!outside[p])
         particles[p]->set_location(x);
@@ -1159,7 +1165,7 @@ namespace GelMPM
         const PointRecord &r = points[p];
         failure              = std::string(
           "the material point at " + format_point(moved[p]) + " (initially at " +
-          format_point(r.x - r.u_n) + ", " +
+          format_point(r.X0) + ", " +
           (r.kind == PointKind::volume ? std::string("inside the body")
                                                     : "on the boundary, free normal to the grid edge") +
           ") has crossed the edge of the background grid; enlarge the grid so that the body "
@@ -1431,7 +1437,8 @@ namespace GelMPM
         bool is_active = false;
         for (const auto &plane : contact_planes)
           {
-            const double g = plane.sign * (r.x[plane.axis] + du[plane.axis] - plane.value);
+            const double g = plane.sign * (r.x[plane.axis] + r.edge_offset[plane.axis] +
+                                           du[plane.axis] - plane.value);
             penetration    = std::max(penetration, g);
             if (contact.method == ContactSettings::Method::nitsche)
               {

@@ -71,8 +71,9 @@ namespace GelMPM
         const double J  = material.J(F);
 
         DataOutBase::Patch<0, dim> patch;
-        patch.vertices[0] = particle.get_location();
-        patch.patch_index = patches.size();
+        const Point<dim>           x = position_of(particle.get_location(), props);
+        patch.vertices[0]            = x;
+        patch.patch_index            = patches.size();
         patch.data.reinit(names.size(), 1);
         patch.data(0, 0) = props[Layout::kind];
         patch.data(1, 0) = props[Layout::piece];
@@ -96,9 +97,8 @@ namespace GelMPM
           }
         for (unsigned int d = 0; d < dim; ++d)
           {
-            patch.data(displacement_first + d, 0) =
-              particle.get_location()[d] - props[Layout::position_0 + d];
-            patch.data(normal_first + d, 0) = props[Layout::normal_area_n + d];
+            patch.data(displacement_first + d, 0) = x[d] - props[Layout::position_0 + d];
+            patch.data(normal_first + d, 0)       = props[Layout::normal_area_n + d];
           }
         patches.push_back(std::move(patch));
       }

@@ -292,7 +292,7 @@ namespace GelMPM
             {
               for (unsigned int d = 0; d < dim; ++d)
                 {
-                  sum[k][d] += particle.get_location()[d];
+                  sum[k][d] += position_of(particle.get_location(), props)[d];
                   sum[2 + k][d] += props[Layout::position_0 + d];
                 }
               ++count[k];
@@ -340,7 +340,7 @@ namespace GelMPM
         for (unsigned int d = 0; d < dim; ++d)
           local.push_back(props[Layout::position_0 + d]);
         for (unsigned int d = 0; d < dim; ++d)
-          local.push_back(particle.get_location()[d]);
+          local.push_back(position_of(particle.get_location(), props)[d]);
         local.push_back(props[Layout::mu]);
       }
     std::vector<double> all;

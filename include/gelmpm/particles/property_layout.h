@@ -1,6 +1,8 @@
 #ifndef gelmpm_particles_property_layout_h
 #define gelmpm_particles_property_layout_h
 
+#include <deal.II/base/point.h>
+
 #include <cmath>
 
 namespace GelMPM
@@ -55,6 +57,13 @@ namespace GelMPM
    *   tolerance', 'Newton/Initial displacement').
    * - mu_increment: the change of mu at the point in the last accepted step, mu_n - mu_{n-1}:
    *   the predictor of the next step's change ('Time stepping/Tolerance').
+   * - edge_offset: x_n minus the particle's location, nonzero only for a point that has crossed
+   *   an edge of the background grid by the violation of a weakly imposed condition there (a
+   *   roller or a contact plane on the edge). The location stays on the edge, inside the
+   *   grid, where the point's cell is found and the basis evaluated; the offset keeps the
+   *   violation in the point's displacement, so that the next step's Nitsche or contact term
+   *   sees it and removes it. Dropping it would reset the violation at every step and let the
+   *   body creep through the edge by one violation per step (doc/method.md).
    */
   template <int dim>
   struct PropertyLayout
@@ -70,8 +79,24 @@ namespace GelMPM
     static constexpr unsigned int normal_area_n = normal_area_0 + dim;
     static constexpr unsigned int increment     = normal_area_n + dim;
     static constexpr unsigned int mu_increment  = increment + dim;
-    static constexpr unsigned int n_properties  = mu_increment + 1;
+    static constexpr unsigned int edge_offset   = mu_increment + 1;
+    static constexpr unsigned int n_properties  = edge_offset + dim;
   };
+
+
+  /**
+   * The position x_n of a point whose particle sits at @p location with the property array
+   * @p properties: the location plus its edge offset (PropertyLayout::edge_offset).
+   */
+  template <int dim, typename Properties>
+  inline dealii::Point<dim>
+  position_of(const dealii::Point<dim> &location, const Properties &properties)
+  {
+    dealii::Point<dim> x = location;
+    for (unsigned int d = 0; d < dim; ++d)
+      x[d] += properties[PropertyLayout<dim>::edge_offset + d];
+    return x;
+  }
 
 
   /**
