@@ -195,7 +195,7 @@ def main():
     # The reference of the punch first: every punch error needs it.
     plan.sort(key=lambda p: p[2] != "reference")
     print("tolerance_study.py: %d runs (one each), binary %s, results in %s; on an idle 2-core "
-          "machine about 25 min (the tightest tolerances take longest); load average now %s"
+          "machine about 9 min (the tightest tolerances take longest); load average now %s"
           % (len(plan), gelmpm, out, " ".join(sa.loadavg())))
     if arguments.estimate:
         for p in plan:
