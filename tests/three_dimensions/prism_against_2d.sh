@@ -6,7 +6,7 @@
 # - the same steps, at times equal to 1e-8 relative, Newton iterations within one (modified
 #   Newton's reuse decisions see residuals at round-off), delta_h_over_h0 to 1e-6 of its largest
 #   value (measured 1e-7: the Newton tolerance carried over the steps; the full scene agrees to
-#   2e-9 Δh_eq);
+#   6e-10 Δh_eq, the ten digits written);
 # - the 3D tangent has the signature of a stable state at every step, (n_dofs_u, n_dofs_mu, 0)
 #   (the inertia of the LDL^T factorisation, doc/method.md), and so has the 2D one;
 # - the prism's surface points: 4 sides + top + bottom of 0.3 x 0.3 x 1 in total area.
