@@ -594,6 +594,101 @@ namespace GelMPM
 
   template <int dim>
   void
+  MixedSystem<dim>::gather_block_coefficients(const Block                  &block,
+                                              const dealii::Vector<double> &solution,
+                                              ScratchData                  &scratch) const
+  {
+    const auto        &u_dofs     = spaces_.u().cell_dofs(block.u_cell);
+    const auto        &mu_dofs    = spaces_.mu().cell_dofs(block.mu_cell);
+    const unsigned int n_u_global = spaces_.n_u_dofs();
+    scratch.n_u                   = u_dofs.size();
+    scratch.n_mu                  = mu_dofs.size();
+    scratch.du.resize(scratch.n_u);
+    scratch.mu.resize(scratch.n_mu);
+    for (unsigned int a = 0; a < scratch.n_u; ++a)
+      for (unsigned int c = 0; c < dim; ++c)
+        scratch.du[a][c] = solution(dim * u_dofs[a] + c);
+    for (unsigned int b = 0; b < scratch.n_mu; ++b)
+      scratch.mu[b] = solution(n_u_global + mu_dofs[b]);
+  }
+
+
+  template <int dim>
+  void
+  MixedSystem<dim>::evaluate_point_fields(const PointRecord &point, ScratchData &scratch) const
+  {
+    scratch.N  = &u_values[point.u_offset];
+    scratch.G  = &u_gradients[point.u_offset];
+    scratch.M  = &mu_values[point.mu_offset];
+    scratch.GM = &mu_gradients[point.mu_offset];
+
+    scratch.delta_F     = dealii::unit_symmetric_tensor<dim>();
+    scratch.du_at_point = 0;
+    for (unsigned int a = 0; a < scratch.n_u; ++a)
+      {
+        scratch.delta_F += outer(scratch.du[a], scratch.G[a]);
+        scratch.du_at_point += scratch.N[a] * scratch.du[a];
+      }
+    scratch.mu_at_point = 0.;
+    scratch.grad_mu     = 0;
+    for (unsigned int b = 0; b < scratch.n_mu; ++b)
+      {
+        scratch.mu_at_point += scratch.M[b] * scratch.mu[b];
+        scratch.grad_mu += scratch.mu[b] * scratch.GM[b];
+      }
+  }
+
+
+  template <int dim>
+  std::vector<typename MixedSystem<dim>::PieceBalance>
+  MixedSystem<dim>::boundary_balances(const dealii::Vector<double> &solution,
+                                      const double                  dt) const
+  {
+    // The surface points' own residual terms, tested with w = e_k and q = 1: both lie in the
+    // extended spaces (they reproduce constants), and the volume points' terms vanish for w =
+    // e_k and are the change of solvent for q = 1. So the forces of all pieces balance and the
+    // inflows add up to the body's change of solvent to the Newton tolerance (doc/output.md).
+    std::vector<PieceBalance> balances(boundary_conditions.n_pieces());
+    ScratchData               scratch;
+    CopyData                  copy;
+    const double              kTnu = material.kT_over_nu();
+    for (const auto &block : blocks)
+      {
+        bool has_surface_points = false;
+        for (unsigned int p = block.first; p < block.end && !has_surface_points; ++p)
+          has_surface_points = points[p].kind != PointKind::volume && points[p].assembled;
+        if (!has_surface_points)
+          continue;
+        gather_block_coefficients(block, solution, scratch);
+        const unsigned int mu0 = dim * scratch.n_u;
+        for (unsigned int p = block.first; p < block.end; ++p)
+          {
+            const PointRecord &point = points[p];
+            if (point.kind == PointKind::volume || !point.assembled)
+              continue;
+            evaluate_point_fields(point, scratch);
+            copy.residual.reinit(mu0 + scratch.n_mu);
+            add_surface_point(point, dt, false, scratch, copy);
+            auto &balance = balances[point.piece];
+            for (unsigned int a = 0; a < scratch.n_u; ++a)
+              for (unsigned int k = 0; k < dim; ++k)
+                balance.force[k] -= copy.residual(dim * a + k);
+            for (unsigned int b = 0; b < scratch.n_mu; ++b)
+              balance.solvent_in += copy.residual(mu0 + b) / kTnu;
+          }
+      }
+    for (auto &balance : balances)
+      {
+        for (unsigned int k = 0; k < dim; ++k)
+          balance.force[k] = dealii::Utilities::MPI::sum(balance.force[k], communicator);
+        balance.solvent_in = dealii::Utilities::MPI::sum(balance.solvent_in, communicator);
+      }
+    return balances;
+  }
+
+
+  template <int dim>
+  void
   MixedSystem<dim>::assemble_block(const Block                  &block,
                                    const dealii::Vector<double> &solution,
                                    const double                  dt,
@@ -618,15 +713,7 @@ namespace GelMPM
     if (with_matrix)
       copy.matrix.reinit(n, n);
 
-    scratch.n_u  = n_u;
-    scratch.n_mu = n_mu;
-    scratch.du.resize(n_u);
-    scratch.mu.resize(n_mu);
-    for (unsigned int a = 0; a < n_u; ++a)
-      for (unsigned int c = 0; c < dim; ++c)
-        scratch.du[a][c] = solution(dim * u_dofs[a] + c);
-    for (unsigned int b = 0; b < n_mu; ++b)
-      scratch.mu[b] = solution(n_u_global + mu_dofs[b]);
+    gather_block_coefficients(block, solution, scratch);
     if (with_matrix && scratch.A_dot_G.size() < n_u)
       scratch.A_dot_G.resize(n_u);
     if (with_matrix)
@@ -641,25 +728,7 @@ namespace GelMPM
             const PointRecord &point = points[p];
             if (!point.assembled)
               continue;
-            scratch.N  = &u_values[point.u_offset];
-            scratch.G  = &u_gradients[point.u_offset];
-            scratch.M  = &mu_values[point.mu_offset];
-            scratch.GM = &mu_gradients[point.mu_offset];
-
-            scratch.delta_F     = dealii::unit_symmetric_tensor<dim>();
-            scratch.du_at_point = 0;
-            for (unsigned int a = 0; a < n_u; ++a)
-              {
-                scratch.delta_F += outer(scratch.du[a], scratch.G[a]);
-                scratch.du_at_point += scratch.N[a] * scratch.du[a];
-              }
-            scratch.mu_at_point = 0.;
-            scratch.grad_mu     = 0;
-            for (unsigned int b = 0; b < n_mu; ++b)
-              {
-                scratch.mu_at_point += scratch.M[b] * scratch.mu[b];
-                scratch.grad_mu += scratch.mu[b] * scratch.GM[b];
-              }
+            evaluate_point_fields(point, scratch);
 
             if (point.kind == PointKind::volume)
               add_volume_point(point, dt, with_matrix, scratch, copy);

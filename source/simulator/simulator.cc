@@ -5,6 +5,7 @@
 #include <gelmpm/io/file_writing.h>
 #include <gelmpm/particles/point_location.h>
 #include <gelmpm/particles/point_serialization.h>
+#include <gelmpm/particles/property_layout.h>
 #include <gelmpm/simulator/simulator.h>
 
 #include <deal.II/base/mpi.h>
@@ -17,6 +18,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <regex>
 #include <sstream>
 
@@ -33,6 +35,7 @@ namespace GelMPM
     NewtonSettings::declare_parameters(prm);
     TimeStepping::declare_parameters(prm);
     Observables<dim>::declare_parameters(prm);
+    BoundaryBalance<dim>::declare_parameters(prm);
     StabilitySettings::declare_parameters(prm);
     CheckpointSettings::declare_parameters(prm);
   }
@@ -60,6 +63,7 @@ namespace GelMPM
     time_stepping.parse_parameters(prm);
     newton.minimum_iterations = time_stepping.tolerance > 0. ? 1 : 0;
     observables.parse_parameters(prm, structure.boundary_pieces);
+    balance.parse_parameters(prm, structure.boundary_pieces);
     stability.parse_parameters(prm);
     checkpoint_settings.parse_parameters(prm);
     linear_solver.keep_factorized_values(checkpoint_settings.enabled());
@@ -102,10 +106,13 @@ namespace GelMPM
     // subdivision are reported here, before anything is written).
     // The material points too: a body outside the grid or a piece that selects nothing is
     // bad input, found here.
-    create_material_points();
-    check_grid_resolves_body();
-    check_boundary_values();
-    check_output_directory();
+    {
+      dealii::TimerOutput::Scope scope(timer, "scene set-up");
+      create_material_points();
+      check_grid_resolves_body();
+      check_boundary_values();
+      check_output_directory();
+    }
 
     std::ostringstream used;
     prm.print_parameters(used, dealii::ParameterHandler::ShortPRM);
@@ -260,6 +267,70 @@ namespace GelMPM
 
   template <int dim>
   void
+  Simulator<dim>::print_piece_table() const
+  {
+    using Layout = PropertyLayout<dim>;
+    // Per piece (the last row: surface points of no piece): count, area, then the smallest and
+    // the largest of each normal component.
+    const unsigned int  n_rows = structure.boundary_pieces.size() + 1;
+    std::vector<double> count(n_rows, 0.), area(n_rows, 0.);
+    std::vector<double> lowest(n_rows * dim, std::numeric_limits<double>::infinity());
+    std::vector<double> highest(n_rows * dim, -std::numeric_limits<double>::infinity());
+    for (const auto &p : scene.particles)
+      {
+        const auto props = p.get_properties();
+        if (kind_of(props) == PointKind::volume)
+          continue;
+        const int          piece = piece_of(props);
+        const unsigned int row   = piece >= 0 ? piece : n_rows - 1;
+        count[row] += 1.;
+        area[row] += props[Layout::measure_0];
+        dealii::Tensor<1, dim> normal;
+        for (unsigned int d = 0; d < dim; ++d)
+          normal[d] = props[Layout::normal_area_0 + d];
+        normal /= normal.norm();
+        // Round-off of a normal's zero component would print as -0.000.
+        for (unsigned int d = 0; d < dim; ++d)
+          if (std::abs(normal[d]) < 1e-12)
+            normal[d] = 0.;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            lowest[row * dim + d]  = std::min(lowest[row * dim + d], normal[d]);
+            highest[row * dim + d] = std::max(highest[row * dim + d], normal[d]);
+          }
+      }
+    dealii::Utilities::MPI::sum(count, scene.communicator, count);
+    dealii::Utilities::MPI::sum(area, scene.communicator, area);
+    dealii::Utilities::MPI::min(lowest, scene.communicator, lowest);
+    dealii::Utilities::MPI::max(highest, scene.communicator, highest);
+
+    std::size_t width = 6;
+    for (const auto &name : structure.boundary_pieces)
+      width = std::max(width, name.size());
+    pcout << "  boundary pieces (initial area" << (dim == 2 ? " per unit thickness" : "")
+          << "; range of each component of the initial normal):\n";
+    for (unsigned int row = 0; row < n_rows; ++row)
+      {
+        if (row == n_rows - 1 && count[row] == 0.)
+          break;
+        const std::string name =
+          row < n_rows - 1 ? structure.boundary_pieces[row] : std::string("(none)");
+        pcout << "    " << std::left << std::setw(width) << name << std::right << std::setw(8)
+              << static_cast<unsigned long>(count[row]) << " points  area " << std::setw(10)
+              << std::setprecision(5) << area[row];
+        if (count[row] > 0.)
+          for (unsigned int d = 0; d < dim; ++d)
+            pcout << "  n" << "xyz"[d] << " " << std::fixed << std::setprecision(3)
+                  << std::setw(6) << lowest[row * dim + d] << " .. " << std::setw(6)
+                  << highest[row * dim + d] << std::defaultfloat;
+        pcout << '\n';
+      }
+    pcout << std::setprecision(6);
+  }
+
+
+  template <int dim>
+  void
   Simulator<dim>::prepare_output_directory() const
   {
     Collective::on_root(scene.communicator, [this]() {
@@ -328,6 +399,7 @@ namespace GelMPM
     n_surface_points = dealii::Utilities::MPI::sum(n_surface, scene.communicator);
     body_volume      = dealii::Utilities::MPI::sum(volume, scene.communicator);
     observables.set_communicator(scene.communicator);
+    balance.set_communicator(scene.communicator);
 
     tau_d    = std::pow(time_stepping.characteristic_length, 2) / scene.material.diffusivity();
     scale_u  = scene.material.shear_modulus() * std::pow(body_volume, (dim - 1.) / dim);
@@ -358,6 +430,11 @@ namespace GelMPM
         columns.push_back(name);
     for (const auto &c : observables.columns())
       columns.push_back(c);
+    for (const auto &c : balance.columns())
+      columns.push_back(c);
+    // Wall times differ from run to run: not in test mode, whose output is compared.
+    if (!output_settings.test_mode)
+      columns.push_back("wall_time");
     // A resumed run continues its files where the checkpoint left them.
     const auto open = [this](StatisticsFile                 &file,
                              const std::string              &name,
@@ -407,6 +484,8 @@ namespace GelMPM
     statistics.set("residual_u", report.residual_u);
     statistics.set("residual_mu", report.residual_mu);
     statistics.set("n_particles", scene.particles.n_global_particles());
+    if (!output_settings.test_mode && progress)
+      statistics.set("wall_time", progress->elapsed());
     if (scene.system && step > 0)
       {
         statistics.set("n_dofs_u", scene.spaces->n_u_dofs());
@@ -768,11 +847,11 @@ namespace GelMPM
 
 
   template <int dim>
-  bool
+  typename Simulator<dim>::StepOutcome
   Simulator<dim>::advance()
   {
     {
-      dealii::TimerOutput::Scope scope(timer, "setup");
+      dealii::TimerOutput::Scope scope(timer, "grid reset");
       if (grid_output || mode_output)
         grid_volume_points = volume_points_per_cell();
       // A grid reset that changes the classification gives the tangent a new sparsity pattern;
@@ -807,6 +886,10 @@ namespace GelMPM
     dealii::Vector<double> solution;
     for (unsigned int attempt = 1;; ++attempt)
       {
+        // On several ranks a signal reaches them at different moments: they stop together, at
+        // the first attempt where any of them has it.
+        if (dealii::Utilities::MPI::max(stop_signal(), scene.communicator) != 0)
+          return StepOutcome::interrupted;
         const double t_begin = control->time();
         const double step_dt = control->attempt();
         scene.system->set_boundary_values(t_begin + step_dt, t_begin);
@@ -861,7 +944,7 @@ namespace GelMPM
               {
                 pcout << "; the step would fall below 'Time stepping/Minimum step' = "
                       << time_stepping.minimum_step << std::endl;
-                return false;
+                return StepOutcome::failed;
               }
             pcout << "; retrying with dt = " << control->proposed_step() << std::endl;
             continue;
@@ -904,6 +987,10 @@ namespace GelMPM
                       stability.perturbation_amplitude > 0. &&
                       result.mode.size() == scene.spaces->n_u_dofs();
           }
+        // The piece's terms at the converged state, before a kick moves it.
+        std::vector<typename MixedSystem<dim>::PieceBalance> balances;
+        if (balance.enabled())
+          balances = scene.system->boundary_balances(solution, step_dt * tau_d);
         if (perturb)
           perturb_along_mode(result.drained_mode.size() == scene.spaces->n_u_dofs()
                                ? result.drained_mode
@@ -953,19 +1040,11 @@ namespace GelMPM
         last_dt = perturb ? 0. : step_dt;
         time    = control->time();
         step    = control->step();
+        progress->step_accepted(time, step_dt);
         statistics.set("dt", step_dt);
+        balance.record_step(balances, step_dt * tau_d, scene.particles, scene.material, statistics);
         record_statistics(report, attempt, &solution);
-
-        pcout << "  step " << std::setw(5) << step << "  t/tau_d = " << std::setw(11)
-              << std::setprecision(5) << time << "  dt = " << std::setw(10) << step_dt
-              << "  Newton " << std::setw(2) << report.iterations;
-        if (report.damped_iterations > 0)
-          pcout << " (" << report.damped_iterations << " damped)";
-        pcout << "  |R_u| " << std::setprecision(2) << report.residual_u << "  |R_mu| "
-              << report.residual_mu;
-        if (newton.log_failures && !report.history.empty())
-          pcout << "  (first: " << report.history[0][0] << ", " << report.history[0][1] << ")";
-        pcout << std::setprecision(6) << std::endl;
+        print_step_line(report, step_dt);
 
         const bool interval_due =
           (output_settings.interval_steps > 0 && step % output_settings.interval_steps == 0) ||
@@ -981,8 +1060,35 @@ namespace GelMPM
             output_settings.interval_time;
         if (control->at_stop_time() || interval_due || control->finished())
           write_output();
-        return true;
+        return StepOutcome::accepted;
       }
+  }
+
+
+  template <int dim>
+  void
+  Simulator<dim>::print_step_line(const NewtonReport &report, const double step_dt) const
+  {
+    pcout << "  step " << std::setw(5) << step << "  t/tau_d = " << std::setw(11)
+          << std::setprecision(5) << time << "  dt = " << std::setw(10) << step_dt << "  Newton "
+          << std::setw(2) << report.iterations;
+    if (report.damped_iterations > 0)
+      pcout << " (" << report.damped_iterations << " damped)";
+    pcout << "  |R_u| " << std::setprecision(2) << report.residual_u << "  |R_mu| "
+          << report.residual_mu;
+    if (newton.log_failures && !report.history.empty())
+      pcout << "  (first: " << report.history[0][0] << ", " << report.history[0][1] << ")";
+    // Wall times differ from run to run: not in test mode, whose log is compared.
+    if (!output_settings.test_mode)
+      {
+        pcout << "  wall " << format_duration(progress->elapsed()) << " ("
+              << std::setprecision(3) << 100. * time / time_stepping.end_time << "%";
+        const double remaining = progress->remaining();
+        if (remaining >= 0. && !control->finished())
+          pcout << ", end in ~" << format_duration(remaining);
+        pcout << ")";
+      }
+    pcout << std::setprecision(6) << std::endl;
   }
 
 
@@ -990,6 +1096,7 @@ namespace GelMPM
   int
   Simulator<dim>::advance_to_end()
   {
+    progress->begin_stepping();
     while (!control->finished())
       {
         // On several ranks a signal reaches them at different moments: they stop together,
@@ -1002,7 +1109,11 @@ namespace GelMPM
                   << time_stepping.maximum_steps << " steps at t/tau_d = " << time << std::endl;
             return 1;
           }
-        if (!advance())
+        const StepOutcome outcome = advance();
+        if (outcome == StepOutcome::interrupted)
+          return stop_on_signal(dealii::Utilities::MPI::max(stop_signal(), scene.communicator),
+                                false);
+        if (outcome == StepOutcome::failed)
           {
             pcout << "gelmpm: the run cannot converge beyond t/tau_d = " << time
                   << "; results up to there are in " << output_settings.directory << std::endl;
@@ -1041,7 +1152,7 @@ namespace GelMPM
     ar &mu_coefficients                                                    &mu_known;
     ar &announced_bracketing &inexact_extrapolation_noted &last_eigenvalue &mode_recorded;
     ar &last_stable_inertia.n_positive &last_stable_inertia.n_negative &last_stable_inertia.n_zero;
-    ar &*control &observables                                         &*particle_output;
+    ar &*control &observables &balance &*particle_output;
     if (grid_output)
       ar &*grid_output;
     if (mode_output)
@@ -1056,7 +1167,7 @@ namespace GelMPM
 
   template <int dim>
   void
-  Simulator<dim>::write_checkpoint()
+  Simulator<dim>::write_checkpoint(const bool with_tangent)
   {
     dealii::TimerOutput::Scope scope(timer, "checkpoint");
     const auto                 begin = std::chrono::steady_clock::now();
@@ -1083,7 +1194,9 @@ namespace GelMPM
     }
     std::vector<std::string> points = {my_points};
     resumed_classification          = scene.system->classification_of_pattern();
-    resumed_tangent                 = linear_solver.entries_of_factorization();
+    // Stopped between the attempts of a step, the factorisation is of a rejected attempt: the
+    // resumed run factorises afresh.
+    resumed_tangent = with_tangent ? linear_solver.entries_of_factorization() : SparseEntries();
     if (Collective::is_parallel(scene.communicator))
       {
         points           = dealii::Utilities::MPI::gather(scene.communicator, my_points, 0);
@@ -1160,6 +1273,7 @@ namespace GelMPM
   void
   Simulator<dim>::start()
   {
+    progress = std::make_unique<RunProgress>(time_stepping, run_start);
     scene.create_system();
     if (scene.contact.enabled())
       {
@@ -1194,6 +1308,7 @@ namespace GelMPM
     next_output_time = output_settings.interval_time;
 
     statistics.set("dt", 0.);
+    balance.record_initial(scene.particles, scene.material, statistics);
     record_statistics(NewtonReport(), 0, nullptr);
     write_output();
   }
@@ -1201,12 +1316,12 @@ namespace GelMPM
 
   template <int dim>
   int
-  Simulator<dim>::stop_on_signal(const int signal)
+  Simulator<dim>::stop_on_signal(const int signal, const bool between_steps)
   {
     // Before the last output, which the uninterrupted run would not write: the resumed run
     // drops it from the series.
     if (checkpoint_settings.enabled() && checkpoint_step != step)
-      write_checkpoint();
+      write_checkpoint(between_steps);
     if (output_step != step)
       write_output();
     pcerr << "gelmpm: " << signal_name(signal) << " received: stopped after step " << step
@@ -1224,6 +1339,7 @@ namespace GelMPM
     prepare_output_directory();
     pcout << "  material points: " << n_volume_points << " volume, " << n_surface_points
           << " surface; body volume " << body_volume << '\n';
+    print_piece_table();
     int status = 0;
     try
       {

@@ -225,6 +225,27 @@ namespace GelMPM
     std::pair<unsigned int, double>
     contact_state(const dealii::Vector<double> &solution) const;
 
+    /** What the boundary of one piece exerts on the body over a step. */
+    struct PieceBalance
+    {
+      /**
+       * The force on the body (traction, Nitsche and contact terms integrated over the piece's
+       * surface points), in G times length^(dim-1) (per unit thickness in 2D).
+       */
+      dealii::Tensor<1, dim> force;
+      /** The solvent volume that enters the body through the piece over the step. */
+      double solvent_in = 0.;
+    };
+
+    /**
+     * The force and the solvent inflow of each boundary piece for the converged @p solution of
+     * a step of @p dt: the piece's surface terms of the residual tested with constant w and q.
+     * At a converged state the forces of all pieces sum to zero and the inflows to the body's
+     * change of solvent volume, both to the Newton tolerance. Collective.
+     */
+    std::vector<PieceBalance>
+    boundary_balances(const dealii::Vector<double> &solution, const double dt) const;
+
     /** Number of material points of the last setup(), and how many take part in assembly. */
     unsigned int
     n_points() const;
@@ -275,6 +296,19 @@ namespace GelMPM
 
     struct CopyData;
     struct ScratchData;
+
+    /** The block's coefficients of @p solution into @p scratch (du, mu, n_u, n_mu). */
+    void
+    gather_block_coefficients(const Block                  &block,
+                              const dealii::Vector<double> &solution,
+                              ScratchData                  &scratch) const;
+
+    /**
+     * The point's shape functions and the fields at it (du, dF, mu, grad mu) from the block's
+     * coefficients in @p scratch.
+     */
+    void
+    evaluate_point_fields(const PointRecord &point, ScratchData &scratch) const;
 
     /** Add a block's local matrix to the tangent (the copier of the assembly). */
     void

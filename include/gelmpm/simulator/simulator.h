@@ -8,11 +8,13 @@
 #include <gelmpm/io/output_settings.h>
 #include <gelmpm/io/particle_output.h>
 #include <gelmpm/io/statistics_file.h>
+#include <gelmpm/simulator/boundary_balance.h>
 #include <gelmpm/simulator/observables.h>
 #include <gelmpm/simulator/scene.h>
 #include <gelmpm/simulator/scene_structure.h>
 #include <gelmpm/solvers/linear_solver.h>
 #include <gelmpm/solvers/newton.h>
+#include <gelmpm/solvers/run_progress.h>
 #include <gelmpm/solvers/step_control.h>
 #include <gelmpm/solvers/time_stepping.h>
 #include <gelmpm/stability/stability_analysis.h>
@@ -89,8 +91,23 @@ namespace GelMPM
     write_event(const std::string &name, const double t_over_tau_d, const int pore);
 
   private:
+    /** How advance() ended. */
+    enum class StepOutcome
+    {
+      accepted,  ///< a converged step was taken
+      failed,    ///< the step size fell below the minimum
+      interrupted ///< a stop signal arrived before an attempt; the last accepted state stands
+    };
+
     void
     print_header();
+    /**
+     * The table of the boundary pieces: surface points, initial area and the range of each
+     * component of the initial normal, so that a selector that takes the wrong points shows at
+     * once.
+     */
+    void
+    print_piece_table() const;
     void
     prepare_output_directory() const;
     /** Remove the files an earlier run wrote to the output directory (only names gelmpm writes). */
@@ -132,7 +149,7 @@ namespace GelMPM
      * material points, serialize_run_state()), with the .csv files on the disk first.
      */
     void
-    write_checkpoint();
+    write_checkpoint(const bool with_tangent = true);
     /**
      * Continue from the checkpoint read by the constructor: the material points and the run's
      * state, the .csv files cut back and the ParaView series rewritten to where they were.
@@ -149,20 +166,28 @@ namespace GelMPM
     void
     serialize_run_state(Archive &ar);
     /**
-     * End the run on @p signal after the current step: write its output unless written, say
-     * so, and return the conventional status 128 + @p signal.
+     * End the run on @p signal after the last accepted step: write its output unless written,
+     * say so, and return the conventional status 128 + @p signal. Not @p between_steps (stopped
+     * between the attempts of a step), the checkpoint leaves out the factorisation, which is of
+     * a rejected attempt.
      */
     int
-    stop_on_signal(const int signal);
+    stop_on_signal(const int signal, const bool between_steps = true);
     /**
      * Steps until the end time: 0, 1 if the run stopped early, 128 + the signal if a signal
      * asked it to stop (printed).
      */
     int
     advance_to_end();
-    /** Take one converged step; returns false if the step size fell below the minimum. */
-    bool
+    /**
+     * Take one converged step. A stop signal is looked for before every attempt, so that a step
+     * whose attempts keep failing can be stopped within one attempt.
+     */
+    StepOutcome
     advance();
+    /** The step line of the log for the step just accepted. */
+    void
+    print_step_line(const NewtonReport &report, const double step_dt) const;
     /** One row of statistics.csv; @p solution is the converged step's (nullptr initially). */
     void
     record_statistics(const NewtonReport           &report,
@@ -212,13 +237,16 @@ namespace GelMPM
     bool
     error_acceptable(const dealii::Vector<double> &solution, const double dt, std::string &failure);
 
-    SceneStructure    structure;
+    // First, so that the wall time of a run counts its set-up.
+    RunProgress::Clock::time_point run_start = RunProgress::Clock::now();
+    SceneStructure                 structure;
     Scene<dim>        scene;
     OutputSettings    output_settings;
     LinearSolver      linear_solver;
     NewtonSettings    newton;
     TimeStepping      time_stepping;
-    Observables<dim>  observables;
+    Observables<dim>     observables;
+    BoundaryBalance<dim> balance;
     StabilitySettings stability;
 
     std::string                scene_file;
@@ -237,6 +265,7 @@ namespace GelMPM
     StatisticsFile                       stability_file; // stability.csv, with the inertia
     StatisticsFile                       events_file;    // events.csv (inertia or pores)
     std::unique_ptr<StepControl>         control;
+    std::unique_ptr<RunProgress>         progress;
     bool                                 announced_bracketing        = false;
     bool                                 inexact_extrapolation_noted = false;
     Inertia                              last_stable_inertia;
