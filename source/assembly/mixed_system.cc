@@ -104,12 +104,12 @@ namespace GelMPM
 
 
   template <int dim>
-  MixedSystem<dim>::MixedSystem(const FloryRehnerGel<dim> &material,
+  MixedSystem<dim>::MixedSystem(const MaterialRegions<dim> &materials,
                                 BoundaryConditions<dim>   &boundary_conditions,
                                 const NitscheSettings     &nitsche,
                                 DiscreteSpaces<dim>       &spaces,
                                 const MPI_Comm             communicator)
-    : material(material)
+    : materials(materials)
     , boundary_conditions(boundary_conditions)
     , nitsche(nitsche)
     , spaces_(spaces)
@@ -245,7 +245,8 @@ namespace GelMPM
         r.F_p[i][j] = props[Layout::F + i * dim + j];
     r.mu_n      = props[Layout::mu];
     r.dmu_last  = props[Layout::mu_increment];
-    r.mobility  = material.mobility(r.F_p);
+    r.gel       = &materials[region_of_point<dim>(props)];
+    r.mobility  = r.gel->mobility(r.F_p);
     r.assembled = (r.kind == PointKind::volume) || (r.piece >= 0);
     if (r.kind != PointKind::volume)
       {
@@ -493,7 +494,7 @@ namespace GelMPM
         for (unsigned int d = 0; d < dim; ++d)
           u_bar_n[d] = piece.displacement_value().value(X0, d);
         const auto start =
-          material.incremental(dealii::unit_symmetric_tensor<dim>(), r.mu_n, r.F_p);
+          r.gel->incremental(dealii::unit_symmetric_tensor<dim>(), r.mu_n, r.F_p);
         r.adjoint_solvent_n =
           r.measure *
           dealii::scalar_product(outer(r.projector * (r.u_n - u_bar_n), r.normal), start.dP_n_dmu);
@@ -651,7 +652,8 @@ namespace GelMPM
     std::vector<PieceBalance> balances(boundary_conditions.n_pieces());
     ScratchData               scratch;
     CopyData                  copy;
-    const double              kTnu = material.kT_over_nu();
+    // One solvent: k_BT/nu is the same in every region (MaterialRegions).
+    const double              kTnu = materials[0].kT_over_nu();
     for (const auto &block : blocks)
       {
         bool has_surface_points = false;
@@ -784,9 +786,9 @@ namespace GelMPM
                                      ScratchData       &s,
                                      CopyData          &copy) const
   {
-    const auto   state     = material.incremental(s.delta_F, s.mu_at_point, point.F_p, with_matrix);
+    const auto   state     = point.gel->incremental(s.delta_F, s.mu_at_point, point.F_p, with_matrix);
     const double V         = point.measure;
-    const double kTnu      = material.kT_over_nu();
+    const double kTnu      = point.gel->kT_over_nu();
     const double m         = point.mobility;
     const unsigned int mu0 = dim * s.n_u;
 
@@ -857,7 +859,7 @@ namespace GelMPM
     const double       area  = point.measure;
     const auto        &N     = point.normal;
     const double       sym   = nitsche.symmetry;
-    const double       kTnu  = material.kT_over_nu();
+    const double       kTnu  = point.gel->kT_over_nu();
     const unsigned int mu0   = dim * s.n_u;
     auto              &K     = copy.matrix;
     auto              &r     = copy.residual;
@@ -876,7 +878,7 @@ namespace GelMPM
         add_displacement_nitsche(point,
                                  point.projector,
                                  point.projector * (point.u_n + s.du_at_point - point.u_bar),
-                                 nitsche.displacement_penalty * material.shear_modulus() /
+                                 nitsche.displacement_penalty * point.gel->shear_modulus() /
                                    spaces_.h_u(),
                                  with_matrix,
                                  s,
@@ -926,7 +928,7 @@ namespace GelMPM
     const unsigned int   mu0   = dim * s.n_u;
     auto                &K     = copy.matrix;
     auto                &r     = copy.residual;
-    const auto           state = material.incremental(s.delta_F, s.mu_at_point, point.F_p);
+    const auto           state = point.gel->incremental(s.delta_F, s.mu_at_point, point.F_p);
     const Tensor<2, dim> W     = outer(g, N);
     const Tensor<1, dim> Pi_PN = Pi * (state.P_n * N);
     Tensor<2, dim>       WA; // [k][L] = W_iJ A_iJkL
@@ -965,8 +967,8 @@ namespace GelMPM
         if (W_norm > 0.)
           {
             const double eps  = 1e-5 / W_norm;
-            const auto   plus = material.incremental(s.delta_F + eps * W, s.mu_at_point, point.F_p);
-            const auto minus  = material.incremental(s.delta_F - eps * W, s.mu_at_point, point.F_p);
+            const auto   plus = point.gel->incremental(s.delta_F + eps * W, s.mu_at_point, point.F_p);
+            const auto minus  = point.gel->incremental(s.delta_F - eps * W, s.mu_at_point, point.F_p);
             H                 = (plus.A_n - minus.A_n) / (2. * eps);
             // The exact H has the major symmetry; the difference has it only to round-off
             // divided by eps, which would make the symmetric Nitsche tangent unsymmetric at
@@ -978,7 +980,7 @@ namespace GelMPM
                     if (dim * m + Q > dim * k + L)
                       H[k][L][m][Q] = H[m][Q][k][L] = 0.5 * (H[k][L][m][Q] + H[m][Q][k][L]);
             // P_n is affine in mu, so this difference is exact.
-            const auto mu_plus = material.incremental(s.delta_F, s.mu_at_point + 1., point.F_p);
+            const auto mu_plus = point.gel->incremental(s.delta_F, s.mu_at_point + 1., point.F_p);
             for (unsigned int k = 0; k < dim; ++k)
               for (unsigned int L = 0; L < dim; ++L)
                 for (unsigned int i = 0; i < dim; ++i)
@@ -1024,11 +1026,11 @@ namespace GelMPM
                                       ScratchData       &s,
                                       CopyData          &copy) const
   {
-    const double beta = contact.penalty * material.shear_modulus() / spaces_.h_u();
+    const double beta = contact.penalty * point.gel->shear_modulus() / spaces_.h_u();
     // The traction P_n N, once per point for all planes (Nitsche only).
     Tensor<1, dim> traction;
     if (contact.method == ContactSettings::Method::nitsche)
-      traction = material.incremental(s.delta_F, s.mu_at_point, point.F_p).P_n * point.normal;
+      traction = point.gel->incremental(s.delta_F, s.mu_at_point, point.F_p).P_n * point.normal;
     for (const auto &plane : contact_planes)
       {
         const double   g = plane.sign * (point.x[plane.axis] + point.edge_offset[plane.axis] +
@@ -1151,7 +1153,6 @@ namespace GelMPM
   MixedSystem<dim>::update_particles(const dealii::Vector<double> &solution)
   {
     using Layout              = PropertyLayout<dim>;
-    const double lambda_0_dim = std::pow(material.lambda_0(), dim);
     // Every point writes its own particle: update them in parallel. A point beyond the grid's
     // edge is marked and the first of them (in the serial order) reported below.
     std::vector<unsigned char> outside(points.size(), 0);
@@ -1165,7 +1166,8 @@ namespace GelMPM
 
       const Tensor<2, dim> F_p = delta_F * r.F_p;
       // J_n relative to the initial configuration (the out-of-plane stretch stays lambda_0).
-      const double J_n = dealii::determinant(F_p) / lambda_0_dim;
+      const double lambda_0 = r.gel->lambda_0();
+      const double J_n      = dealii::determinant(F_p) / std::pow(lambda_0, dim);
 
       auto props = particles[p]->get_properties();
       for (unsigned int i = 0; i < dim; ++i)
@@ -1184,7 +1186,7 @@ namespace GelMPM
           for (unsigned int d = 0; d < dim; ++d)
             na0[d] = props[Layout::normal_area_0 + d];
           const Tensor<1, dim> na =
-            J_n * (dealii::transpose(dealii::invert(F_p)) * na0) * material.lambda_0();
+            J_n * (dealii::transpose(dealii::invert(F_p)) * na0) * lambda_0;
           for (unsigned int d = 0; d < dim; ++d)
             props[Layout::normal_area_n + d] = na[d];
           props[Layout::measure_n] = na.norm();
@@ -1493,7 +1495,6 @@ namespace GelMPM
     double       penetration = 0.;
     if (!contact.enabled())
       return {active, penetration};
-    const double beta = contact.penalty * material.shear_modulus() / spaces_.h_u();
     for (const auto &r : points)
       {
         if (r.kind == PointKind::volume || r.piece < 0 ||
@@ -1503,7 +1504,8 @@ namespace GelMPM
         Tensor<2, dim> delta_F;
         double         mu;
         fields_at_point(r, solution, du, delta_F, mu);
-        bool is_active = false;
+        bool         is_active = false;
+        const double beta      = contact.penalty * r.gel->shear_modulus() / spaces_.h_u();
         for (const auto &plane : contact_planes)
           {
             const double g = plane.sign * (r.x[plane.axis] + r.edge_offset[plane.axis] +
@@ -1513,7 +1515,7 @@ namespace GelMPM
               {
                 Tensor<1, dim> n;
                 n[plane.axis]    = plane.sign;
-                const auto state = material.incremental(delta_F, mu, r.F_p);
+                const auto state = r.gel->incremental(delta_F, mu, r.F_p);
                 is_active |= beta * g - n * (state.P_n * r.normal) > 0.;
               }
             else

@@ -12,9 +12,9 @@ namespace GelMPM
 {
   template <int dim>
   ParticleOutput<dim>::ParticleOutput(const std::string         &directory,
-                                      const FloryRehnerGel<dim> &material,
+                                      const MaterialRegions<dim> &materials,
                                       const MPI_Comm             communicator)
-    : material(material)
+    : materials(materials)
     , series(directory, "particles", communicator)
   {}
 
@@ -28,6 +28,10 @@ namespace GelMPM
     using namespace dealii;
 
     std::vector<std::string> names = {"kind", "piece", "mu_over_kT", "J", "phi", "measure"};
+    // The region only where there are several: one gel writes nothing it does not need.
+    const bool regions = materials.size() > 1;
+    if (regions)
+      names.push_back("region");
     for (unsigned int d = 0; d < dim; ++d)
       names.push_back("stretch_" + std::to_string(d + 1));
     const unsigned int stress_first = names.size();
@@ -67,8 +71,10 @@ namespace GelMPM
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = 0; j < dim; ++j)
             F[i][j] = props[Layout::F + i * dim + j];
-        const double mu = props[Layout::mu];
-        const double J  = material.J(F);
+        const double               mu       = props[Layout::mu];
+        const unsigned int         region   = region_of_point<dim>(props);
+        const FloryRehnerGel<dim> &material = materials[region];
+        const double               J        = material.J(F);
 
         DataOutBase::Patch<0, dim> patch;
         const Point<dim>           x = position_of(particle.get_location(), props);
@@ -81,13 +87,16 @@ namespace GelMPM
         patch.data(3, 0) = J;
         patch.data(4, 0) = 1. - 1. / J;
         patch.data(5, 0) = props[Layout::measure_n];
+        const unsigned int first_stretch = regions ? 7 : 6;
+        if (regions)
+          patch.data(6, 0) = region;
         // Principal stretches from F F^T by Jacobi rotations: the closed-form eigenvalues of a
         // nearly isotropic tensor take the root of a discriminant that round-off can make
         // slightly negative, a NaN in ParaView (sorted in descending order either way).
         const auto principal =
           eigenvectors(symmetrize(F * transpose(F)), SymmetricTensorEigenvectorMethod::jacobi);
         for (unsigned int d = 0; d < dim; ++d)
-          patch.data(6 + d, 0) = std::sqrt(std::max(principal[dim - 1 - d].first, 0.));
+          patch.data(first_stretch + d, 0) = std::sqrt(std::max(principal[dim - 1 - d].first, 0.));
         if (J > 1.)
           {
             const Tensor<2, dim> sigma = material.stress(F, mu) * transpose(F) / J;

@@ -137,23 +137,67 @@ namespace GelMPM
                                         const BackgroundGrid<dim>        &grid,
                                         const dealii::Triangulation<dim> &tria,
                                         const BoundaryConditions<dim>    &boundary_conditions,
+                                        const MaterialRegions<dim>       &regions,
+                                        dealii::Particles::ParticleHandler<dim> &particles) const
+  {
+    // Every region's points start at one chemical potential, each at its own stretch.
+    generate_at(geometry, grid, tria, boundary_conditions, regions, regions[0].mu_0(), particles);
+  }
+
+
+  template <int dim>
+  void
+  MaterialPointGenerator<dim>::generate(const Geometry<dim>              &geometry,
+                                        const BackgroundGrid<dim>        &grid,
+                                        const dealii::Triangulation<dim> &tria,
+                                        const BoundaryConditions<dim>    &boundary_conditions,
                                         const double                      lambda_0,
                                         const double                      mu_0,
                                         dealii::Particles::ParticleHandler<dim> &particles) const
   {
+    const MaterialRegions<dim> one(FloryRehnerGel<dim>(1., 0.1, 7.299e-3, 1., lambda_0));
+    generate_at(geometry, grid, tria, boundary_conditions, one, mu_0, particles);
+  }
+
+
+  template <int dim>
+  void
+  MaterialPointGenerator<dim>::generate_at(const Geometry<dim>              &geometry,
+                                           const BackgroundGrid<dim>        &grid,
+                                           const dealii::Triangulation<dim> &tria,
+                                           const BoundaryConditions<dim>    &boundary_conditions,
+                                           const MaterialRegions<dim>       &regions,
+                                           const double                      mu_0,
+                                           dealii::Particles::ParticleHandler<dim> &particles) const
+  {
     using Layout = PropertyLayout<dim>;
 
     const GridCellLocator<dim> locator(grid, tria);
-
+    if (regions.uses_mesh_groups())
+      {
+        require(geometry.source() == Geometry<dim>::Source::mesh,
+                "Material/Regions",
+                "has a region chosen by 'Mesh group', but the body is not a mesh",
+                "give the body by 'Geometry/Mesh file' or choose the region by 'Selector'");
+        std::vector<std::string> volume_groups, boundary_groups;
+        for (const auto &[id, name] : geometry.mesh_volume_group_names())
+          volume_groups.push_back(name);
+        for (const auto &[id, name] : geometry.mesh_group_names())
+          boundary_groups.push_back(name);
+        regions.check_mesh_groups(volume_groups, boundary_groups);
+      }
+    std::vector<unsigned long>    volume_points_of_region(regions.size(), 0);
     std::vector<double>           properties(Layout::n_properties, 0.);
     dealii::types::particle_index next_id = 0;
-    const auto                    insert  = [&](const dealii::Point<dim> &x) {
+    const auto insert = [&](const dealii::Point<dim> &x, const unsigned int region) {
+      const double lambda_0 = regions[region].lambda_0();
       for (unsigned int d = 0; d < dim; ++d)
         properties[Layout::position_0 + d] = x[d];
       for (unsigned int i = 0; i < dim; ++i)
         for (unsigned int j = 0; j < dim; ++j)
           properties[Layout::F + i * dim + j] = (i == j) ? lambda_0 : 0.;
-      properties[Layout::mu] = mu_0;
+      properties[Layout::mu]     = mu_0;
+      properties[Layout::region] = region;
       // Every rank walks all points, so that ids and checks are the same on all; each keeps
       // the points of the cells it owns.
       const auto [cell, reference] = locator.locate(x);
@@ -166,13 +210,16 @@ namespace GelMPM
     for (unsigned int d = 1; d < dim; ++d)
       h_min = std::min(h_min, grid.cell_size(d));
 
-    const auto insert_volume_point = [&](const dealii::Point<dim> &x, const double volume) {
-      std::fill(properties.begin(), properties.end(), 0.);
-      properties[Layout::kind]      = static_cast<double>(PointKind::volume);
-      properties[Layout::piece]     = -1;
-      properties[Layout::measure_0] = properties[Layout::measure_n] = volume;
-      insert(x);
-    };
+    const auto insert_volume_point =
+      [&](const dealii::Point<dim> &x, const double volume, const std::string &group) {
+        std::fill(properties.begin(), properties.end(), 0.);
+        properties[Layout::kind]      = static_cast<double>(PointKind::volume);
+        properties[Layout::piece]     = -1;
+        properties[Layout::measure_0] = properties[Layout::measure_n] = volume;
+        const unsigned int region     = regions.size() > 1 ? regions.region_of(x, group) : 0;
+        ++volume_points_of_region[region];
+        insert(x, region);
+      };
 
     if (geometry.source() == Geometry<dim>::Source::mesh)
       // At the Gauss points of the mesh cells, as densely as the sub-cells of a box body.
@@ -182,7 +229,7 @@ namespace GelMPM
                   geometry.entry(),
                   "puts the body outside the background grid, e.g. at " + text(e.centre),
                   "enlarge 'Background grid/Lower corner' and 'Upper corner' or move the body");
-          insert_volume_point(e.centre, e.volume);
+          insert_volume_point(e.centre, e.volume, e.group_name);
         }
     else
       {
@@ -212,7 +259,7 @@ namespace GelMPM
                 }
               in_boxes |= geometry.inside_boxes(x);
               if (geometry.inside(x))
-                insert_volume_point(x, sub_volume);
+                insert_volume_point(x, sub_volume, "");
             }
         require(next_id > 0 || !in_boxes,
                 "Geometry/Holes",
@@ -230,6 +277,8 @@ namespace GelMPM
                 "places no volume point inside the background grid",
                 "put the body inside 'Background grid'");
       }
+
+    regions.check_populated(volume_points_of_region);
 
     // The body must lie in the grid: check the boundary (it bounds the body).
     check_boundary_groups(geometry, boundary_conditions);
@@ -262,7 +311,12 @@ namespace GelMPM
           for (unsigned int d = 0; d < dim; ++d)
             properties[Layout::normal_area_0 + d] = properties[Layout::normal_area_n + d] =
               e.normal_area[d];
-          insert(e.centre);
+          // A surface point takes the region of the body just inside it: on an interface that
+          // meets the boundary, the side its normal points away from.
+          unsigned int region = 0;
+          if (regions.size() > 1)
+            region = regions.region_of(e.centre - (0.01 * h_min) * normal, e.volume_group);
+          insert(e.centre, region);
         }
       for (unsigned int i = 0; i < boundary_conditions.n_pieces(); ++i)
         if (count[i] == 0)

@@ -528,6 +528,8 @@ namespace GelMPM
                             : "hexahedra or tetrahedra only"));
     std::ifstream in(file_name);
     group_names = read_physical_names(in, dim - 1);
+    std::ifstream again(file_name);
+    volume_group_names = read_physical_names(again, dim);
     mesh_       = mesh;
     mesh_file   = file_name;
     source_     = Source::mesh;
@@ -1124,8 +1126,10 @@ namespace GelMPM
                                                               dealii::update_quadrature_points |
                                                                 dealii::update_JxW_values);
         fe_values->reinit(cell);
+        const auto  named = volume_group_names.find(cell->material_id());
+        const auto &group = named == volume_group_names.end() ? std::string() : named->second;
         for (const unsigned int k : fe_values->quadrature_point_indices())
-          elements.push_back({fe_values->quadrature_point(k), fe_values->JxW(k)});
+          elements.push_back({fe_values->quadrature_point(k), fe_values->JxW(k), group});
       }
     return elements;
   }
@@ -1165,11 +1169,14 @@ namespace GelMPM
           const auto  id    = face->boundary_id();
           const auto  named = group_names.find(id);
           const auto &name  = named == group_names.end() ? std::string() : named->second;
+          const auto  volume = volume_group_names.find(cell->material_id());
+          const auto &group  = volume == volume_group_names.end() ? std::string() : volume->second;
           for (const unsigned int k : fe_values->quadrature_point_indices())
             elements.push_back({fe_values->quadrature_point(k),
                                 fe_values->JxW(k) * fe_values->normal_vector(k),
                                 id,
-                                name});
+                                name,
+                                group});
         }
     return elements;
   }
@@ -1192,6 +1199,14 @@ namespace GelMPM
   Geometry<dim>::mesh_group_names() const
   {
     return group_names;
+  }
+
+
+  template <int dim>
+  const std::map<dealii::types::boundary_id, std::string> &
+  Geometry<dim>::mesh_volume_group_names() const
+  {
+    return volume_group_names;
   }
 
 

@@ -104,7 +104,7 @@ namespace GelMPM
   template <int dim>
   double
   BoundaryBalance<dim>::solvent_volume(const dealii::Particles::ParticleHandler<dim> &particles,
-                                       const FloryRehnerGel<dim> &material) const
+                                       const MaterialRegions<dim> &material) const
   {
     using Layout  = PropertyLayout<dim>;
     double volume = 0.;
@@ -117,7 +117,7 @@ namespace GelMPM
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = 0; j < dim; ++j)
             F[i][j] = props[Layout::F + i * dim + j];
-        volume += props[Layout::measure_n] * (1. - 1. / material.J(F));
+        volume += props[Layout::measure_n] * (1. - 1. / material[region_of_point<dim>(props)].J(F));
       }
     return dealii::Utilities::MPI::sum(volume, communicator);
   }
@@ -126,7 +126,7 @@ namespace GelMPM
   template <int dim>
   void
   BoundaryBalance<dim>::record_initial(const dealii::Particles::ParticleHandler<dim> &particles,
-                                       const FloryRehnerGel<dim>                     &material,
+                                       const MaterialRegions<dim>                    &material,
                                        StatisticsFile                                &statistics)
   {
     if (!enabled())
@@ -152,7 +152,7 @@ namespace GelMPM
     const std::vector<typename MixedSystem<dim>::PieceBalance> &balances,
     const double                                                 dt,
     const dealii::Particles::ParticleHandler<dim>               &particles,
-    const FloryRehnerGel<dim>                                   &material,
+    const MaterialRegions<dim>                                  &material,
     StatisticsFile                                              &statistics)
   {
     if (!enabled())

@@ -222,7 +222,7 @@ namespace GelMPM
   template <int dim>
   void
   Observables<dim>::evaluate(const dealii::Particles::ParticleHandler<dim>    &particles,
-                             const FloryRehnerGel<dim>                        &material,
+                             const MaterialRegions<dim>                       &material,
                              const std::function<std::pair<double, double>()> &dirichlet_errors,
                              StatisticsFile                                   &statistics) const
   {
@@ -456,7 +456,7 @@ namespace GelMPM
   std::array<double, 3>
   Observables<dim>::volume_ratio_statistics(
     const dealii::Particles::ParticleHandler<dim> &particles,
-    const FloryRehnerGel<dim>                     &material) const
+    const MaterialRegions<dim>                    &material) const
   {
     using Layout = PropertyLayout<dim>;
     double J_min = std::numeric_limits<double>::max(), J_max = -J_min;
@@ -470,7 +470,7 @@ namespace GelMPM
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = 0; j < dim; ++j)
             F[i][j] = props[Layout::F + i * dim + j];
-        const double J = material.J(F);
+        const double J = material[region_of_point<dim>(props)].J(F);
         J_min          = std::min(J_min, J);
         J_max          = std::max(J_max, J);
         sum_JV += J * props[Layout::measure_0];

@@ -9,9 +9,11 @@ namespace GelMPM
   template <int dim>
   void
   Scene<dim>::declare_parameters(dealii::ParameterHandler       &prm,
-                                 const std::vector<std::string> &boundary_pieces)
+                                 const std::vector<std::string> &boundary_pieces,
+                                 const std::vector<std::string> &material_regions)
   {
     FloryRehnerGel<dim>::declare_parameters(prm);
+    MaterialRegions<dim>::declare_parameters(prm, material_regions);
     BackgroundGrid<dim>::declare_parameters(prm);
     Geometry<dim>::declare_parameters(prm);
     BoundaryConditions<dim>::declare_parameters(prm, boundary_pieces);
@@ -26,10 +28,12 @@ namespace GelMPM
   Scene<dim>::Scene(dealii::ParameterHandler       &prm,
                     const std::vector<std::string> &boundary_pieces,
                     const std::string              &scene_directory,
-                    const MPI_Comm                  communicator)
+                    const MPI_Comm                  communicator,
+                    const std::vector<std::string> &material_regions)
     : communicator(communicator)
   {
     material.parse_parameters(prm);
+    regions.parse_parameters(prm, material_regions, material);
     grid.parse_parameters(prm);
     geometry.parse_parameters(prm, scene_directory);
     boundary_conditions.parse_parameters(prm, boundary_pieces);
@@ -66,8 +70,7 @@ namespace GelMPM
                        grid,
                        *triangulation,
                        boundary_conditions,
-                       material.lambda_0(),
-                       material.mu_0(),
+                       regions,
                        particles);
     balance_partition();
   }
@@ -107,7 +110,7 @@ namespace GelMPM
   void
   Scene<dim>::create_system()
   {
-    system = std::make_unique<MixedSystem<dim>>(material,
+    system = std::make_unique<MixedSystem<dim>>(regions,
                                                 boundary_conditions,
                                                 nitsche,
                                                 *spaces,

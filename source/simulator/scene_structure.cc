@@ -25,6 +25,16 @@ namespace GelMPM
                       "boundary point belongs to the first piece whose selector it satisfies; "
                       "points of no piece are traction-free and impermeable.");
     prm.leave_subsection();
+    prm.enter_subsection("Material");
+    prm.declare_entry("Regions",
+                      "",
+                      dealii::Patterns::List(dealii::Patterns::Anything()),
+                      "Comma-separated names of the regions of the body with a gel of their own "
+                      "(e.g. a bilayer: 'active'). Each name gets a subsection 'Material/<name>' "
+                      "that selects the region and gives the constants that differ from this "
+                      "section's; the rest of the body is of this section's gel. Regions are "
+                      "bonded. Empty: one gel.");
+    prm.leave_subsection();
   }
 
 
@@ -36,6 +46,9 @@ namespace GelMPM
     auto &p     = const_cast<dealii::ParameterHandler &>(prm);
     p.enter_subsection("Boundary conditions");
     s.boundary_pieces = dealii::Utilities::split_string_list(p.get("Pieces"), ',');
+    p.leave_subsection();
+    p.enter_subsection("Material");
+    s.material_regions = dealii::Utilities::split_string_list(p.get("Regions"), ',');
     p.leave_subsection();
 
     std::set<std::string> seen;
@@ -53,6 +66,23 @@ namespace GelMPM
                 "Boundary conditions/Pieces",
                 "names the piece '" + name + "' twice",
                 "give every piece a distinct name");
+      }
+    // A region's subsection sits beside the section's own entries and subsections.
+    std::set<std::string> regions;
+    for (const auto &name : s.material_regions)
+      {
+        require(!name.empty(),
+                "Material/Regions",
+                "contains an empty name",
+                "remove the doubled or trailing comma");
+        require(name.find('/') == std::string::npos,
+                "Material/Regions",
+                "contains the name '" + name + "' with a '/'",
+                "use names without '/'");
+        require(regions.insert(name).second,
+                "Material/Regions",
+                "names the region '" + name + "' twice",
+                "give every region a distinct name");
       }
     return s;
   }

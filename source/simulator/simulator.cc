@@ -30,7 +30,7 @@ namespace GelMPM
   {
     SceneStructure::declare_parameters(prm);
     OutputSettings::declare_parameters(prm);
-    Scene<dim>::declare_parameters(prm, structure.boundary_pieces);
+    Scene<dim>::declare_parameters(prm, structure.boundary_pieces, structure.material_regions);
     LinearSolver::declare_parameters(prm);
     NewtonSettings::declare_parameters(prm);
     TimeStepping::declare_parameters(prm);
@@ -49,7 +49,9 @@ namespace GelMPM
     : structure(structure)
     , scene(prm,
             structure.boundary_pieces,
-            scene_file.empty() ? "" : std::filesystem::path(scene_file).parent_path().string())
+            scene_file.empty() ? "" : std::filesystem::path(scene_file).parent_path().string(),
+            MPI_COMM_WORLD,
+            structure.material_regions)
     , scene_file(scene_file)
     , pcout(std::cout, dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
     , pcerr(std::cerr, dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
@@ -214,7 +216,7 @@ namespace GelMPM
     std::vector<double> times;
     for (unsigned int k = 0; k <= 8; ++k)
       times.push_back(time_stepping.end_time * k / 8.);
-    const double largest_mu = scene.material.largest_swelling_chemical_potential();
+    const double largest_mu = scene.regions.largest_swelling_chemical_potential();
     for (unsigned int i = 0; i < scene.boundary_conditions.n_pieces(); ++i)
       scene.boundary_conditions.piece(i).check_values(samples[i], times, largest_mu);
   }
@@ -503,7 +505,7 @@ namespace GelMPM
         statistics.set("contact_points", active);
         statistics.set("contact_penetration", penetration);
       }
-    observables.evaluate(scene.particles, scene.material, dirichlet_errors, statistics);
+    observables.evaluate(scene.particles, scene.regions, dirichlet_errors, statistics);
     statistics.write_row();
     record_pore_events();
   }
@@ -1042,7 +1044,7 @@ namespace GelMPM
         step    = control->step();
         progress->step_accepted(time, step_dt);
         statistics.set("dt", step_dt);
-        balance.record_step(balances, step_dt * tau_d, scene.particles, scene.material, statistics);
+        balance.record_step(balances, step_dt * tau_d, scene.particles, scene.regions, statistics);
         record_statistics(report, attempt, &solution);
         print_step_line(report, step_dt);
 
@@ -1283,7 +1285,7 @@ namespace GelMPM
                                        0.01 * scene.spaces->h_u());
       }
     particle_output = std::make_unique<ParticleOutput<dim>>(output_settings.directory,
-                                                            scene.material,
+                                                            scene.regions,
                                                             scene.communicator);
     mu_coefficients.assign(scene.spaces->mu_space().n_functions(), scene.material.mu_0());
     mu_known.assign(scene.spaces->mu_space().n_functions(), true);
@@ -1308,7 +1310,7 @@ namespace GelMPM
     next_output_time = output_settings.interval_time;
 
     statistics.set("dt", 0.);
-    balance.record_initial(scene.particles, scene.material, statistics);
+    balance.record_initial(scene.particles, scene.regions, statistics);
     record_statistics(NewtonReport(), 0, nullptr);
     write_output();
   }

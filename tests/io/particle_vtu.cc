@@ -56,7 +56,8 @@ main(int argc, char **argv)
   particles.update_cached_numbers();
 
   std::filesystem::create_directories("vtu");
-  ParticleOutput<2> output("vtu", gel);
+  const MaterialRegions<2> one_gel(gel);
+  ParticleOutput<2>        output("vtu", one_gel);
   output.write(particles, 0.);
   output.write(particles, 0.25);
 

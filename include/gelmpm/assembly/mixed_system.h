@@ -8,6 +8,7 @@
 #include <gelmpm/material/flory_rehner_gel.h>
 #include <gelmpm/particles/property_layout.h>
 #include <gelmpm/scene/boundary_conditions.h>
+#include <gelmpm/scene/material_regions.h>
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/mpi.h>
@@ -69,7 +70,7 @@ namespace GelMPM
   class MixedSystem
   {
   public:
-    MixedSystem(const FloryRehnerGel<dim> &material,
+    MixedSystem(const MaterialRegions<dim> &materials,
                 BoundaryConditions<dim>   &boundary_conditions,
                 const NitscheSettings     &nitsche,
                 DiscreteSpaces<dim>       &spaces,
@@ -271,6 +272,7 @@ namespace GelMPM
       dealii::Tensor<1, dim> u_n;         // x_n - X_0
       dealii::Tensor<1, dim> du_last;     // x_n - x_{n-1}
       dealii::Tensor<2, dim> F_p;         // F_n F_0
+      const FloryRehnerGel<dim> *gel;     // the gel of the point's region
       double                 mobility;    // m_n in the weak form's units
       double                 mu_n;        // mu at the point, last converged step
       double                 dmu_last;    // mu_n - mu_{n-1}
@@ -438,7 +440,7 @@ namespace GelMPM
                       ScratchData       &scratch,
                       CopyData          &copy) const;
 
-    const FloryRehnerGel<dim>          &material;
+    const MaterialRegions<dim>         &materials;
     BoundaryConditions<dim>            &boundary_conditions;
     const NitscheSettings              &nitsche;
     DiscreteSpaces<dim>                &spaces_;

@@ -3,6 +3,7 @@
 
 #include <gelmpm/io/pvd_series.h>
 #include <gelmpm/material/flory_rehner_gel.h>
+#include <gelmpm/scene/material_regions.h>
 
 #include <deal.II/particles/particle_handler.h>
 
@@ -28,7 +29,7 @@ namespace GelMPM
   public:
     /** A series in @p directory; on several ranks of @p communicator each writes its points. */
     ParticleOutput(const std::string         &directory,
-                   const FloryRehnerGel<dim> &material,
+                   const MaterialRegions<dim> &materials,
                    const MPI_Comm             communicator = MPI_COMM_SELF);
 
     /** Write the points at @p time (in tau_d) and update the .pvd series. */
@@ -55,7 +56,7 @@ namespace GelMPM
     }
 
   private:
-    const FloryRehnerGel<dim> &material;
+    const MaterialRegions<dim> &materials;
     PvdSeries                  series;
   };
 } // namespace GelMPM

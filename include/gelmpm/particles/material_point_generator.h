@@ -5,6 +5,7 @@
 #include <gelmpm/scene/background_grid.h>
 #include <gelmpm/scene/boundary_conditions.h>
 #include <gelmpm/scene/geometry.h>
+#include <gelmpm/scene/material_regions.h>
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/particles/particle_handler.h>
@@ -40,7 +41,22 @@ namespace GelMPM
      * outside the grid (naming Geometry::entry()), when a boundary piece selects no surface
      * point, selects by the physical groups of a body that is not a mesh or names a group the
      * mesh does not have ("Boundary conditions/<name>/Selector"), or when no volume point lies in
-     * the body.
+     * the body. Each point gets the region of @p regions it lies in, that region's initial
+     * stretch and the common initial chemical potential; a surface point that of the volume just
+     * inside it (for a mesh: of its face's cell). Throws InputError for overlapping regions, a
+     * region without volume points or a region's mesh group that is not a volume group.
+     */
+    void
+    generate(const Geometry<dim>                     &geometry,
+             const BackgroundGrid<dim>               &grid,
+             const dealii::Triangulation<dim>        &tria,
+             const BoundaryConditions<dim>           &boundary_conditions,
+             const MaterialRegions<dim>              &regions,
+             dealii::Particles::ParticleHandler<dim> &particles) const;
+
+    /**
+     * As above for a body of one gel, every point at the initial stretch @p lambda_0 and the
+     * chemical potential @p mu_0 (for tests of the generation alone).
      */
     void
     generate(const Geometry<dim>                     &geometry,
@@ -51,6 +67,18 @@ namespace GelMPM
              const double                             mu_0,
              dealii::Particles::ParticleHandler<dim> &particles) const;
 
+  private:
+    /** generate() with the points' initial chemical potential @p mu_0. */
+    void
+    generate_at(const Geometry<dim>                     &geometry,
+                const BackgroundGrid<dim>               &grid,
+                const dealii::Triangulation<dim>        &tria,
+                const BoundaryConditions<dim>           &boundary_conditions,
+                const MaterialRegions<dim>              &regions,
+                const double                             mu_0,
+                dealii::Particles::ParticleHandler<dim> &particles) const;
+
+  public:
     unsigned int points_per_cell         = 3;
     unsigned int surface_points_per_edge = 2;
   };

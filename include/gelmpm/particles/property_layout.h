@@ -64,6 +64,8 @@ namespace GelMPM
    *   violation in the point's displacement, so that the next step's Nitsche or contact term
    *   sees it and removes it. Dropping it would reset the violation at every step and let the
    *   body creep through the edge by one violation per step (doc/method.md).
+   * - region: the material region of the point (MaterialRegions; 0: the body's own material),
+   *   fixed at its creation.
    */
   template <int dim>
   struct PropertyLayout
@@ -80,7 +82,8 @@ namespace GelMPM
     static constexpr unsigned int increment     = normal_area_n + dim;
     static constexpr unsigned int mu_increment  = increment + dim;
     static constexpr unsigned int edge_offset   = mu_increment + 1;
-    static constexpr unsigned int n_properties  = edge_offset + dim;
+    static constexpr unsigned int region        = edge_offset + dim;
+    static constexpr unsigned int n_properties  = region + 1;
   };
 
 
@@ -109,6 +112,15 @@ namespace GelMPM
   kind_of(const Properties &properties)
   {
     return static_cast<PointKind>(std::lround(properties[PropertyLayout<1>::kind]));
+  }
+
+
+  /** The material region of the point whose property array is @p properties. */
+  template <int dim, typename Properties>
+  inline unsigned int
+  region_of_point(const Properties &properties)
+  {
+    return static_cast<unsigned int>(std::lround(properties[PropertyLayout<dim>::region]));
   }
 
 

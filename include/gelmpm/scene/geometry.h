@@ -62,6 +62,8 @@ namespace GelMPM
       dealii::Tensor<1, dim>     normal_area;
       dealii::types::boundary_id boundary_id = dealii::numbers::invalid_boundary_id;
       std::string                group_name;
+      /** Mesh bodies: the physical group (dimension dim) of the cell the face belongs to. */
+      std::string volume_group;
     };
 
     /**
@@ -105,6 +107,8 @@ namespace GelMPM
     {
       dealii::Point<dim> centre;
       double             volume;
+      /** Mesh bodies: the physical group (dimension dim) of the element's cell, or empty. */
+      std::string group_name = "";
     };
 
     static void
@@ -229,6 +233,10 @@ namespace GelMPM
     const std::map<dealii::types::boundary_id, std::string> &
     mesh_group_names() const;
 
+    /** Mesh bodies: the names of the physical groups of dimension dim by material id. */
+    const std::map<dealii::types::boundary_id, std::string> &
+    mesh_volume_group_names() const;
+
     /** Mesh bodies: the mesh. */
     const dealii::Triangulation<dim> &
     mesh() const;
@@ -331,6 +339,7 @@ namespace GelMPM
     std::shared_ptr<dealii::Triangulation<dim>>       mesh_;
     std::string                                       mesh_file;
     std::map<dealii::types::boundary_id, std::string> group_names;
+    std::map<dealii::types::boundary_id, std::string> volume_group_names;
   };
 } // namespace GelMPM
 

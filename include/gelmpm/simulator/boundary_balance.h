@@ -65,7 +65,7 @@ namespace GelMPM
      */
     void
     record_initial(const dealii::Particles::ParticleHandler<dim> &particles,
-                   const FloryRehnerGel<dim>                     &material,
+                   const MaterialRegions<dim>                    &material,
                    StatisticsFile                                &statistics);
 
     /**
@@ -76,7 +76,7 @@ namespace GelMPM
     record_step(const std::vector<typename MixedSystem<dim>::PieceBalance> &balances,
                 const double                                                 dt,
                 const dealii::Particles::ParticleHandler<dim>               &particles,
-                const FloryRehnerGel<dim>                                   &material,
+                const MaterialRegions<dim>                                  &material,
                 StatisticsFile                                              &statistics);
 
     /** The run's sums, for a checkpoint (boost serialization). */
@@ -94,7 +94,7 @@ namespace GelMPM
     /** The body's solvent volume, sum over the volume points of V_n (1 - 1/J). Collective. */
     double
     solvent_volume(const dealii::Particles::ParticleHandler<dim> &particles,
-                   const FloryRehnerGel<dim>                     &material) const;
+                   const MaterialRegions<dim>                    &material) const;
 
   private:
     std::vector<unsigned int> pieces_shown; // indices into the scene's pieces

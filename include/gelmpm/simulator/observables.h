@@ -4,6 +4,7 @@
 #include <gelmpm/assembly/contact_settings.h>
 #include <gelmpm/io/statistics_file.h>
 #include <gelmpm/material/flory_rehner_gel.h>
+#include <gelmpm/scene/material_regions.h>
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/particles/particle_handler.h>
@@ -70,7 +71,7 @@ namespace GelMPM
      */
     void
     evaluate(const dealii::Particles::ParticleHandler<dim>    &particles,
-             const FloryRehnerGel<dim>                        &material,
+             const MaterialRegions<dim>                       &material,
              const std::function<std::pair<double, double>()> &dirichlet_errors,
              StatisticsFile                                   &statistics) const;
 
@@ -140,7 +141,7 @@ namespace GelMPM
     /** (min, V_0-weighted mean, max) of J over the volume points. */
     std::array<double, 3>
     volume_ratio_statistics(const dealii::Particles::ParticleHandler<dim> &particles,
-                            const FloryRehnerGel<dim>                     &material) const;
+                            const MaterialRegions<dim>                    &material) const;
     /** The oscillation measure of mu over the volume points (one MPI rank). */
     double
     chemical_potential_oscillation(const dealii::Particles::ParticleHandler<dim> &particles) const;

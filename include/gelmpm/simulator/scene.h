@@ -10,6 +10,7 @@
 #include <gelmpm/scene/background_grid.h>
 #include <gelmpm/scene/boundary_conditions.h>
 #include <gelmpm/scene/geometry.h>
+#include <gelmpm/scene/material_regions.h>
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/fe/mapping_q1.h>
@@ -53,7 +54,8 @@ namespace GelMPM
      */
     static void
     declare_parameters(dealii::ParameterHandler       &prm,
-                       const std::vector<std::string> &boundary_pieces);
+                       const std::vector<std::string> &boundary_pieces,
+                       const std::vector<std::string> &material_regions = {});
 
     /**
      * Parse and check the sections declared by declare_parameters(). Throws InputError. Files the
@@ -62,8 +64,9 @@ namespace GelMPM
      */
     Scene(dealii::ParameterHandler       &prm,
           const std::vector<std::string> &boundary_pieces,
-          const std::string              &scene_directory = "",
-          const MPI_Comm                  communicator    = MPI_COMM_WORLD);
+          const std::string              &scene_directory  = "",
+          const MPI_Comm                  communicator     = MPI_COMM_WORLD,
+          const std::vector<std::string> &material_regions = {});
 
     /**
      * Create the triangulation of the background grid, the material points of the body in their
@@ -110,7 +113,10 @@ namespace GelMPM
       return n_points > 0 ? base_weight * (n_points + 4) : 0;
     }
 
+    /** The body's own material (section "Material"), region 0 of regions. */
     FloryRehnerGel<dim>         material;
+    /** Every gel of the body, by region (MaterialRegions). */
+    MaterialRegions<dim>        regions;
     BackgroundGrid<dim>         grid;
     Geometry<dim>               geometry;
     BoundaryConditions<dim>     boundary_conditions;

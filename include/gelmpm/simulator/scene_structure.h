@@ -12,7 +12,8 @@ namespace GelMPM
 {
   /**
    * @brief What a scene file must say before the rest of it can be declared: the space dimension
-   * and the names of the boundary pieces (each piece gets a subsection of its own).
+   * and the names of the boundary pieces and of the material regions (each gets a subsection of
+   * its own).
    *
    * Read in a first pass over the scene file that ignores every other entry (as ASPECT reads
    * "Dimension" before dispatching to its 2D or 3D simulator).
@@ -23,6 +24,8 @@ namespace GelMPM
     unsigned int dimension = 2;
     /** Names of the boundary pieces, in the order given ("Boundary conditions/Pieces"). */
     std::vector<std::string> boundary_pieces;
+    /** Names of the material regions, in the order given ("Material/Regions"). */
+    std::vector<std::string> material_regions;
 
     /** Declare the entries this structure is read from. */
     static void
