@@ -373,7 +373,7 @@ namespace GelMPM
     // otherwise sit next to this run's series as if it belonged to it.
     const std::regex ours("(particles|grid|mode)(-[0-9]{5}(\\.[0-9]{4})?\\.p?vtu|\\.pvd)(\\.tmp)?|"
                           "(statistics|stability|events)\\.csv|parameters\\.prm|original\\.prm|"
-                          "checkpoint\\.bin(\\.tmp)?");
+                          "checkpoint\\.bin(\\.tmp)?|surface_.+-[0-9]{5}\\.csv(\\.tmp)?");
     std::error_code  error;
     for (const auto &entry : std::filesystem::directory_iterator(output_settings.directory, error))
       if (entry.is_regular_file() && std::regex_match(entry.path().filename().string(), ours))
@@ -467,7 +467,7 @@ namespace GelMPM
             bracket_columns.push_back(name);
         open(stability_file, "stability.csv", bracket_columns);
       }
-    if (stability.inertia || observables.boundary_chemical_potential(scene.particles))
+    if (stability.inertia || observables.writes_events())
       open(events_file, "events.csv", {"event", "time", "t_over_tau_d", "mu_boundary", "pore"});
   }
 
@@ -650,7 +650,8 @@ namespace GelMPM
     for (const auto &[name, pore] : observables.new_events(scene.particles))
       {
         write_event(name, time, pore);
-        pcout << "  event: " << name << " of pore " << pore << " at t/tau_d = " << time << '\n';
+        pcout << "  event: " << name << (pore > 0 ? " of pore " + std::to_string(pore) : "")
+              << " at t/tau_d = " << time << '\n';
       }
   }
 
@@ -729,6 +730,7 @@ namespace GelMPM
       particle_output->write(scene.particles, time);
     if (grid_output)
       grid_output->write(time);
+    observables.write_surfaces(scene.particles, output_settings.directory);
     if (mode_output && mode_recorded)
       mode_output->write(time);
   }
@@ -1277,6 +1279,7 @@ namespace GelMPM
   {
     progress = std::make_unique<RunProgress>(time_stepping, run_start);
     scene.create_system();
+    observables.set_grid_spacing(scene.spaces->h_u());
     if (scene.contact.enabled())
       {
         // Touching: within 1% of a cell of the plane (points that start on a plane's edge of a

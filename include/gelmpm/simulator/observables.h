@@ -5,6 +5,7 @@
 #include <gelmpm/io/statistics_file.h>
 #include <gelmpm/material/flory_rehner_gel.h>
 #include <gelmpm/scene/material_regions.h>
+#include <gelmpm/simulator/surface_geometry.h>
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/particles/particle_handler.h>
@@ -40,6 +41,17 @@ namespace GelMPM
    * degrees (pore_turning_k, a crease beyond 'Crease angle'); with contact planes, the number of
    * its points on a plane; and the mean mu over the piece (paper §4.4: the holes turning into
    * alternating ellipses, closing and creasing).
+   * - Surface shapes (columns <piece>_relief, and in 2D <piece>_curvature, <piece>_turning,
+   *   <piece>_folds, per piece of "Surface pieces"): the extent of the piece's current surface
+   *   points along its mean current normal (SurfaceGeometry::relief()); in 2D, of the polyline of
+   *   the points ordered along the surface in the initial configuration
+   *   (SurfaceGeometry::order_along_surface(), no centre needed), the largest Menger curvature
+   *   times h_u, the largest turning angle in degrees, and the number of folds
+   *   (SurfaceGeometry::count_folds(): self-approach within 'Fold approach distance' of points
+   *   more than 'Fold arc length' apart along the surface, or self-intersection). A new fold is
+   *   the event 'crease_<piece>'; at every output time the polyline is written to
+   *   surface_<piece>-NNNNN.csv (write_surfaces()). Made for a film's surface crease: once
+   *   resolved it turns by less than 'Crease angle' at every point, and folds.
    * - Volume ratio range (columns J_min, J_mean, J_max): the extremes and the V_0-weighted mean of
    *   J (dry state to current) over the volume points; the spread measures how far a state is
    *   from homogeneous (patch tests).
@@ -90,20 +102,45 @@ namespace GelMPM
     set_contact_planes(const std::vector<ContactSettings::Plane> &planes, const double tolerance);
 
     /**
-     * With 'Pore piece': the events of the pores that happened since the last call, as (name,
-     * pore number from 1): 'self_contact' when a pore first touches a contact plane, 'crease' when
-     * its surface polyline turns by more than 'Crease angle' at one more place than ever before (or
-     * first crosses itself).
+     * The cell size h_u (@p spacing) of the displacement grid, the unit of the surface measures
+     * ('Fold approach distance', 'Fold arc length', <piece>_curvature); needed in 2D with 'Surface
+     * pieces' before evaluate().
+     */
+    void
+    set_grid_spacing(const double spacing);
+
+    /**
+     * The events that happened since the last call, as (name, pore number from 1, or 0 for an
+     * event of a surface piece). With 'Pore piece': 'self_contact' when a pore first touches a
+     * contact plane, 'crease' when its surface polyline turns by more than 'Crease angle' at one
+     * more place than ever before (or first crosses itself). With 'Surface pieces' (2D):
+     * 'crease_<piece>' when the piece has one more fold than ever before.
      */
     std::vector<std::pair<std::string, unsigned int>>
     new_events(const dealii::Particles::ParticleHandler<dim> &particles);
 
-    /** The events seen so far, for a checkpoint (boost serialization). */
+    /** Whether new_events() can report anything (then the simulator writes events.csv). */
+    bool
+    writes_events() const;
+
+    /**
+     * With 'Surface pieces' in 2D: write each piece's polyline, in its order along the surface,
+     * to `<directory>/surface_<piece>-NNNNN.csv` (columns s_0, x, y, mu: the arc length in the
+     * initial configuration, the current position and mu/k_BT), NNNNN counting the calls from 0
+     * (the number of the particles-NNNNN.vtu written at the same time). Collective; rank 0
+     * writes, under a temporary name renamed when complete. Nothing otherwise.
+     */
+    void
+    write_surfaces(const dealii::Particles::ParticleHandler<dim> &particles,
+                   const std::string                             &directory);
+
+    /** The events seen and the surface files written so far, for a checkpoint (boost
+     * serialization). */
     template <class Archive>
     void
     serialize(Archive &ar, const unsigned int)
     {
-      ar &contact_seen &creases_seen;
+      ar &contact_seen &creases_seen &folds_seen &surface_outputs;
     }
 
     /**
@@ -123,6 +160,23 @@ namespace GelMPM
       unsigned int creases        = 0;  // sharp corners of its surface polyline
       unsigned int contact_points = 0;
     };
+
+    /** What surface_shapes() measures of one surface piece. */
+    struct SurfaceShape
+    {
+      double       relief    = 0.;
+      double       curvature = 0.; // times h_u
+      double       turning   = 0.; // radians
+      unsigned int folds     = 0;
+    };
+
+    /**
+     * Per piece of 'Surface pieces', its shape; in 2D its polyline into @p polylines if given.
+     * Gathers the pieces' points over the communicator.
+     */
+    std::vector<SurfaceShape>
+    surface_shapes(const dealii::Particles::ParticleHandler<dim> &particles,
+                   std::vector<SurfaceGeometry::Polyline>        *polylines = nullptr) const;
 
     /** The indices of the two pieces named in @p names (entry @p entry); {-1, -1} if empty. */
     static std::array<int, 2>
@@ -155,7 +209,14 @@ namespace GelMPM
     double                              contact_tolerance = 0.;
     std::vector<bool>                   contact_seen;
     std::vector<unsigned int>           creases_seen;
-    double                              crease_angle        = M_PI / 3.;
+    double                              crease_angle = M_PI / 3.;
+    std::vector<int>                    surface_pieces;
+    std::vector<std::string>            surface_names;
+    double                              fold_approach_distance = 0.5; // times h_u
+    double                              fold_arc_length        = 3.;  // times h_u
+    double                              h_u                    = 0.;
+    std::vector<unsigned int>           folds_seen;
+    unsigned int                        surface_outputs     = 0;
     unsigned int                        thickness_direction = 1;
     bool                                volume_ratio_range  = false;
     bool                                mu_oscillation      = false;

@@ -1,0 +1,387 @@
+#include <gelmpm/simulator/pore_geometry.h>
+#include <gelmpm/simulator/surface_geometry.h>
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <limits>
+#include <tuple>
+#include <utility>
+
+namespace GelMPM
+{
+  namespace SurfaceGeometry
+  {
+    namespace
+    {
+      /**
+       * Whether two segments pq and rs cross at a point interior to both (as
+       * PoreGeometry::self_intersects(): touching ends do not count).
+       */
+      bool
+      segments_cross(const dealii::Point<2> &p,
+                     const dealii::Point<2> &q,
+                     const dealii::Point<2> &r,
+                     const dealii::Point<2> &s)
+      {
+        const auto cross = [](const dealii::Tensor<1, 2> &a, const dealii::Tensor<1, 2> &b) {
+          return a[0] * b[1] - a[1] * b[0];
+        };
+        const double d1 = cross(q - p, r - p), d2 = cross(q - p, s - p);
+        const double d3 = cross(s - r, p - r), d4 = cross(s - r, q - r);
+        return d1 * d2 < 0. && d3 * d4 < 0.;
+      }
+
+      /**
+       * The walk of order_along_surface() over points sorted by X_0: which point may follow
+       * which, and the nearest one that may.
+       */
+      class Walk
+      {
+      public:
+        Walk(const std::vector<SurfacePoint> &points, const double largest_gap)
+          : points(points)
+          , largest_gap(largest_gap)
+        {
+          for (const auto &p : points)
+            {
+              const double norm = p.normal_0.norm();
+              tangents.push_back(
+                norm > 0. ? dealii::Tensor<1, 2>({p.normal_0[1] / norm, -p.normal_0[0] / norm})
+                          : dealii::Tensor<1, 2>());
+            }
+        }
+
+        /**
+         * Whether @p j may follow @p i along the surface (@p direction +1) or precede it (-1):
+         * within the largest gap, ahead (or behind) along the mean tangent of the two, and with
+         * a tangent that does not turn back.
+         */
+        bool
+        follows(const unsigned int i, const unsigned int j, const int direction) const
+        {
+          const auto d = points[j].X_0 - points[i].X_0;
+          return i != j && d.norm() <= largest_gap && tangents[i] * tangents[j] > -0.9 &&
+                 direction * (d * (tangents[i] + tangents[j])) > 0.;
+        }
+
+        /**
+         * The nearest point not @p taken that may follow @p i in @p direction; -1 if none. The
+         * points are sorted by their first coordinate, so only those within the largest gap of
+         * it along x are looked at.
+         */
+        int
+        nearest(const unsigned int i, const int direction, const std::vector<bool> &taken) const
+        {
+          const double x_i           = points[i].X_0[0];
+          auto         first         = std::lower_bound(points.begin(),
+                                        points.end(),
+                                        x_i - largest_gap,
+                                        [](const SurfacePoint &p, const double x) {
+                                          return p.X_0[0] < x;
+                                        });
+          int          best          = -1;
+          double       best_distance = std::numeric_limits<double>::max();
+          for (unsigned int j = first - points.begin();
+               j < points.size() && points[j].X_0[0] <= x_i + largest_gap;
+               ++j)
+            if (!taken[j] && follows(i, j, direction))
+              {
+                const double distance = points[i].X_0.distance(points[j].X_0);
+                if (distance < best_distance)
+                  {
+                    best          = j;
+                    best_distance = distance;
+                  }
+              }
+          return best;
+        }
+
+      private:
+        const std::vector<SurfacePoint>  &points;
+        const double                      largest_gap;
+        std::vector<dealii::Tensor<1, 2>> tangents;
+      };
+    } // namespace
+
+
+    template <int dim>
+    double
+    relief(const std::vector<dealii::Point<dim>>     &positions,
+           const std::vector<dealii::Tensor<1, dim>> &normal_areas)
+    {
+      if (positions.empty())
+        return 0.;
+      dealii::Tensor<1, dim> normal;
+      double                 area = 0.;
+      for (const auto &n : normal_areas)
+        {
+          normal += n;
+          area += n.norm();
+        }
+      if (!(normal.norm() > 0.1 * area))
+        return 0.;
+      normal /= normal.norm();
+      dealii::Tensor<1, dim> mean;
+      for (const auto &x : positions)
+        mean += x;
+      mean /= positions.size();
+      double lowest = std::numeric_limits<double>::max(), highest = -lowest;
+      for (const auto &x : positions)
+        {
+          const double height = (x - mean) * normal;
+          lowest              = std::min(lowest, height);
+          highest             = std::max(highest, height);
+        }
+      return highest - lowest;
+    }
+
+
+    std::vector<dealii::Point<2>>
+    Polyline::current_curve(const unsigned int c) const
+    {
+      std::vector<dealii::Point<2>> curve;
+      const unsigned int            begin = curve_begin[c], end = curve_begin[c + 1];
+      if (closed[c])
+        curve.push_back(points[end - 1].x);
+      for (unsigned int i = begin; i < end; ++i)
+        curve.push_back(points[i].x);
+      if (closed[c])
+        curve.push_back(points[begin].x);
+      return curve;
+    }
+
+
+    Polyline
+    order_along_surface(std::vector<SurfacePoint> points, const double largest_gap)
+    {
+      std::sort(points.begin(), points.end(), [](const SurfacePoint &a, const SurfacePoint &b) {
+        return std::make_tuple(a.X_0[0], a.X_0[1], a.x[0], a.x[1], a.mu) <
+               std::make_tuple(b.X_0[0], b.X_0[1], b.x[0], b.x[1], b.mu);
+      });
+      const unsigned int n = points.size();
+      const Walk         walk(points, largest_gap);
+
+      // Curves by the nearest-neighbour walk, forwards then backwards from the first point left.
+      std::vector<std::deque<unsigned int>> curves;
+      std::vector<bool>                     taken(n, false);
+      for (unsigned int start = 0; start < n; ++start)
+        if (!taken[start])
+          {
+            std::deque<unsigned int> curve = {start};
+            taken[start]                   = true;
+            for (int j; (j = walk.nearest(curve.back(), +1, taken)) >= 0;)
+              {
+                curve.push_back(j);
+                taken[j] = true;
+              }
+            for (int j; (j = walk.nearest(curve.front(), -1, taken)) >= 0;)
+              {
+                curve.push_front(j);
+                taken[j] = true;
+              }
+            curves.push_back(std::move(curve));
+          }
+
+      const auto is_closed = [&](const std::deque<unsigned int> &curve) {
+        return curve.size() >= 3 && walk.follows(curve.back(), curve.front(), +1);
+      };
+      // A curve that begins where another ends continues it (the walk stopped short at a point
+      // it had stepped over).
+      for (bool joined = true; joined;)
+        {
+          joined = false;
+          for (unsigned int a = 0; a < curves.size() && !joined; ++a)
+            if (!curves[a].empty() && !is_closed(curves[a]))
+              for (unsigned int b = 0; b < curves.size() && !joined; ++b)
+                if (b != a && !curves[b].empty() && !is_closed(curves[b]) &&
+                    walk.follows(curves[a].back(), curves[b].front(), +1))
+                  {
+                    curves[a].insert(curves[a].end(), curves[b].begin(), curves[b].end());
+                    curves[b].clear();
+                    joined = true;
+                  }
+        }
+      // Points stepped over that made curves of their own go where they add the least length.
+      std::vector<bool> closed(curves.size());
+      for (unsigned int c = 0; c < curves.size(); ++c)
+        closed[c] = is_closed(curves[c]);
+      for (unsigned int a = 0; a < curves.size(); ++a)
+        {
+          if (curves[a].empty() || curves[a].size() > 2)
+            continue;
+          std::deque<unsigned int> left;
+          for (const unsigned int p : curves[a])
+            {
+              const auto  &X        = points[p].X_0;
+              double       best     = std::numeric_limits<double>::max();
+              int          best_c   = -1;
+              unsigned int best_pos = 0;
+              for (unsigned int c = 0; c < curves.size(); ++c)
+                {
+                  const auto &curve = curves[c];
+                  if (curve.size() < 3)
+                    continue;
+                  const unsigned int n_segments = curve.size() - (closed[c] ? 0 : 1);
+                  for (unsigned int k = 0; k < n_segments; ++k)
+                    {
+                      const auto  &P     = points[curve[k]].X_0;
+                      const auto  &Q     = points[curve[(k + 1) % curve.size()]].X_0;
+                      const double added = X.distance(P) + X.distance(Q) - P.distance(Q);
+                      if (X.distance(P) <= largest_gap && X.distance(Q) <= largest_gap &&
+                          added < best)
+                        {
+                          best     = added;
+                          best_c   = c;
+                          best_pos = k + 1;
+                        }
+                    }
+                }
+              if (best_c >= 0)
+                curves[best_c].insert(curves[best_c].begin() + best_pos, p);
+              else
+                left.push_back(p);
+            }
+          curves[a] = left;
+        }
+
+      Polyline polyline;
+      for (unsigned int c = 0; c < curves.size(); ++c)
+        {
+          if (curves[c].empty())
+            continue;
+          polyline.curve_begin.push_back(polyline.points.size());
+          for (const unsigned int p : curves[c])
+            {
+              double s = 0.;
+              if (!polyline.points.empty())
+                s = polyline.s_0.back() + polyline.points.back().X_0.distance(points[p].X_0);
+              polyline.points.push_back(points[p]);
+              polyline.s_0.push_back(s);
+            }
+          const bool         is_closed_curve = closed[c];
+          const unsigned int begin           = polyline.curve_begin.back();
+          polyline.closed.push_back(is_closed_curve);
+          polyline.length_0.push_back(
+            polyline.s_0.back() - polyline.s_0[begin] +
+            (is_closed_curve ? polyline.points.back().X_0.distance(polyline.points[begin].X_0)
+                             : 0.));
+        }
+      polyline.curve_begin.push_back(polyline.points.size());
+      return polyline;
+    }
+
+
+    unsigned int
+    count_folds(const Polyline &polyline, const double approach_distance, const double arc_length)
+    {
+      const unsigned int        n = polyline.points.size();
+      std::vector<unsigned int> curve_of(n);
+      for (unsigned int c = 0; c < polyline.n_curves(); ++c)
+        for (unsigned int i = polyline.curve_begin[c]; i < polyline.curve_begin[c + 1]; ++i)
+          curve_of[i] = c;
+      const auto &s = polyline.s_0;
+
+      // The stretch of surface between two places [s_i, s_j] (s_i <= s_j, both in the list's
+      // order) and its length; on a closed curve the shorter way round, which may run past its
+      // end: [s_j, s_i + L].
+      const auto stretch = [&](const double s_i, const double s_j, const unsigned int c) {
+        const double direct = s_j - s_i;
+        if (polyline.closed[c] && polyline.length_0[c] - direct < direct)
+          return std::make_pair(std::make_pair(s_j, s_i + polyline.length_0[c]),
+                                polyline.length_0[c] - direct);
+        return std::make_pair(std::make_pair(s_i, s_j), direct);
+      };
+
+      std::vector<std::pair<double, double>> folded;
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int j = i + 1; j < n; ++j)
+          {
+            if (!(polyline.points[i].x.distance(polyline.points[j].x) < approach_distance))
+              continue;
+            if (curve_of[i] != curve_of[j])
+              folded.emplace_back(s[i], s[j]);
+            else
+              {
+                const auto [interval, length] = stretch(s[i], s[j], curve_of[i]);
+                if (length > arc_length)
+                  folded.push_back(interval);
+              }
+          }
+
+      // Segments (first point, second point, s at each end): a closed curve's last segment
+      // returns to its first point, at s_0 of its first point plus its length.
+      struct Segment
+      {
+        unsigned int a, b;
+        double       s_a, s_b;
+      };
+      std::vector<Segment> segments;
+      for (unsigned int c = 0; c < polyline.n_curves(); ++c)
+        {
+          const unsigned int begin = polyline.curve_begin[c], end = polyline.curve_begin[c + 1];
+          for (unsigned int i = begin; i + 1 < end; ++i)
+            segments.push_back({i, i + 1, s[i], s[i + 1]});
+          if (polyline.closed[c])
+            segments.push_back({end - 1, begin, s[end - 1], s[begin] + polyline.length_0[c]});
+        }
+      for (unsigned int k = 0; k < segments.size(); ++k)
+        for (unsigned int l = k + 1; l < segments.size(); ++l)
+          {
+            const auto &p = segments[k], &q = segments[l];
+            if (p.a == q.a || p.a == q.b || p.b == q.a || p.b == q.b ||
+                !segments_cross(polyline.points[p.a].x,
+                                polyline.points[p.b].x,
+                                polyline.points[q.a].x,
+                                polyline.points[q.b].x))
+              continue;
+            if (curve_of[p.a] != curve_of[q.a])
+              folded.emplace_back(p.s_a, q.s_b);
+            else
+              {
+                // From the start of the one to the end of the other, the shorter way round.
+                const unsigned int c = curve_of[p.a];
+                if (polyline.closed[c] && (polyline.length_0[c] - (q.s_b - p.s_a)) < q.s_b - p.s_a)
+                  folded.emplace_back(q.s_a, p.s_b + polyline.length_0[c]);
+                else
+                  folded.emplace_back(p.s_a, q.s_b);
+              }
+          }
+
+      // Stretches that overlap, or that are closer along the surface than the criterion tells
+      // places apart, are one fold.
+      std::sort(folded.begin(), folded.end());
+      std::vector<std::pair<double, double>> merged;
+      for (const auto &interval : folded)
+        if (!merged.empty() && interval.first <= merged.back().second + arc_length)
+          merged.back().second = std::max(merged.back().second, interval.second);
+        else
+          merged.push_back(interval);
+      unsigned int folds = merged.size();
+      // On a closed curve the last fold may run past the end into the first ones.
+      for (unsigned int c = 0; c < polyline.n_curves(); ++c)
+        {
+          if (!polyline.closed[c])
+            continue;
+          const double begin = s[polyline.curve_begin[c]], end = begin + polyline.length_0[c];
+          std::vector<unsigned int> on_curve;
+          for (unsigned int k = 0; k < merged.size(); ++k)
+            if (merged[k].first >= begin && merged[k].first < end)
+              on_curve.push_back(k);
+          if (on_curve.size() < 2)
+            continue;
+          const double wrapped = merged[on_curve.back()].second - polyline.length_0[c];
+          for (unsigned int k = 0; k + 1 < on_curve.size(); ++k)
+            if (merged[on_curve[k]].first <= wrapped + arc_length)
+              --folds;
+        }
+      return folds;
+    }
+
+
+    template double
+    relief<2>(const std::vector<dealii::Point<2>> &, const std::vector<dealii::Tensor<1, 2>> &);
+    template double
+    relief<3>(const std::vector<dealii::Point<3>> &, const std::vector<dealii::Tensor<1, 3>> &);
+  } // namespace SurfaceGeometry
+} // namespace GelMPM
