@@ -167,7 +167,7 @@ main(int argc, char **argv)
     }
   particles.update_cached_numbers();
 
-  const FloryRehnerGel<2> gel;
+  const MaterialRegions<2> gel;
   StatisticsFile          statistics;
   statistics.open("statistics.csv", columns);
   std::filesystem::create_directories("surfaces");
