@@ -228,13 +228,15 @@ namespace GelMPM
                                       (!group_name.empty() && group_name == r.mesh_group);
         if (!in)
           continue;
-        std::ostringstream where;
-        where << X0;
-        require(found == 0,
-                "Material/" + r.name + "/" + (r.selector ? "Selector" : "Mesh group"),
-                "overlaps the region '" + regions[found - 1].name + "' at (" + where.str() +
-                  "): a point belongs to one region",
-                "make the regions' selectors exclude each other");
+        if (found != 0)
+          {
+            std::ostringstream where;
+            where << X0;
+            throw InputError("Material/" + r.name + "/" + (r.selector ? "Selector" : "Mesh group"),
+                             "overlaps the region '" + regions[found - 1].name + "' at (" +
+                               where.str() + "): a point belongs to one region",
+                             "make the regions' selectors exclude each other");
+          }
         found = k + 1;
       }
     return found;
