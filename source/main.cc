@@ -40,6 +40,7 @@ namespace
     GelMPM::Simulator<dim> simulator(prm, structure, cl.scene_file, cl.resume);
     if (cl.check_only)
       {
+        simulator.print_piece_table();
         std::cout << "gelmpm: scene '" << cl.scene_file << "' is valid\n";
         return 0;
       }

@@ -4,11 +4,15 @@
 #include <gelmpm/core/input_error.h>
 #include <gelmpm/scene/geometry.h>
 
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <numeric>
 #include <sstream>
 
 namespace GelMPM
@@ -427,8 +431,9 @@ namespace GelMPM
 
         // Where the surface crosses the cube's edges (linear interpolation), averaged, then
         // moved onto the zero set.
-        dealii::Point<dim> mean;
-        unsigned int       n_crossings = 0;
+        dealii::Point<dim>              mean;
+        unsigned int                    n_crossings = 0;
+        std::vector<dealii::Point<dim>> crossings;
         for (unsigned int corner = 0; corner < v.size(); ++corner)
           for (unsigned int d = 0; d < dim; ++d)
             if (!((corner >> d) & 1))
@@ -442,15 +447,131 @@ namespace GelMPM
                 dealii::Point<dim> x = sample(i);
                 x[d] += v[corner] / (v[corner] - v[other]) * step[d];
                 mean += x;
+                crossings.push_back(x);
                 ++n_crossings;
               }
         mean /= n_crossings;
-        elements.push_back({project_onto_zero_set(mean, max_shift),
-                            normal_area,
-                            dealii::numbers::invalid_boundary_id,
-                            {}});
+        if (!split_at_edge(crossings, normal_area, max_shift, elements))
+          elements.push_back({project_onto_zero_set(mean, max_shift),
+                              normal_area,
+                              dealii::numbers::invalid_boundary_id,
+                              {}});
       }
     return elements;
+  }
+
+
+  template <int dim>
+  bool
+  Geometry<dim>::split_at_edge(const std::vector<dealii::Point<dim>> &crossings,
+                               const dealii::Tensor<1, dim>          &normal_area,
+                               const double                           max_shift,
+                               std::vector<SurfaceElement>           &elements) const
+  {
+    // A cube through which an edge of the body runs (where two smooth pieces of the zero set
+    // meet, e.g. a plane of symmetry and a sphere) holds surface of two or three faces; one
+    // element with their summed normal would have a normal of neither, and a selector such as
+    // 'nx < -0.99' would miss it. Group the crossings by the normal of the zero set there; with
+    // two or three groups, split the cube's integral of the normal among their normals (least
+    // squares, exact when each face is plane within the cube) and give each face its element.
+    const double                        cos_same = std::cos(20. * M_PI / 180.);
+    const double                        delta    = 1e-4 * max_shift;
+    std::vector<dealii::Tensor<1, dim>> group_normal;
+    std::vector<dealii::Point<dim>>     group_mean;
+    std::vector<unsigned int>           group_size;
+    for (const auto &x : crossings)
+      {
+        dealii::Tensor<1, dim> g = level_set_gradient(x, delta);
+        if (!(g.norm() > 0.))
+          return false;
+        g /= g.norm();
+        unsigned int k = 0;
+        while (k < group_normal.size() && g * group_normal[k] / group_normal[k].norm() < cos_same)
+          ++k;
+        if (k == group_normal.size())
+          {
+            group_normal.emplace_back();
+            group_mean.emplace_back();
+            group_size.push_back(0);
+          }
+        group_normal[k] += g;
+        group_mean[k] += x;
+        ++group_size[k];
+      }
+    if (group_normal.size() < 2 || group_normal.size() > dim)
+      return false;
+    // How far each group's normals spread (0 for a plane face): 1 - |mean of the unit normals|
+    // at its crossings and at its point on the zero set (two samples at least, so that a curved
+    // face with one crossing in the cube shows its curvature too).
+    std::vector<double>             spread(group_normal.size());
+    std::vector<dealii::Point<dim>> group_point(group_normal.size());
+    for (unsigned int k = 0; k < group_normal.size(); ++k)
+      {
+        group_mean[k] /= group_size[k];
+        group_point[k]             = project_onto_zero_set(group_mean[k], max_shift);
+        dealii::Tensor<1, dim> g_c = level_set_gradient(group_point[k], delta);
+        dealii::Tensor<1, dim> sum = group_normal[k];
+        if (g_c.norm() > 0.)
+          sum += g_c / g_c.norm();
+        spread[k] = 1. - sum.norm() / (group_size[k] + 1);
+        group_normal[k] /= group_normal[k].norm();
+        // The normal at the group's own point on the zero set: exact for a plane face even when
+        // a crossing near the edge mixed the other face's gradient into the group's mean.
+        if (g_c.norm() > 0. && g_c * group_normal[k] / g_c.norm() >= cos_same)
+          group_normal[k] = g_c / g_c.norm();
+      }
+    // The groups to split among: all, or, if that fails (a crossing on the edge itself can form
+    // a group of its own with a normal of neither face), the two largest.
+    std::vector<unsigned int> order(group_normal.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::sort(order.begin(), order.end(), [&](const unsigned int a, const unsigned int b) {
+      return group_size[a] > group_size[b];
+    });
+    for (unsigned int n = order.size(); n >= 2; --n)
+      {
+        // normal_area = sum_k a_k n_k in the least-squares sense: (N^T N) a = N^T normal_area.
+        dealii::FullMatrix<double> NtN(n, n), inverse(n, n);
+        dealii::Vector<double>     rhs(n), a(n);
+        for (unsigned int k = 0; k < n; ++k)
+          {
+            rhs(k) = group_normal[order[k]] * normal_area;
+            for (unsigned int l = 0; l < n; ++l)
+              NtN(k, l) = group_normal[order[k]] * group_normal[order[l]];
+          }
+        try
+          {
+            inverse.invert(NtN);
+          }
+        catch (...)
+          {
+            continue;
+          }
+        inverse.vmult(a, rhs);
+        dealii::Tensor<1, dim> rest = normal_area;
+        bool                   positive = true;
+        for (unsigned int k = 0; k < n; ++k)
+          {
+            positive &= a(k) > 0.;
+            rest -= a(k) * group_normal[order[k]];
+          }
+        // The rest (mostly the curvature of a curved face within the cube: its normal turns
+        // across the cube) goes to the group whose normals spread most, so that plane faces keep
+        // their exact normals and the sum over a closed surface stays zero to round-off; it must
+        // be a correction of that group's element, not most of it.
+        unsigned int curved = 0;
+        for (unsigned int k = 1; k < n; ++k)
+          if (spread[order[k]] > spread[order[curved]])
+            curved = k;
+        if (!positive || rest.norm() > 0.5 * a(curved))
+          continue;
+        for (unsigned int k = 0; k < n; ++k)
+          elements.push_back({group_point[order[k]],
+                              a(k) * group_normal[order[k]] + (k == curved ? rest : 0. * rest),
+                              dealii::numbers::invalid_boundary_id,
+                              {}});
+        return true;
+      }
+    return false;
   }
 
 
@@ -467,7 +588,11 @@ namespace GelMPM
   template std::vector<Geometry<dim>::SurfaceElement>                                         \
   Geometry<dim>::level_set_surface_elements_3d(double,                                        \
                                                const dealii::Point<dim> &,                    \
-                                               const dealii::Point<dim> &) const;
+                                               const dealii::Point<dim> &) const;             \
+  template bool Geometry<dim>::split_at_edge(const std::vector<dealii::Point<dim>> &,         \
+                                             const dealii::Tensor<1, dim> &,                  \
+                                             double,                                          \
+                                             std::vector<SurfaceElement> &) const;
   GELMPM_INSTANTIATE(2)
   GELMPM_INSTANTIATE(3)
 #undef GELMPM_INSTANTIATE

@@ -320,6 +320,19 @@ namespace GelMPM
     level_set_gradient(const dealii::Point<dim> &p, const double delta) const;
 
     /**
+     * 3D level sets: when the @p crossings of the zero set with a sampling cube's edges fall
+     * into two or three groups of distinct normals (an edge or a corner of the body runs through
+     * the cube), add one element per group with that group's normal, the cube's integral of the
+     * normal @p normal_area split among them, and return true; false (nothing added) for a
+     * smooth piece of surface or a split that would not carry the integral.
+     */
+    bool
+    split_at_edge(const std::vector<dealii::Point<dim>> &crossings,
+                  const dealii::Tensor<1, dim>          &normal_area,
+                  const double                           max_shift,
+                  std::vector<SurfaceElement>           &elements) const;
+
+    /**
      * @p p moved onto the zero set of phi by Newton steps along the gradient, at most
      * @p max_shift from where it started (else @p p itself: a degenerate gradient).
      */

@@ -71,6 +71,14 @@ namespace GelMPM
     /** Releases the direct solver before the system whose matrix it factorised. */
     ~Simulator();
 
+    /**
+     * The table of the boundary pieces: surface points, initial area and the range of each
+     * component of the initial normal, so that a selector that takes the wrong points shows at
+     * once (printed by run() and by `gelmpm --check`).
+     */
+    void
+    print_piece_table() const;
+
     /** Run the scene. Returns 0 on success, 1 if the run stopped early (no convergence). */
     int
     run();
@@ -101,13 +109,7 @@ namespace GelMPM
 
     void
     print_header();
-    /**
-     * The table of the boundary pieces: surface points, initial area and the range of each
-     * component of the initial normal, so that a selector that takes the wrong points shows at
-     * once.
-     */
-    void
-    print_piece_table() const;
+
     void
     prepare_output_directory() const;
     /** Remove the files an earlier run wrote to the output directory (only names gelmpm writes). */

@@ -1,0 +1,88 @@
+"""Bilayer actuator (prm/bilayer_actuator.prm) against Timoshenko's bimetal formula.
+
+Runs gelmpm for three chi of the passive layer (mismatch strains 0.65%, 1.4%, 3.3% at the bath
+mu = -0.04) on two grids (8 and 16 cells through the thickness), fits a circle to the lower
+surface's profile at the end (surface_bottom-*.csv, least squares, Kasa), and compares the
+curvature with bilayer_reference.py (Timoshenko, drained plane-strain moduli from the
+Flory-Rehner law). Prints a Markdown table; with --plot writes doc/figures/bilayer_curvature.png.
+
+  /usr/bin/python3 contrib/benchmarks/bilayer.py [--gelmpm build/gelmpm] [--plot]
+"""
+import argparse
+import glob
+import os
+import subprocess
+import tempfile
+import time
+
+import numpy as np
+
+from bilayer_reference import timoshenko
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+TOP = os.path.dirname(os.path.dirname(HERE))
+MU_B = -0.04
+
+
+def fitted_curvature(directory):
+    f = sorted(glob.glob(os.path.join(directory, "surface_bottom-*.csv")))[-1]
+    d = np.genfromtxt(f, delimiter=",", names=True)
+    x, y = d["x"], d["y"]
+    A = np.c_[2 * x, 2 * y, np.ones_like(x)]
+    c = np.linalg.lstsq(A, x**2 + y**2, rcond=None)[0]
+    return 1.0 / np.sqrt(c[2] + c[0]**2 + c[1]**2)
+
+
+def run(gelmpm, chi, cells, directory):
+    bath = f"{MU_B} * min(t, 1) - 0.1459745 * max(1 - t, 0)"
+    args = [gelmpm, os.path.join(TOP, "prm", "bilayer_actuator.prm"),
+            "--set", f"Output/Directory={directory}",
+            "--set", "Output/Write particles=false",
+            "--set", f"Material/passive/Flory-Huggins chi={chi}",
+            "--set", f"Background grid/Cells={cells[0]}, {cells[1]}",
+            "--set", f"Boundary conditions/bottom/Chemical potential value/Function expression={bath}",
+            "--set", f"Boundary conditions/bath/Chemical potential value/Function expression={bath}"]
+    start = time.time()
+    subprocess.run(args, check=True, stdout=subprocess.DEVNULL)
+    return fitted_curvature(directory), time.time() - start
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--gelmpm", default=os.path.join(TOP, "build", "gelmpm"))
+    parser.add_argument("--plot", action="store_true")
+    options = parser.parse_args()
+    grids = {"h = 0.025 (8 cells through the thickness)": (120, 56),
+             "h = 0.0125 (16 cells)": (240, 112)}
+    rows = []
+    with tempfile.TemporaryDirectory() as scratch:
+        for chi in (0.15, 0.2, 0.3):
+            kappa_t, eps = timoshenko(0.1, chi, MU_B)
+            for name, cells in grids.items():
+                kappa, seconds = run(options.gelmpm, chi, cells, os.path.join(scratch, f"{chi}-{cells[0]}"))
+                rows.append((chi, eps, name, kappa, kappa_t, seconds))
+    print("| chi (passive) | mismatch | grid | MPM curvature | Timoshenko | MPM / Timoshenko - 1 | wall |")
+    print("|---|---|---|---|---|---|---|")
+    for chi, eps, name, kappa, kappa_t, seconds in rows:
+        print(f"| {chi} | {100 * eps:.2f}% | {name} | {kappa:.5f} | {kappa_t:.5f} | "
+              f"{100 * (kappa / kappa_t - 1):+.2f}% | {seconds:.1f} s |")
+    if options.plot:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        fig, ax = plt.subplots(figsize=(5, 3.5))
+        for name in grids:
+            sel = [r for r in rows if r[2] == name]
+            ax.plot([100 * r[1] for r in sel], [r[3] for r in sel], "o", label="MPM, " + name)
+        first = [r for r in rows if r[2] == next(iter(grids))]
+        ax.plot([100 * r[1] for r in first], [r[4] for r in first], "k--",
+                label="Timoshenko (drained plane-strain moduli)")
+        ax.set_xlabel("mismatch strain (%)")
+        ax.set_ylabel("curvature")
+        ax.legend(fontsize=7)
+        fig.tight_layout()
+        fig.savefig(os.path.join(TOP, "doc", "figures", "bilayer_curvature.png"), dpi=120)
+
+
+if __name__ == "__main__":
+    main()
