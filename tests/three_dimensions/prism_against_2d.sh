@@ -31,7 +31,7 @@ check $? "the 3D run finished ($(tail -1 three.log))"
 check $? "the 2D run finished ($(tail -1 two.log))"
 
 "$compare" --relative 1e-6 --newton 1 \
-  --ignore residual_u,residual_mu,n_dofs_u,n_dofs_mu,n_active_cells,n_particles,n_pos,n_neg,n_zero,time,t_over_tau_d,dt \
+  --ignore residual_u,residual_mu,n_dofs_u,n_dofs_mu,n_active_cells,n_particles,n_pos,n_neg,n_zero,time,t_over_tau_d,dt,wall_time \
   two/statistics.csv three/statistics.csv
 check $? "2D and 3D statistics agree (steps, Newton iterations within 1, delta_h_over_h0 to 1e-6)"
 # Step times: equal but for the error estimate's round-off.
