@@ -105,10 +105,10 @@ namespace GelMPM
 
   template <int dim>
   MixedSystem<dim>::MixedSystem(const MaterialRegions<dim> &materials,
-                                BoundaryConditions<dim>   &boundary_conditions,
-                                const NitscheSettings     &nitsche,
-                                DiscreteSpaces<dim>       &spaces,
-                                const MPI_Comm             communicator)
+                                BoundaryConditions<dim>    &boundary_conditions,
+                                const NitscheSettings      &nitsche,
+                                DiscreteSpaces<dim>        &spaces,
+                                const MPI_Comm              communicator)
     : materials(materials)
     , boundary_conditions(boundary_conditions)
     , nitsche(nitsche)
@@ -493,8 +493,7 @@ namespace GelMPM
         Tensor<1, dim>    u_bar_n;
         for (unsigned int d = 0; d < dim; ++d)
           u_bar_n[d] = piece.displacement_value().value(X0, d);
-        const auto start =
-          r.gel->incremental(dealii::unit_symmetric_tensor<dim>(), r.mu_n, r.F_p);
+        const auto start = r.gel->incremental(dealii::unit_symmetric_tensor<dim>(), r.mu_n, r.F_p);
         r.adjoint_solvent_n =
           r.measure *
           dealii::scalar_product(outer(r.projector * (r.u_n - u_bar_n), r.normal), start.dP_n_dmu);
@@ -642,8 +641,7 @@ namespace GelMPM
 
   template <int dim>
   std::vector<typename MixedSystem<dim>::PieceBalance>
-  MixedSystem<dim>::boundary_balances(const dealii::Vector<double> &solution,
-                                      const double                  dt) const
+  MixedSystem<dim>::boundary_balances(const dealii::Vector<double> &solution, const double dt) const
   {
     // The surface points' own residual terms, tested with w = e_k and q = 1: both lie in the
     // extended spaces (they reproduce constants), and the volume points' terms vanish for w =
@@ -653,7 +651,7 @@ namespace GelMPM
     ScratchData               scratch;
     CopyData                  copy;
     // One solvent: k_BT/nu is the same in every region (MaterialRegions).
-    const double              kTnu = materials[0].kT_over_nu();
+    const double kTnu = materials[0].kT_over_nu();
     for (const auto &block : blocks)
       {
         bool has_surface_points = false;
@@ -786,10 +784,10 @@ namespace GelMPM
                                      ScratchData       &s,
                                      CopyData          &copy) const
   {
-    const auto   state     = point.gel->incremental(s.delta_F, s.mu_at_point, point.F_p, with_matrix);
-    const double V         = point.measure;
-    const double kTnu      = point.gel->kT_over_nu();
-    const double m         = point.mobility;
+    const auto   state = point.gel->incremental(s.delta_F, s.mu_at_point, point.F_p, with_matrix);
+    const double V     = point.measure;
+    const double kTnu  = point.gel->kT_over_nu();
+    const double m     = point.mobility;
     const unsigned int mu0 = dim * s.n_u;
 
     for (unsigned int a = 0; a < s.n_u; ++a)
@@ -966,10 +964,11 @@ namespace GelMPM
         const double           W_norm = W.norm();
         if (W_norm > 0.)
           {
-            const double eps  = 1e-5 / W_norm;
-            const auto   plus = point.gel->incremental(s.delta_F + eps * W, s.mu_at_point, point.F_p);
-            const auto minus  = point.gel->incremental(s.delta_F - eps * W, s.mu_at_point, point.F_p);
-            H                 = (plus.A_n - minus.A_n) / (2. * eps);
+            const double eps = 1e-5 / W_norm;
+            const auto plus = point.gel->incremental(s.delta_F + eps * W, s.mu_at_point, point.F_p);
+            const auto minus =
+              point.gel->incremental(s.delta_F - eps * W, s.mu_at_point, point.F_p);
+            H = (plus.A_n - minus.A_n) / (2. * eps);
             // The exact H has the major symmetry; the difference has it only to round-off
             // divided by eps, which would make the symmetric Nitsche tangent unsymmetric at
             // 1e-11.
@@ -1152,7 +1151,7 @@ namespace GelMPM
   void
   MixedSystem<dim>::update_particles(const dealii::Vector<double> &solution)
   {
-    using Layout              = PropertyLayout<dim>;
+    using Layout = PropertyLayout<dim>;
     // Every point writes its own particle: update them in parallel. A point beyond the grid's
     // edge is marked and the first of them (in the serial order) reported below.
     std::vector<unsigned char> outside(points.size(), 0);
@@ -1185,8 +1184,7 @@ namespace GelMPM
           Tensor<1, dim> na0;
           for (unsigned int d = 0; d < dim; ++d)
             na0[d] = props[Layout::normal_area_0 + d];
-          const Tensor<1, dim> na =
-            J_n * (dealii::transpose(dealii::invert(F_p)) * na0) * lambda_0;
+          const Tensor<1, dim> na = J_n * (dealii::transpose(dealii::invert(F_p)) * na0) * lambda_0;
           for (unsigned int d = 0; d < dim; ++d)
             props[Layout::normal_area_n + d] = na[d];
           props[Layout::measure_n] = na.norm();

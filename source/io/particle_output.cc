@@ -11,9 +11,9 @@
 namespace GelMPM
 {
   template <int dim>
-  ParticleOutput<dim>::ParticleOutput(const std::string         &directory,
+  ParticleOutput<dim>::ParticleOutput(const std::string          &directory,
                                       const MaterialRegions<dim> &materials,
-                                      const MPI_Comm             communicator)
+                                      const MPI_Comm              communicator)
     : materials(materials)
     , series(directory, "particles", communicator)
   {}
@@ -81,12 +81,12 @@ namespace GelMPM
         patch.vertices[0]            = x;
         patch.patch_index            = patches.size();
         patch.data.reinit(names.size(), 1);
-        patch.data(0, 0) = props[Layout::kind];
-        patch.data(1, 0) = props[Layout::piece];
-        patch.data(2, 0) = mu;
-        patch.data(3, 0) = J;
-        patch.data(4, 0) = 1. - 1. / J;
-        patch.data(5, 0) = props[Layout::measure_n];
+        patch.data(0, 0)                 = props[Layout::kind];
+        patch.data(1, 0)                 = props[Layout::piece];
+        patch.data(2, 0)                 = mu;
+        patch.data(3, 0)                 = J;
+        patch.data(4, 0)                 = 1. - 1. / J;
+        patch.data(5, 0)                 = props[Layout::measure_n];
         const unsigned int first_stretch = regions ? 7 : 6;
         if (regions)
           patch.data(6, 0) = region;

@@ -216,7 +216,7 @@ namespace GelMPM
         properties[Layout::kind]      = static_cast<double>(PointKind::volume);
         properties[Layout::piece]     = -1;
         properties[Layout::measure_0] = properties[Layout::measure_n] = volume;
-        const unsigned int region     = regions.size() > 1 ? regions.region_of(x, group) : 0;
+        const unsigned int region = regions.size() > 1 ? regions.region_of(x, group) : 0;
         ++volume_points_of_region[region];
         insert(x, region);
       };

@@ -419,6 +419,53 @@ namespace GelMPM
   }
 
 
+  std::vector<unsigned int>
+  piece_indices(const std::vector<std::string> &names,
+                const std::vector<std::string> &pieces,
+                const std::string              &entry)
+  {
+    std::vector<unsigned int> indices;
+    for (const auto &name : names)
+      {
+        const auto it = std::find(pieces.begin(), pieces.end(), name);
+        require(it != pieces.end(),
+                entry,
+                "names the piece '" + name + "' that is not in 'Boundary conditions/Pieces'",
+                "use the declared pieces, separated by commas");
+        const unsigned int index = it - pieces.begin();
+        require(std::find(indices.begin(), indices.end(), index) == indices.end(),
+                entry,
+                "names the piece '" + name + "' twice",
+                "name every piece once");
+        indices.push_back(index);
+      }
+    return indices;
+  }
+
+
+  void
+  check_section_names(const std::vector<std::string> &names,
+                      const std::string              &entry,
+                      const std::string              &what)
+  {
+    for (unsigned int i = 0; i < names.size(); ++i)
+      {
+        require(!names[i].empty(),
+                entry,
+                "contains an empty name",
+                "remove the doubled or trailing comma");
+        require(names[i].find('/') == std::string::npos,
+                entry,
+                "contains the name '" + names[i] + "' with a '/'",
+                "use names without '/'");
+        require(std::find(names.begin(), names.begin() + i, names[i]) == names.begin() + i,
+                entry,
+                "names the " + what + " '" + names[i] + "' twice",
+                "give every " + what + " a distinct name");
+      }
+  }
+
+
   template class BoundaryPiece<2>;
   template class BoundaryPiece<3>;
   template class BoundaryConditions<2>;

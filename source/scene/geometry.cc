@@ -530,9 +530,9 @@ namespace GelMPM
     group_names = read_physical_names(in, dim - 1);
     std::ifstream again(file_name);
     volume_group_names = read_physical_names(again, dim);
-    mesh_       = mesh;
-    mesh_file   = file_name;
-    source_     = Source::mesh;
+    mesh_              = mesh;
+    mesh_file          = file_name;
+    source_            = Source::mesh;
   }
 
 
@@ -1166,9 +1166,9 @@ namespace GelMPM
                                                             dealii::update_JxW_values |
                                                             dealii::update_normal_vectors);
           fe_values->reinit(cell, f);
-          const auto  id    = face->boundary_id();
-          const auto  named = group_names.find(id);
-          const auto &name  = named == group_names.end() ? std::string() : named->second;
+          const auto  id     = face->boundary_id();
+          const auto  named  = group_names.find(id);
+          const auto &name   = named == group_names.end() ? std::string() : named->second;
           const auto  volume = volume_group_names.find(cell->material_id());
           const auto &group  = volume == volume_group_names.end() ? std::string() : volume->second;
           for (const unsigned int k : fe_values->quadrature_point_indices())

@@ -547,7 +547,7 @@ namespace GelMPM
             continue;
           }
         inverse.vmult(a, rhs);
-        dealii::Tensor<1, dim> rest = normal_area;
+        dealii::Tensor<1, dim> rest     = normal_area;
         bool                   positive = true;
         for (unsigned int k = 0; k < n; ++k)
           {
@@ -576,22 +576,22 @@ namespace GelMPM
 
 
   // The members of this file; the class is instantiated in geometry.cc.
-#define GELMPM_INSTANTIATE(dim)                                                               \
-  template bool Geometry<dim>::near_cut(const dealii::Point<dim> &, double, int, bool) const; \
-  template void Geometry<dim>::add_patch(std::vector<SurfaceElement> &,                       \
-                                         const PatchMap &,                                    \
-                                         const std::array<double, 4> &,                       \
-                                         int,                                                 \
-                                         bool) const;                                         \
-  template std::vector<Geometry<dim>::SurfaceElement> Geometry<dim>::box_surface_elements_3d( \
-    double) const;                                                                            \
-  template std::vector<Geometry<dim>::SurfaceElement>                                         \
-  Geometry<dim>::level_set_surface_elements_3d(double,                                        \
-                                               const dealii::Point<dim> &,                    \
-                                               const dealii::Point<dim> &) const;             \
-  template bool Geometry<dim>::split_at_edge(const std::vector<dealii::Point<dim>> &,         \
-                                             const dealii::Tensor<1, dim> &,                  \
-                                             double,                                          \
+#define GELMPM_INSTANTIATE(dim)                                                                 \
+  template bool Geometry<dim>::near_cut(const dealii::Point<dim> &, double, int, bool) const;   \
+  template void Geometry<dim>::add_patch(std::vector<SurfaceElement> &,                         \
+                                         const PatchMap &,                                      \
+                                         const std::array<double, 4> &,                         \
+                                         int,                                                   \
+                                         bool) const;                                           \
+  template std::vector<Geometry<dim>::SurfaceElement> Geometry<dim>::box_surface_elements_3d(   \
+    double) const;                                                                              \
+  template std::vector<Geometry<dim>::SurfaceElement>                                           \
+                Geometry<dim>::level_set_surface_elements_3d(double,                            \
+                                               const dealii::Point<dim> &,        \
+                                               const dealii::Point<dim> &) const; \
+  template bool Geometry<dim>::split_at_edge(const std::vector<dealii::Point<dim>> &,           \
+                                             const dealii::Tensor<1, dim> &,                    \
+                                             double,                                            \
                                              std::vector<SurfaceElement> &) const;
   GELMPM_INSTANTIATE(2)
   GELMPM_INSTANTIATE(3)

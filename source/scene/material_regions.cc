@@ -105,22 +105,24 @@ namespace GelMPM
         const std::string path = "Material/" + name + "/";
         prm.enter_subsection(name);
         Region region;
-        region.name          = name;
-        region.selector_text = dealii::Utilities::trim(prm.get("Selector"));
-        region.mesh_group    = dealii::Utilities::trim(prm.get("Mesh group"));
+        region.name                 = name;
+        region.selector_text        = dealii::Utilities::trim(prm.get("Selector"));
+        region.mesh_group           = dealii::Utilities::trim(prm.get("Mesh group"));
         const std::string G_text    = prm.get("Shear modulus");
         const std::string N_nu_text = prm.get("N nu");
-        double            G         = number_or(G_text, base.shear_modulus(), path + "Shear modulus");
-        double            N_nu      = number_or(N_nu_text, base.N_nu(), path + "N nu");
-        const double      chi = number_or(prm.get("Flory-Huggins chi"), base.chi(), path + "Flory-Huggins chi");
-        const double      D   = number_or(prm.get("Diffusivity"), base.diffusivity(), path + "Diffusivity");
+        double            G    = number_or(G_text, base.shear_modulus(), path + "Shear modulus");
+        double            N_nu = number_or(N_nu_text, base.N_nu(), path + "N nu");
+        const double      chi =
+          number_or(prm.get("Flory-Huggins chi"), base.chi(), path + "Flory-Huggins chi");
+        const double D =
+          number_or(prm.get("Diffusivity"), base.diffusivity(), path + "Diffusivity");
         prm.leave_subsection();
 
         require(region.selector_text.empty() != region.mesh_group.empty(),
                 path + "Selector",
                 region.selector_text.empty() ? "and 'Mesh group' are both empty: the region "
-                                               "selects nothing" :
-                                               "and 'Mesh group' are both given",
+                                               "selects nothing"
+                                             : "and 'Mesh group' are both given",
                 "give one of them: an expression in x, y" + std::string(dim == 3 ? ", z" : "") +
                   " or a physical group of the mesh");
         require(G > 0., path + "Shear modulus", "must be positive", "give G > 0");
@@ -224,8 +226,8 @@ namespace GelMPM
     for (unsigned int k = 0; k < regions.size(); ++k)
       {
         const auto &r  = regions[k];
-        const bool  in = r.selector ? r.selector->value(X0) != 0. :
-                                      (!group_name.empty() && group_name == r.mesh_group);
+        const bool  in = r.selector ? r.selector->value(X0) != 0.
+                                    : (!group_name.empty() && group_name == r.mesh_group);
         if (!in)
           continue;
         if (found != 0)
@@ -252,8 +254,8 @@ namespace GelMPM
               "Material/" + regions[k].name + "/" +
                 (regions[k].selector ? "Selector" : "Mesh group"),
               "selects no material point of the body",
-              regions[k].selector ? "check the expression against the body's initial position" :
-                                    "check the group against the mesh's volume groups");
+              regions[k].selector ? "check the expression against the body's initial position"
+                                  : "check the group against the mesh's volume groups");
   }
 
 
@@ -276,12 +278,12 @@ namespace GelMPM
                   volume_groups.end(),
                 "Material/" + r.name + "/Mesh group",
                 on_boundary ? "names '" + r.mesh_group +
-                                "', a group of the mesh's boundary, not of its volume" :
-                              "names '" + r.mesh_group +
+                                "', a group of the mesh's boundary, not of its volume"
+                            : "names '" + r.mesh_group +
                                 "', which is not a physical group of the mesh's volume",
                 known.empty() ? "give the mesh volume physical groups (Gmsh: Physical Surface "
-                                "in 2D, Physical Volume in 3D) or use a 'Selector'" :
-                                "use one of: " + known);
+                                "in 2D, Physical Volume in 3D) or use a 'Selector'"
+                              : "use one of: " + known);
       }
   }
 

@@ -45,22 +45,11 @@ namespace GelMPM
           pieces_shown.push_back(i);
         return;
       }
-    for (const auto &name : names)
-      {
-        const auto it = std::find(pieces.begin(), pieces.end(), name);
-        require(it != pieces.end(),
-                "Observables/Forces and fluxes",
-                name == "all" ? "mixes 'all' with piece names" :
-                                "names the piece '" + name +
-                                  "' that is not in 'Boundary conditions/Pieces'",
-                "write 'all' or a list of the declared pieces");
-        const unsigned int index = it - pieces.begin();
-        require(std::find(pieces_shown.begin(), pieces_shown.end(), index) == pieces_shown.end(),
-                "Observables/Forces and fluxes",
-                "names the piece '" + name + "' twice",
-                "name each piece once");
-        pieces_shown.push_back(index);
-      }
+    require(std::find(names.begin(), names.end(), "all") == names.end(),
+            "Observables/Forces and fluxes",
+            "mixes 'all' with piece names",
+            "write 'all' or a list of the declared pieces");
+    pieces_shown = piece_indices(names, pieces, "Observables/Forces and fluxes");
   }
 
 
@@ -150,10 +139,10 @@ namespace GelMPM
   void
   BoundaryBalance<dim>::record_step(
     const std::vector<typename MixedSystem<dim>::PieceBalance> &balances,
-    const double                                                 dt,
-    const dealii::Particles::ParticleHandler<dim>               &particles,
-    const MaterialRegions<dim>                                  &material,
-    StatisticsFile                                              &statistics)
+    const double                                                dt,
+    const dealii::Particles::ParticleHandler<dim>              &particles,
+    const MaterialRegions<dim>                                 &material,
+    StatisticsFile                                             &statistics)
   {
     if (!enabled())
       return;

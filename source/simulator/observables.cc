@@ -2,6 +2,7 @@
 #include <gelmpm/core/input_error.h>
 #include <gelmpm/io/file_writing.h>
 #include <gelmpm/particles/property_layout.h>
+#include <gelmpm/scene/boundary_conditions.h>
 #include <gelmpm/simulator/observables.h>
 #include <gelmpm/simulator/pore_geometry.h>
 
@@ -195,21 +196,7 @@ namespace GelMPM
     thickness_pieces = piece_pair(names, pieces, "Observables/Thickness pieces", "top, bottom");
 
     // In 3D only the relief: the points of a surface form no polyline there.
-    surface_pieces.clear();
-    std::set<std::string> seen;
-    for (const auto &name : surface_names)
-      {
-        const auto it = std::find(pieces.begin(), pieces.end(), name);
-        require(it != pieces.end(),
-                "Observables/Surface pieces",
-                "names the piece '" + name + "' that is not in 'Boundary conditions/Pieces'",
-                "use the declared pieces, separated by commas");
-        require(seen.insert(name).second,
-                "Observables/Surface pieces",
-                "names the piece '" + name + "' twice",
-                "name every piece once");
-        surface_pieces.push_back(it - pieces.begin());
-      }
+    surface_pieces = piece_indices(surface_names, pieces, "Observables/Surface pieces");
     require(fold_approach_distance > 0.,
             "Observables/Fold approach distance",
             "must be positive",

@@ -66,12 +66,7 @@ namespace GelMPM
       triangulation = std::make_unique<dealii::Triangulation<dim>>();
     grid.create_triangulation(*triangulation);
     particles.initialize(*triangulation, mapping, PropertyLayout<dim>::n_properties);
-    generator.generate(geometry,
-                       grid,
-                       *triangulation,
-                       boundary_conditions,
-                       regions,
-                       particles);
+    generator.generate(geometry, grid, *triangulation, boundary_conditions, regions, particles);
     balance_partition();
   }
 

@@ -1,4 +1,5 @@
 #include <gelmpm/core/input_error.h>
+#include <gelmpm/scene/boundary_conditions.h>
 #include <gelmpm/simulator/scene_structure.h>
 
 #include <deal.II/base/utilities.h>
@@ -51,39 +52,9 @@ namespace GelMPM
     s.material_regions = dealii::Utilities::split_string_list(p.get("Regions"), ',');
     p.leave_subsection();
 
-    std::set<std::string> seen;
-    for (const auto &name : s.boundary_pieces)
-      {
-        require(!name.empty(),
-                "Boundary conditions/Pieces",
-                "contains an empty name",
-                "remove the doubled or trailing comma");
-        require(name.find('/') == std::string::npos,
-                "Boundary conditions/Pieces",
-                "contains the name '" + name + "' with a '/'",
-                "use names without '/'");
-        require(seen.insert(name).second,
-                "Boundary conditions/Pieces",
-                "names the piece '" + name + "' twice",
-                "give every piece a distinct name");
-      }
+    check_section_names(s.boundary_pieces, "Boundary conditions/Pieces", "piece");
     // A region's subsection sits beside the section's own entries and subsections.
-    std::set<std::string> regions;
-    for (const auto &name : s.material_regions)
-      {
-        require(!name.empty(),
-                "Material/Regions",
-                "contains an empty name",
-                "remove the doubled or trailing comma");
-        require(name.find('/') == std::string::npos,
-                "Material/Regions",
-                "contains the name '" + name + "' with a '/'",
-                "use names without '/'");
-        require(regions.insert(name).second,
-                "Material/Regions",
-                "names the region '" + name + "' twice",
-                "give every region a distinct name");
-      }
+    check_section_names(s.material_regions, "Material/Regions", "region");
     return s;
   }
 

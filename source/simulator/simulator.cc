@@ -322,9 +322,10 @@ namespace GelMPM
               << std::setprecision(5) << area[row];
         if (count[row] > 0.)
           for (unsigned int d = 0; d < dim; ++d)
-            pcout << "  n" << "xyz"[d] << " " << std::fixed << std::setprecision(3)
-                  << std::setw(6) << lowest[row * dim + d] << " .. " << std::setw(6)
-                  << highest[row * dim + d] << std::defaultfloat;
+            pcout << "  n"
+                  << "xyz"[d] << " " << std::fixed << std::setprecision(3) << std::setw(6)
+                  << lowest[row * dim + d] << " .. " << std::setw(6) << highest[row * dim + d]
+                  << std::defaultfloat;
         pcout << '\n';
       }
     pcout << std::setprecision(6);
@@ -1085,8 +1086,8 @@ namespace GelMPM
     // Wall times differ from run to run: not in test mode, whose log is compared.
     if (!output_settings.test_mode)
       {
-        pcout << "  wall " << format_duration(progress->elapsed()) << " ("
-              << std::setprecision(3) << 100. * time / time_stepping.end_time << "%";
+        pcout << "  wall " << format_duration(progress->elapsed()) << " (" << std::setprecision(3)
+              << 100. * time / time_stepping.end_time << "%";
         const double remaining = progress->remaining();
         if (remaining >= 0. && !control->finished())
           pcout << ", end in ~" << format_duration(remaining);
@@ -1156,7 +1157,7 @@ namespace GelMPM
     ar &mu_coefficients                                                    &mu_known;
     ar &announced_bracketing &inexact_extrapolation_noted &last_eigenvalue &mode_recorded;
     ar &last_stable_inertia.n_positive &last_stable_inertia.n_negative &last_stable_inertia.n_zero;
-    ar &*control &observables &balance &*particle_output;
+    ar &*control &observables &balance                                &*particle_output;
     if (grid_output)
       ar &*grid_output;
     if (mode_output)

@@ -32,6 +32,12 @@ namespace GelMPM
     last             = now;
     time             = t;
     last_dt          = dt;
+    if (t > 0.)
+      {
+        recent_rates.push_back(dt / t);
+        if (recent_rates.size() > 20)
+          recent_rates.pop_front();
+      }
   }
 
 
@@ -47,7 +53,14 @@ namespace GelMPM
   {
     if (seconds_per_step < 0.)
       return -1.;
-    return seconds_per_step * remaining_steps(settings, time, last_dt, settings.end_time);
+    // With an error tolerance the step tends to a share of the time: the largest of the last
+    // steps (a step cut short for a contact or an onset grows back to it); without, nothing but
+    // the growth factor and the caps bounds it.
+    double rate = std::numeric_limits<double>::infinity();
+    if (settings.tolerance > 0. || settings.displacement_tolerance > 0.)
+      rate = std::min(*std::max_element(recent_rates.begin(), recent_rates.end()),
+                      settings.growth_factor - 1.);
+    return seconds_per_step * remaining_steps(settings, time, last_dt, settings.end_time, rate);
   }
 
 
@@ -55,37 +68,49 @@ namespace GelMPM
   RunProgress::remaining_steps(const TimeStepping &settings,
                                const double        t,
                                const double        dt,
-                               const double        end_time)
+                               const double        end_time,
+                               const double        rate)
   {
-    if (t >= end_time * (1. - relative_time_tolerance) || dt <= 0.)
+    const double end = end_time * (1. - relative_time_tolerance);
+    if (t >= end || dt <= 0.)
       return 0.;
-    // The rate at which the step grows with the time; a step that is large against the time
-    // (a run that began at t > 0) grows no faster than the step control lets it.
-    const double rate  = t > 0. ? std::min(dt / t, settings.growth_factor - 1.) : 0.;
-    double       steps = 0.;
-    double       a     = t;
-    auto         caps  = settings.caps;
-    caps.emplace_back(std::numeric_limits<double>::infinity(),
-                      std::numeric_limits<double>::infinity());
-    for (const auto &[until, largest] : caps)
+    const double g = settings.growth_factor;
+    double       s = t, h = dt, steps = 0.;
+    // Phases, each in closed form but the growth: growth by g per step (one step at a time: a
+    // few dozen), steps of rate s (a geometric series of times), steps of the cap.
+    for (unsigned int phase = 0; s < end && phase < 100000; ++phase)
       {
-        if (until <= a)
-          continue;
-        const double b = std::min(until, end_time);
-        if (rate <= 0.)
-          // Nothing to grow from: steps of dt, capped.
-          steps += (b - a) / std::min(dt, largest);
-        else
+        const double cap = settings.cap(s);
+        double       b   = end_time; // where the cap in force at s ends
+        for (const auto &c : settings.caps)
+          if (s < c.first * (1. - relative_time_tolerance))
+            {
+              b = std::min(b, c.first);
+              break;
+            }
+        const double target = std::min(rate * s, cap);
+        if (g > 1. && h * g < target)
           {
-            // Steps of rate s up to the cap, then of the cap.
-            const double s_c = std::min(b, std::max(a, largest / rate));
-            steps += std::log(s_c / a) / std::log1p(rate);
-            if (s_c < b)
-              steps += (b - s_c) / largest;
+            h *= g;
+            s += h;
+            steps += 1.;
+            continue;
           }
-        a = b;
-        if (a >= end_time)
-          break;
+        if (rate * s < cap)
+          {
+            const double s_c = std::min(b, cap / rate);
+            if (s_c > s * (1. + relative_time_tolerance))
+              {
+                steps += std::log(s_c / s) / std::log1p(rate);
+                h = rate * s_c;
+                s = s_c;
+                continue;
+              }
+          }
+        const double step = std::isfinite(cap) ? cap : h;
+        steps += (b - s) / step;
+        h = step;
+        s = b;
       }
     return std::max(steps, 1.);
   }

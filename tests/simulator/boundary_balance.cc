@@ -47,7 +47,7 @@ namespace
   {
     for (int i = 0; i < 200; ++i)
       {
-        const double m = 0.5 * (a + b);
+        const double m              = 0.5 * (a + b);
         (f(a) * f(m) <= 0. ? b : a) = m;
       }
     return 0.5 * (a + b);
@@ -65,12 +65,12 @@ namespace
 
   /** The largest |sum of the pieces' force components| over the rows, per component. */
   double
-  largest_force_sum(const GelMPMTests::SceneRun       &run,
-                    const std::vector<std::string>    &pieces,
-                    const std::string                 &component)
+  largest_force_sum(const GelMPMTests::SceneRun    &run,
+                    const std::vector<std::string> &pieces,
+                    const std::string              &component)
   {
-    double       m = 0.;
-    const auto  &first = run.statistics.at(pieces[0] + "_force_" + component);
+    double      m     = 0.;
+    const auto &first = run.statistics.at(pieces[0] + "_force_" + component);
     for (unsigned int row = 0; row < first.size(); ++row)
       {
         double sum = 0.;
@@ -130,8 +130,7 @@ main(int argc, char **argv)
     // The drained state holds (J - 1) solvent per dry volume, the dry area being H L / J_0.
     const double solvent = (J - 1.) * H * 1. / J_0;
     std::cout << "strip: solvent volume within 1e-3 of the drained state's: "
-              << (std::abs(run.statistics.at("solvent_volume").back() - solvent) <=
-                  1e-3 * solvent)
+              << (std::abs(run.statistics.at("solvent_volume").back() - solvent) <= 1e-3 * solvent)
               << std::endl;
     std::cout << "strip: mass balance within 1e-6 at every step: "
               << (largest(run.statistics.at("solvent_imbalance")) <= 1e-6) << std::endl;

@@ -168,7 +168,7 @@ main(int argc, char **argv)
   particles.update_cached_numbers();
 
   const MaterialRegions<2> gel;
-  StatisticsFile          statistics;
+  StatisticsFile           statistics;
   statistics.open("statistics.csv", columns);
   std::filesystem::create_directories("surfaces");
 

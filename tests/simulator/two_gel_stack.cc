@@ -35,7 +35,7 @@ namespace
   {
     for (int i = 0; i < 200; ++i)
       {
-        const double m = 0.5 * (a + b);
+        const double m              = 0.5 * (a + b);
         (f(a) * f(m) <= 0. ? b : a) = m;
       }
     return 0.5 * (a + b);
@@ -63,12 +63,14 @@ main(int argc, char **argv)
   double      stretches[2];
   for (unsigned int k = 0; k < 2; ++k)
     {
-      const auto  &l = layers[k];
-      const double G = l.N_nu * kT_over_nu;
-      const double L0 =
-        bisect([&](const double s) { return stress_times_stretch(s, s * s * s, mu_0, G, l.chi, l.N_nu); },
-               1. + 1e-9,
-               5.);
+      const auto  &l  = layers[k];
+      const double G  = l.N_nu * kT_over_nu;
+      const double L0 = bisect(
+        [&](const double s) {
+          return stress_times_stretch(s, s * s * s, mu_0, G, l.chi, l.N_nu);
+        },
+        1. + 1e-9,
+        5.);
       const double stretch = bisect(
         [&](const double s) {
           return stress_times_stretch(L0 * s, L0 * L0 * L0 * s, mu_bath, G, l.chi, l.N_nu);

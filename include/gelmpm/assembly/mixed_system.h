@@ -71,10 +71,10 @@ namespace GelMPM
   {
   public:
     MixedSystem(const MaterialRegions<dim> &materials,
-                BoundaryConditions<dim>   &boundary_conditions,
-                const NitscheSettings     &nitsche,
-                DiscreteSpaces<dim>       &spaces,
-                const MPI_Comm             communicator = MPI_COMM_SELF);
+                BoundaryConditions<dim>    &boundary_conditions,
+                const NitscheSettings      &nitsche,
+                DiscreteSpaces<dim>        &spaces,
+                const MPI_Comm              communicator = MPI_COMM_SELF);
 
     /**
      * Start a step: locate the points of @p particles, classify cells from the volume points,
@@ -262,25 +262,25 @@ namespace GelMPM
     /** What a material point contributes, cached for a step. */
     struct PointRecord
     {
-      PointKind              kind;
-      int                    piece;
-      double                 measure;     // V_n or A_n
-      dealii::Tensor<1, dim> normal;      // unit N_n (surface points)
-      dealii::Point<dim>     x;           // the particle's location: x_n less the edge offset
-      dealii::Tensor<1, dim> edge_offset; // PropertyLayout::edge_offset
-      dealii::Point<dim>     X0;          // X_0
-      dealii::Tensor<1, dim> u_n;         // x_n - X_0
-      dealii::Tensor<1, dim> du_last;     // x_n - x_{n-1}
-      dealii::Tensor<2, dim> F_p;         // F_n F_0
-      const FloryRehnerGel<dim> *gel;     // the gel of the point's region
-      double                 mobility;    // m_n in the weak form's units
-      double                 mu_n;        // mu at the point, last converged step
-      double                 dmu_last;    // mu_n - mu_{n-1}
-      unsigned int           block;       // index into blocks
-      unsigned int           u_offset;    // into u shape arrays
-      unsigned int           mu_offset;   // into mu shape arrays
-      dealii::Tensor<2, dim> projector;   // Pi (zero unless u is prescribed)
-      dealii::Tensor<1, dim> u_bar;
+      PointKind                  kind;
+      int                        piece;
+      double                     measure;     // V_n or A_n
+      dealii::Tensor<1, dim>     normal;      // unit N_n (surface points)
+      dealii::Point<dim>         x;           // the particle's location: x_n less the edge offset
+      dealii::Tensor<1, dim>     edge_offset; // PropertyLayout::edge_offset
+      dealii::Point<dim>         X0;          // X_0
+      dealii::Tensor<1, dim>     u_n;         // x_n - X_0
+      dealii::Tensor<1, dim>     du_last;     // x_n - x_{n-1}
+      dealii::Tensor<2, dim>     F_p;         // F_n F_0
+      const FloryRehnerGel<dim> *gel;         // the gel of the point's region
+      double                     mobility;    // m_n in the weak form's units
+      double                     mu_n;        // mu at the point, last converged step
+      double                     dmu_last;    // mu_n - mu_{n-1}
+      unsigned int               block;       // index into blocks
+      unsigned int               u_offset;    // into u shape arrays
+      unsigned int               mu_offset;   // into mu shape arrays
+      dealii::Tensor<2, dim>     projector;   // Pi (zero unless u is prescribed)
+      dealii::Tensor<1, dim>     u_bar;
       // The adjoint Nitsche term's solvent, (g (x) N) : dP/dmu A, at the start of the step.
       double                 adjoint_solvent_n = 0.;
       dealii::Tensor<1, dim> traction;

@@ -28,9 +28,9 @@ namespace GelMPM
   {
   public:
     /** A series in @p directory; on several ranks of @p communicator each writes its points. */
-    ParticleOutput(const std::string         &directory,
+    ParticleOutput(const std::string          &directory,
                    const MaterialRegions<dim> &materials,
-                   const MPI_Comm             communicator = MPI_COMM_SELF);
+                   const MPI_Comm              communicator = MPI_COMM_SELF);
 
     /** Write the points at @p time (in tau_d) and update the .pvd series. */
     void
@@ -57,7 +57,7 @@ namespace GelMPM
 
   private:
     const MaterialRegions<dim> &materials;
-    PvdSeries                  series;
+    PvdSeries                   series;
   };
 } // namespace GelMPM
 

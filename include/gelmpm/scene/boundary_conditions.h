@@ -159,6 +159,27 @@ namespace GelMPM
   private:
     std::vector<std::unique_ptr<BoundaryPiece<dim>>> pieces_;
   };
+
+
+  /**
+   * The indices in @p pieces (the scene's piece names) of the pieces that @p names lists, in
+   * its order. Throws InputError naming @p entry for a name that is not a piece and for a
+   * piece named twice.
+   */
+  std::vector<unsigned int>
+  piece_indices(const std::vector<std::string> &names,
+                const std::vector<std::string> &pieces,
+                const std::string              &entry);
+
+
+  /**
+   * InputError naming @p entry unless @p names are usable subsection names: none empty, none
+   * with a '/', none twice (@p what: "piece", "region").
+   */
+  void
+  check_section_names(const std::vector<std::string> &names,
+                      const std::string              &entry,
+                      const std::string              &what);
 } // namespace GelMPM
 
 #endif

@@ -113,10 +113,10 @@ namespace GelMPM
   private:
     struct Region
     {
-      std::string                                   name;
-      std::string                                   selector_text;
-      std::string                                   mesh_group;
-      std::unique_ptr<dealii::FunctionParser<dim>>  selector;
+      std::string                                  name;
+      std::string                                  selector_text;
+      std::string                                  mesh_group;
+      std::unique_ptr<dealii::FunctionParser<dim>> selector;
     };
     std::vector<FloryRehnerGel<dim>> gels = {FloryRehnerGel<dim>()};
     std::vector<Region>              regions; // regions[k] is region k + 1

@@ -10,7 +10,6 @@
 #include <deal.II/particles/particle_handler.h>
 
 #include <boost/serialization/vector.hpp>
-
 #include <string>
 #include <vector>
 
@@ -74,10 +73,10 @@ namespace GelMPM
      */
     void
     record_step(const std::vector<typename MixedSystem<dim>::PieceBalance> &balances,
-                const double                                                 dt,
-                const dealii::Particles::ParticleHandler<dim>               &particles,
-                const MaterialRegions<dim>                                  &material,
-                StatisticsFile                                              &statistics);
+                const double                                                dt,
+                const dealii::Particles::ParticleHandler<dim>              &particles,
+                const MaterialRegions<dim>                                 &material,
+                StatisticsFile                                             &statistics);
 
     /** The run's sums, for a checkpoint (boost serialization). */
     template <class Archive>
@@ -99,7 +98,7 @@ namespace GelMPM
   private:
     std::vector<unsigned int> pieces_shown; // indices into the scene's pieces
     std::vector<std::string>  piece_names;  // of all pieces
-    MPI_Comm                  communicator = MPI_COMM_SELF;
+    MPI_Comm                  communicator     = MPI_COMM_SELF;
     double                    solvent_volume_0 = 0.;
     double                    largest_change   = 0.;
     std::vector<double>       solvent_in; // per piece, since the start

@@ -210,7 +210,7 @@ namespace GelMPM
     std::vector<bool>                   contact_seen;
     std::vector<unsigned int>           creases_seen;
     double                              crease_angle = M_PI / 3.;
-    std::vector<int>                    surface_pieces;
+    std::vector<unsigned int>           surface_pieces;
     std::vector<std::string>            surface_names;
     double                              fold_approach_distance = 0.5; // times h_u
     double                              fold_arc_length        = 3.;  // times h_u

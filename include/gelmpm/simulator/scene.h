@@ -114,7 +114,7 @@ namespace GelMPM
     }
 
     /** The body's own material (section "Material"), region 0 of regions. */
-    FloryRehnerGel<dim>         material;
+    FloryRehnerGel<dim> material;
     /** Every gel of the body, by region (MaterialRegions). */
     MaterialRegions<dim>        regions;
     BackgroundGrid<dim>         grid;

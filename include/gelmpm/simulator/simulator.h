@@ -102,8 +102,8 @@ namespace GelMPM
     /** How advance() ended. */
     enum class StepOutcome
     {
-      accepted,  ///< a converged step was taken
-      failed,    ///< the step size fell below the minimum
+      accepted,   ///< a converged step was taken
+      failed,     ///< the step size fell below the minimum
       interrupted ///< a stop signal arrived before an attempt; the last accepted state stands
     };
 
@@ -242,14 +242,14 @@ namespace GelMPM
     // First, so that the wall time of a run counts its set-up.
     RunProgress::Clock::time_point run_start = RunProgress::Clock::now();
     SceneStructure                 structure;
-    Scene<dim>        scene;
-    OutputSettings    output_settings;
-    LinearSolver      linear_solver;
-    NewtonSettings    newton;
-    TimeStepping      time_stepping;
-    Observables<dim>     observables;
-    BoundaryBalance<dim> balance;
-    StabilitySettings stability;
+    Scene<dim>                     scene;
+    OutputSettings                 output_settings;
+    LinearSolver                   linear_solver;
+    NewtonSettings                 newton;
+    TimeStepping                   time_stepping;
+    Observables<dim>               observables;
+    BoundaryBalance<dim>           balance;
+    StabilitySettings              stability;
 
     std::string                scene_file;
     std::string                parameters_as_used;

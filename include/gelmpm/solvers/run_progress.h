@@ -4,6 +4,7 @@
 #include <gelmpm/solvers/time_stepping.h>
 
 #include <chrono>
+#include <deque>
 #include <string>
 
 namespace GelMPM
@@ -15,14 +16,15 @@ namespace GelMPM
    * The estimate is (steps still to take) x (wall time per step). The wall time per step is an
    * exponential average over the last steps (weight 1/4 for the newest, failed attempts
    * included): the cost of a step changes slowly with the body, abruptly when an attempt fails.
-   * The steps still to take follow the way an error-controlled step grows in a diffusion
-   * problem: in proportion to the time, dt(s) = (dt/t) s at the rate of the last accepted step
-   * dt at time t, until it meets the cap of 'Time stepping/Maximum step' in force at s, and at
-   * that cap from there on. Between the caps' times a_k < s < b_k with cap C_k this gives
-   * ln(s_c / a_k) / ln(1 + dt/t) steps of geometric growth up to s_c = min(C_k t/dt, b_k) and
-   * (b_k - s_c) / C_k capped steps. A run whose steps shrink (bracketing a loss of stability, a
-   * contact) takes more than estimated; doc/output.md has the estimate's error on the paper's
-   * scenes.
+   * The steps still to take are counted as the step control would take them undisturbed: each
+   * step 'Growth factor' times the last, up to the cap in force ('Step caps') and, with an error
+   * tolerance ('Time stepping/Tolerance', 'Displacement tolerance'), up to a share r of the time,
+   * as an error-controlled step in a diffusion problem grows in proportion to the time. r is the
+   * largest dt/t of the last 20 accepted steps: a step cut short for a contact or an onset grows
+   * back to where it was. In closed form but for the growth phase (remaining_steps()): steps of
+   * r s from s_1 to s_2 number ln(s_2/s_1)/ln(1 + r). A run whose steps shrink (bracketing a
+   * loss of stability, a contact) takes more than estimated; doc/output.md has the estimate's
+   * error on the paper's scenes.
    */
   class RunProgress
   {
@@ -55,14 +57,16 @@ namespace GelMPM
     remaining() const;
 
     /**
-     * The number of steps from @p t to @p end_time whose size grows in proportion to the time,
-     * from @p dt at @p t, up to the caps of @p settings (see the class documentation).
+     * The number of steps from @p t to @p end_time, the last step having been @p dt: each step
+     * grows by 'Growth factor' over the last, up to @p rate times the time (infinity: no such
+     * bound) and up to the cap in force ('Step caps').
      */
     static double
     remaining_steps(const TimeStepping &settings,
                     const double        t,
                     const double        dt,
-                    const double        end_time);
+                    const double        end_time,
+                    const double        rate);
 
   private:
     const TimeStepping &settings;
@@ -71,6 +75,7 @@ namespace GelMPM
     double              seconds_per_step = -1.;
     double              time             = 0.;
     double              last_dt          = 0.;
+    std::deque<double>  recent_rates; // dt/t of the last accepted steps
   };
 
   /** A wall time for the log: "8.4 s", "3 min 07 s", "2 h 05 min". */
