@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <boost/program_options.hpp>
 #include <cmath>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -50,26 +51,39 @@ namespace
   }
 
   /**
-   * The columns whose scale a column shares: the components of a vector, e.g. a piece's
-   * force (P_force_x, P_force_y, ...): a component that is round-off against the others (the
-   * force across a frictionless punch) is judged against the vector's size. Else the column
-   * alone.
+   * The columns whose scale a column shares: the forces, the inflows and the solvent taken in of
+   * all the boundary pieces (P_force_x, P_inflow, P_solvent_in, ...), each kind against the
+   * largest of its kind. A piece's column that is round-off against the body's (the force
+   * across a frictionless punch, the solvent through an impermeable piece) is judged on the
+   * body's scale, as its sum with the others is. Else the column alone.
    */
   std::vector<std::string>
   scale_group(const std::string &column, const std::map<std::string, std::vector<double>> &all)
   {
-    const std::string suffix = "_force_";
-    const auto        at     = column.rfind(suffix);
-    if (at == std::string::npos || at + suffix.size() + 1 != column.size())
-      return {column};
-    std::vector<std::string> group;
-    for (const char d : {'x', 'y', 'z'})
-      {
-        const std::string sibling = column.substr(0, at + suffix.size()) + d;
-        if (all.count(sibling))
-          group.push_back(sibling);
-      }
-    return group;
+    const auto ends_with = [](const std::string &text, const std::string &end) {
+      return text.size() >= end.size() &&
+             text.compare(text.size() - end.size(), end.size(), end) == 0;
+    };
+    const auto is_force = [&](const std::string &c) {
+      return ends_with(c, "_force_x") || ends_with(c, "_force_y") || ends_with(c, "_force_z");
+    };
+    for (const auto &kind :
+         std::vector<std::function<bool(const std::string &)>>{is_force,
+                                                               [&](const std::string &c) {
+                                                                 return ends_with(c, "_inflow");
+                                                               },
+                                                               [&](const std::string &c) {
+                                                                 return ends_with(c, "_solvent_in");
+                                                               }})
+      if (kind(column))
+        {
+          std::vector<std::string> group;
+          for (const auto &[name, values] : all)
+            if (kind(name))
+              group.push_back(name);
+          return group;
+        }
+    return {column};
   }
 
 
@@ -94,8 +108,8 @@ main(int argc, char **argv)
     "be equal; newton_iterations may differ by --newton; eig_* columns (ARPACK) agree to\n"
     "--eigenvalues relative; every other column to --relative times its largest magnitude\n"
     "over the rows (a column that is a small difference of large numbers is judged against\n"
-    "its own scale; the components of a piece's force P_force_x, _y, _z against the largest\n"
-    "of them). Exit status 0 when all agree, 1 otherwise, 2 on bad input.\n\nOptions");
+    "its own scale; the boundary pieces' forces, inflows and solvent taken in each against the\n"
+    "largest of their kind). Exit status 0 when all agree, 1 otherwise, 2 on bad input.\n\nOptions");
   options.add_options()("help,h", "this message")(
     "relative",
     po::value(&tolerances.relative)->default_value(tolerances.relative),
