@@ -28,30 +28,21 @@
 #include <string>
 #include <vector>
 
+#include "../flory_rehner_closed_form.h"
 #include "../scene_run.h"
 
 namespace
 {
   constexpr double G = 1., chi = 0.1, N_nu = 7.299e-3, lambda_0 = 1.2801;
 
-  /** mu/kT at which the stretches make P_ii F_ii = 0 for a given i: eq. (22) generalised. */
+  /** P_ii F_ii of the Table 1 gel (G = 1). */
   double
   stress_times_stretch(const double stretch, const double J, const double mu)
   {
-    return G * (stretch * stretch - 1.) +
-           G / N_nu * J * (std::log(1. - 1. / J) + 1. / J + chi / (J * J) - mu);
+    return GelMPMTests::stress_times_stretch(stretch, J, mu, G, chi, N_nu);
   }
 
-  double
-  bisect(const std::function<double(double)> &f, double a, double b)
-  {
-    for (int i = 0; i < 200; ++i)
-      {
-        const double m              = 0.5 * (a + b);
-        (f(a) * f(m) <= 0. ? b : a) = m;
-      }
-    return 0.5 * (a + b);
-  }
+  using GelMPMTests::bisect;
 
   /** The largest |value| of a column over the rows. */
   double

@@ -14,33 +14,11 @@
 #include <functional>
 #include <iostream>
 
+#include "../flory_rehner_closed_form.h"
 #include "../scene_run.h"
 
-namespace
-{
-  double
-  stress_times_stretch(const double stretch,
-                       const double J,
-                       const double mu,
-                       const double G,
-                       const double chi,
-                       const double N_nu)
-  {
-    return G * (stretch * stretch - 1.) +
-           G / N_nu * J * (std::log(1. - 1. / J) + 1. / J + chi / (J * J) - mu);
-  }
-
-  double
-  bisect(const std::function<double(double)> &f, double a, double b)
-  {
-    for (int i = 0; i < 200; ++i)
-      {
-        const double m              = 0.5 * (a + b);
-        (f(a) * f(m) <= 0. ? b : a) = m;
-      }
-    return 0.5 * (a + b);
-  }
-} // namespace
+using GelMPMTests::bisect;
+using GelMPMTests::stress_times_stretch;
 
 
 int
