@@ -70,16 +70,22 @@ def main():
         import matplotlib
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
-        fig, ax = plt.subplots(figsize=(5, 3.5))
-        for name in grids:
-            sel = [r for r in rows if r[2] == name]
-            ax.plot([100 * r[1] for r in sel], [r[3] for r in sel], "o", label="MPM, " + name)
+        fig, (ax, bx) = plt.subplots(1, 2, figsize=(9, 3.5))
         first = [r for r in rows if r[2] == next(iter(grids))]
         ax.plot([100 * r[1] for r in first], [r[4] for r in first], "k--",
                 label="Timoshenko (drained plane-strain moduli)")
+        for name in grids:
+            sel = [r for r in rows if r[2] == name]
+            ax.plot([100 * r[1] for r in sel], [r[3] for r in sel], "o", label="MPM, " + name)
+            bx.plot([100 * r[1] for r in sel], [100 * (r[3] / r[4] - 1) for r in sel], "o-",
+                    label="MPM, " + name)
         ax.set_xlabel("mismatch strain (%)")
-        ax.set_ylabel("curvature")
+        ax.set_ylabel("curvature (1/length)")
         ax.legend(fontsize=7)
+        bx.axhline(0, color="k", lw=0.5)
+        bx.set_xlabel("mismatch strain (%)")
+        bx.set_ylabel("MPM / Timoshenko - 1 (%)")
+        bx.legend(fontsize=7)
         fig.tight_layout()
         fig.savefig(os.path.join(TOP, "doc", "figures", "bilayer_curvature.png"), dpi=120)
 
