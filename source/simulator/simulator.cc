@@ -3,6 +3,7 @@
 #include <gelmpm/core/stop_request.h>
 #include <gelmpm/core/version.h>
 #include <gelmpm/io/file_writing.h>
+#include <gelmpm/io/piece_table.h>
 #include <gelmpm/particles/point_location.h>
 #include <gelmpm/particles/point_serialization.h>
 #include <gelmpm/particles/property_layout.h>
@@ -18,7 +19,6 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
-#include <limits>
 #include <regex>
 #include <sstream>
 
@@ -271,64 +271,9 @@ namespace GelMPM
   void
   Simulator<dim>::print_piece_table() const
   {
-    using Layout = PropertyLayout<dim>;
-    // Per piece (the last row: surface points of no piece): count, area, then the smallest and
-    // the largest of each normal component.
-    const unsigned int  n_rows = structure.boundary_pieces.size() + 1;
-    std::vector<double> count(n_rows, 0.), area(n_rows, 0.);
-    std::vector<double> lowest(n_rows * dim, std::numeric_limits<double>::infinity());
-    std::vector<double> highest(n_rows * dim, -std::numeric_limits<double>::infinity());
-    for (const auto &p : scene.particles)
-      {
-        const auto props = p.get_properties();
-        if (kind_of(props) == PointKind::volume)
-          continue;
-        const int          piece = piece_of(props);
-        const unsigned int row   = piece >= 0 ? piece : n_rows - 1;
-        count[row] += 1.;
-        area[row] += props[Layout::measure_0];
-        dealii::Tensor<1, dim> normal;
-        for (unsigned int d = 0; d < dim; ++d)
-          normal[d] = props[Layout::normal_area_0 + d];
-        normal /= normal.norm();
-        // Round-off of a normal's zero component would print as -0.000.
-        for (unsigned int d = 0; d < dim; ++d)
-          if (std::abs(normal[d]) < 1e-12)
-            normal[d] = 0.;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            lowest[row * dim + d]  = std::min(lowest[row * dim + d], normal[d]);
-            highest[row * dim + d] = std::max(highest[row * dim + d], normal[d]);
-          }
-      }
-    dealii::Utilities::MPI::sum(count, scene.communicator, count);
-    dealii::Utilities::MPI::sum(area, scene.communicator, area);
-    dealii::Utilities::MPI::min(lowest, scene.communicator, lowest);
-    dealii::Utilities::MPI::max(highest, scene.communicator, highest);
-
-    std::size_t width = 6;
-    for (const auto &name : structure.boundary_pieces)
-      width = std::max(width, name.size());
-    pcout << "  boundary pieces (initial area" << (dim == 2 ? " per unit thickness" : "")
-          << "; range of each component of the initial normal):\n";
-    for (unsigned int row = 0; row < n_rows; ++row)
-      {
-        if (row == n_rows - 1 && count[row] == 0.)
-          break;
-        const std::string name =
-          row < n_rows - 1 ? structure.boundary_pieces[row] : std::string("(none)");
-        pcout << "    " << std::left << std::setw(width) << name << std::right << std::setw(8)
-              << static_cast<unsigned long>(count[row]) << " points  area " << std::setw(10)
-              << std::setprecision(5) << area[row];
-        if (count[row] > 0.)
-          for (unsigned int d = 0; d < dim; ++d)
-            pcout << "  n"
-                  << "xyz"[d] << " " << std::fixed << std::setprecision(3) << std::setw(6)
-                  << lowest[row * dim + d] << " .. " << std::setw(6) << highest[row * dim + d]
-                  << std::defaultfloat;
-        pcout << '\n';
-      }
-    pcout << std::setprecision(6);
+    const std::string table =
+      piece_table(scene.particles, structure.boundary_pieces, scene.communicator);
+    pcout << table;
   }
 
 
