@@ -646,7 +646,8 @@ namespace GelMPM
     // The surface points' own residual terms, tested with w = e_k and q = 1: both lie in the
     // extended spaces (they reproduce constants), and the volume points' terms vanish for w =
     // e_k and are the change of solvent for q = 1. So the forces of all pieces balance and the
-    // inflows add up to the body's change of solvent to the Newton tolerance (doc/output.md).
+    // inflows add up to the body's change of solvent to the Newton tolerance
+    // (doc/architecture.md).
     std::vector<PieceBalance> balances(boundary_conditions.n_pieces());
     ScratchData               scratch;
     CopyData                  copy;

@@ -98,89 +98,103 @@ namespace GelMPM
   {
     gels = {base};
     regions.clear();
-    const double kT_over_nu = base.kT_over_nu();
     prm.enter_subsection("Material");
     for (const auto &name : names)
       {
-        const std::string path = "Material/" + name + "/";
         prm.enter_subsection(name);
-        Region region;
-        region.name                 = name;
-        region.selector_text        = dealii::Utilities::trim(prm.get("Selector"));
-        region.mesh_group           = dealii::Utilities::trim(prm.get("Mesh group"));
-        const std::string G_text    = prm.get("Shear modulus");
-        const std::string N_nu_text = prm.get("N nu");
-        double            G    = number_or(G_text, base.shear_modulus(), path + "Shear modulus");
-        double            N_nu = number_or(N_nu_text, base.N_nu(), path + "N nu");
-        const double      chi =
-          number_or(prm.get("Flory-Huggins chi"), base.chi(), path + "Flory-Huggins chi");
-        const double D =
-          number_or(prm.get("Diffusivity"), base.diffusivity(), path + "Diffusivity");
+        regions.push_back(parse_selection(prm, name));
+        gels.push_back(parse_gel(prm, name, base));
         prm.leave_subsection();
-
-        require(region.selector_text.empty() != region.mesh_group.empty(),
-                path + "Selector",
-                region.selector_text.empty() ? "and 'Mesh group' are both empty: the region "
-                                               "selects nothing"
-                                             : "and 'Mesh group' are both given",
-                "give one of them: an expression in x, y" + std::string(dim == 3 ? ", z" : "") +
-                  " or a physical group of the mesh");
-        require(G > 0., path + "Shear modulus", "must be positive", "give G > 0");
-        require(N_nu > 0., path + "N nu", "must be positive", "give N nu > 0");
-        require(D > 0., path + "Diffusivity", "must be positive", "give D > 0");
-        require(chi >= 0.,
-                path + "Flory-Huggins chi",
-                "is negative (" + text_of(chi) + "), outside the physical range chi >= 0",
-                "give 0 <= chi");
-        // One solvent and one temperature: k_BT/nu is the body's.
-        const bool G_given = !dealii::Utilities::trim(G_text).empty();
-        const bool N_given = !dealii::Utilities::trim(N_nu_text).empty();
-        if (G_given && !N_given)
-          N_nu = G / kT_over_nu;
-        else if (N_given && !G_given)
-          G = N_nu * kT_over_nu;
-        require(std::abs(G / N_nu - kT_over_nu) <= 1e-6 * kT_over_nu,
-                path + "Shear modulus",
-                "and 'N nu' give k_BT/nu = G/(N nu) = " + text_of(G / N_nu) +
-                  ", but the body's solvent has k_BT/nu = " + text_of(kT_over_nu) +
-                  " (section 'Material')",
-                "give only one of the two (the other follows: G = " + text_of(kT_over_nu) +
-                  " N nu)");
-        double lambda_0 = 0.;
-        try
-          {
-            lambda_0 = FloryRehnerGel<dim>::lambda_0_from_mu_0(base.mu_0(), chi, N_nu);
-          }
-        catch (const InputError &)
-          {
-            throw InputError(path + "Flory-Huggins chi",
-                             "and 'N nu' give a gel without a stress-free swollen state at the "
-                             "body's initial chemical potential mu_0/(k_BT) = " +
-                               text_of(base.mu_0()),
-                             "check the region's constants against the section 'Material''s "
-                             "initial state");
-          }
-        gels.emplace_back(G, chi, N_nu, D, lambda_0);
-
-        if (!region.selector_text.empty())
-          {
-            const std::string variables = dim == 2 ? "x,y" : "x,y,z";
-            region.selector             = std::make_unique<dealii::FunctionParser<dim>>();
-            try
-              {
-                QuietCerr quiet;
-                region.selector->initialize(variables, region.selector_text, {});
-              }
-            catch (...)
-              {
-                throw InputError(path + "Selector",
-                                 "'" + region.selector_text + "' cannot be parsed",
-                                 "write an expression in " + variables + ", e.g. 'y > 0.5'");
-              }
-          }
-        regions.push_back(std::move(region));
       }
     prm.leave_subsection();
+  }
+
+
+  template <int dim>
+  typename MaterialRegions<dim>::Region
+  MaterialRegions<dim>::parse_selection(dealii::ParameterHandler &prm, const std::string &name)
+  {
+    const std::string path = "Material/" + name + "/";
+    Region            region;
+    region.name          = name;
+    region.selector_text = dealii::Utilities::trim(prm.get("Selector"));
+    region.mesh_group    = dealii::Utilities::trim(prm.get("Mesh group"));
+    require(region.selector_text.empty() != region.mesh_group.empty(),
+            path + "Selector",
+            region.selector_text.empty() ? "and 'Mesh group' are both empty: the region "
+                                           "selects nothing"
+                                         : "and 'Mesh group' are both given",
+            "give one of them: an expression in x, y" + std::string(dim == 3 ? ", z" : "") +
+              " or a physical group of the mesh");
+    if (region.selector_text.empty())
+      return region;
+    const std::string variables = dim == 2 ? "x,y" : "x,y,z";
+    region.selector             = std::make_unique<dealii::FunctionParser<dim>>();
+    try
+      {
+        QuietCerr quiet;
+        region.selector->initialize(variables, region.selector_text, {});
+      }
+    catch (...)
+      {
+        throw InputError(path + "Selector",
+                         "'" + region.selector_text + "' cannot be parsed",
+                         "write an expression in " + variables + ", e.g. 'y > 0.5'");
+      }
+    return region;
+  }
+
+
+  template <int dim>
+  FloryRehnerGel<dim>
+  MaterialRegions<dim>::parse_gel(dealii::ParameterHandler  &prm,
+                                  const std::string         &name,
+                                  const FloryRehnerGel<dim> &base)
+  {
+    const std::string path       = "Material/" + name + "/";
+    const double      kT_over_nu = base.kT_over_nu();
+    const std::string G_text     = prm.get("Shear modulus");
+    const std::string N_nu_text  = prm.get("N nu");
+    double            G          = number_or(G_text, base.shear_modulus(), path + "Shear modulus");
+    double            N_nu       = number_or(N_nu_text, base.N_nu(), path + "N nu");
+    const double      chi =
+      number_or(prm.get("Flory-Huggins chi"), base.chi(), path + "Flory-Huggins chi");
+    const double D = number_or(prm.get("Diffusivity"), base.diffusivity(), path + "Diffusivity");
+    require(G > 0., path + "Shear modulus", "must be positive", "give G > 0");
+    require(N_nu > 0., path + "N nu", "must be positive", "give N nu > 0");
+    require(D > 0., path + "Diffusivity", "must be positive", "give D > 0");
+    require(chi >= 0.,
+            path + "Flory-Huggins chi",
+            "is negative (" + text_of(chi) + "), outside the physical range chi >= 0",
+            "give 0 <= chi");
+    // One solvent and one temperature: k_BT/nu is the body's.
+    const bool G_given = !dealii::Utilities::trim(G_text).empty();
+    const bool N_given = !dealii::Utilities::trim(N_nu_text).empty();
+    if (G_given && !N_given)
+      N_nu = G / kT_over_nu;
+    else if (N_given && !G_given)
+      G = N_nu * kT_over_nu;
+    require(std::abs(G / N_nu - kT_over_nu) <= 1e-6 * kT_over_nu,
+            path + "Shear modulus",
+            "and 'N nu' give k_BT/nu = G/(N nu) = " + text_of(G / N_nu) +
+              ", but the body's solvent has k_BT/nu = " + text_of(kT_over_nu) +
+              " (section 'Material')",
+            "give only one of the two (the other follows: G = " + text_of(kT_over_nu) + " N nu)");
+    try
+      {
+        // Every region starts stress-free at the body's mu_0, at its own stretch.
+        const double lambda_0 = FloryRehnerGel<dim>::lambda_0_from_mu_0(base.mu_0(), chi, N_nu);
+        return FloryRehnerGel<dim>(G, chi, N_nu, D, lambda_0);
+      }
+    catch (const InputError &)
+      {
+        throw InputError(path + "Flory-Huggins chi",
+                         "and 'N nu' give a gel without a stress-free swollen state at the "
+                         "body's initial chemical potential mu_0/(k_BT) = " +
+                           text_of(base.mu_0()),
+                         "check the region's constants against the section 'Material''s "
+                         "initial state");
+      }
   }
 
 

@@ -118,6 +118,16 @@ namespace GelMPM
       std::string                                  mesh_group;
       std::unique_ptr<dealii::FunctionParser<dim>> selector;
     };
+    /** The region's selector or mesh group, from its subsection (entered). */
+    static Region
+    parse_selection(dealii::ParameterHandler &prm, const std::string &name);
+
+    /** The region's gel, from its subsection (entered), empty entries from @p base. */
+    static FloryRehnerGel<dim>
+    parse_gel(dealii::ParameterHandler  &prm,
+              const std::string         &name,
+              const FloryRehnerGel<dim> &base);
+
     std::vector<FloryRehnerGel<dim>> gels = {FloryRehnerGel<dim>()};
     std::vector<Region>              regions; // regions[k] is region k + 1
     std::string                      base_name = "Material";
