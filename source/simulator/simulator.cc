@@ -933,7 +933,8 @@ namespace GelMPM
             if (mode_output && result.mode.size() == scene.spaces->n_u_dofs())
               record_mode(result.mode);
             // Leave the unstable branch at the bracketed critical time (doc/method.md).
-            perturb = verdict == StepControl::Verdict::onset &&
+            ended_at_onset = verdict == StepControl::Verdict::onset && stability.end_at_onset;
+            perturb        = verdict == StepControl::Verdict::onset && !ended_at_onset &&
                       stability.perturbation_amplitude > 0. &&
                       result.mode.size() == scene.spaces->n_u_dofs();
           }
@@ -1008,7 +1009,7 @@ namespace GelMPM
             (std::floor(time * (1. + relative_time_tolerance) / output_settings.interval_time) +
              1.) *
             output_settings.interval_time;
-        if (control->at_stop_time() || interval_due || control->finished())
+        if (control->at_stop_time() || interval_due || control->finished() || ended_at_onset)
           write_output();
         return StepOutcome::accepted;
       }
@@ -1069,6 +1070,13 @@ namespace GelMPM
                   << "; results up to there are in " << output_settings.directory << std::endl;
             write_output();
             return 1;
+          }
+        if (ended_at_onset)
+          {
+            pcout << "gelmpm: ended at the bracketed loss of stability ('Stability/End at "
+                     "onset')"
+                  << std::endl;
+            return 0;
           }
         if (checkpoint_due())
           write_checkpoint();

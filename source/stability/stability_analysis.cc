@@ -98,6 +98,13 @@ namespace GelMPM
       "The sign of the perturbation: the control point that the critical mode moves "
       "most along this direction moves forwards (e.g. '1, 0' sways a column "
       "towards +x). One component per dimension; a third one is ignored in 2D.");
+    prm.declare_entry("End at onset",
+                      "false",
+                      dealii::Patterns::Bool(),
+                      "With 'Inertia' and a 'Bisection tolerance': end the run (exit status 0, "
+                      "the state at the bracket's unstable end written) once the first loss of "
+                      "stability is bracketed. For onset studies, which need nothing after it "
+                      "(contrib/benchmarks/column_onset_convergence.py).");
     prm.declare_entry("Condition number",
                       "false",
                       dealii::Patterns::Bool(),
@@ -122,6 +129,7 @@ namespace GelMPM
     signature_control      = prm.get_bool("Signature step control");
     drained_onset          = prm.get("Onset criterion") == "drained";
     perturbation_amplitude = prm.get_double("Perturbation amplitude");
+    end_at_onset           = prm.get_bool("End at onset");
     perturbation_direction.clear();
     for (const auto &item : dealii::Utilities::split_string_list(prm.get("Perturbation direction")))
       perturbation_direction.push_back(dealii::Utilities::string_to_double(item));
@@ -154,6 +162,10 @@ namespace GelMPM
             "Stability/Bisection tolerance",
             "needs the signature of the tangent, but 'Stability/Inertia = false'",
             "set 'Inertia = true' or the tolerance to 0");
+    require(!end_at_onset || inertia,
+            "Stability/End at onset",
+            "needs the signature of the tangent, but 'Stability/Inertia = false'",
+            "set 'Inertia = true' or 'End at onset = false'");
     require(!write_mode || n_eigenvalues > 0,
             "Stability/Write mode",
             "needs the eigenvector of the smallest Schur eigenvalue, but 'Schur eigenvalues' is 0",

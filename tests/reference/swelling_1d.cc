@@ -44,10 +44,10 @@ int
 main()
 {
   std::cout << std::boolalpha;
-  const ConstrainedSwelling1D  reference(parameters(100));
-  GelMPM::FloryRehnerGel<2>    gel; // Table 1 defaults: chi 0.1, N nu 7.299e-3, lambda_0 1.2801
-  const double                 l0 = gel.lambda_0();
-  double                       worst_stress = 0., worst_derivative = 0.;
+  const ConstrainedSwelling1D reference(parameters(100));
+  GelMPM::FloryRehnerGel<2>   gel; // Table 1 defaults: chi 0.1, N nu 7.299e-3, lambda_0 1.2801
+  const double                l0           = gel.lambda_0();
+  double                      worst_stress = 0., worst_derivative = 0.;
   for (const double lambda : {1.0, 1.1, 1.5, 2.0, 2.72722, 3.5})
     {
       dealii::Tensor<2, 2> F_p;
@@ -58,14 +58,16 @@ main()
                                          F_p);
       worst_stress     = std::max(worst_stress, std::abs(state.P_n[1][1]));
 
-      const double h     = 1e-6 * lambda;
-      const double dmu   = (reference.chemical_potential(lambda + h) -
-                          reference.chemical_potential(lambda - h)) /
-                         (2. * h);
-      const double dk    = (reference.mobility(lambda + h) - reference.mobility(lambda - h)) / (2. * h);
-      worst_derivative   = std::max({worst_derivative,
-                                   std::abs(dmu / reference.chemical_potential_derivative(lambda) - 1.),
-                                   std::abs(dk / reference.mobility_derivative(lambda) - 1.)});
+      const double h = 1e-6 * lambda;
+      const double dmu =
+        (reference.chemical_potential(lambda + h) - reference.chemical_potential(lambda - h)) /
+        (2. * h);
+      const double dk =
+        (reference.mobility(lambda + h) - reference.mobility(lambda - h)) / (2. * h);
+      worst_derivative =
+        std::max({worst_derivative,
+                  std::abs(dmu / reference.chemical_potential_derivative(lambda) - 1.),
+                  std::abs(dk / reference.mobility_derivative(lambda) - 1.)});
     }
   std::cout << "FloryRehnerGel P_22 at the reference's mu(lambda) below 1e-12 G: "
             << (worst_stress < 1e-12) << std::endl;
@@ -92,8 +94,8 @@ main()
 
   // Convergence at t = 0.5 against n = 800.
   {
-    const double fine = thickness_change_at(800, 0.5);
-    double       previous = 0.;
+    const double fine      = thickness_change_at(800, 0.5);
+    double       previous  = 0.;
     bool         orders_ok = true;
     for (const unsigned int n : {50u, 100u, 200u, 400u})
       {

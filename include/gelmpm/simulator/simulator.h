@@ -270,6 +270,7 @@ namespace GelMPM
     std::unique_ptr<RunProgress>         progress;
     bool                                 announced_bracketing        = false;
     bool                                 inexact_extrapolation_noted = false;
+    bool                                 ended_at_onset              = false; // End at onset
     Inertia                              last_stable_inertia;
     double                               last_eigenvalue = 0.;
     std::vector<double>                  mu_coefficients; // per mu control point

@@ -54,6 +54,9 @@ namespace GelMPM
     double perturbation_amplitude = 0.;
     /** The perturbation is signed so that it moves forwards along this direction. */
     std::vector<double> perturbation_direction;
+    /** End the run once the first loss of stability is bracketed (an onset study needs no
+     * more). */
+    bool end_at_onset = false;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
