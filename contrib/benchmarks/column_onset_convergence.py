@@ -32,6 +32,8 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 TOP = os.path.dirname(os.path.dirname(HERE))
+# Differences below this (tau_d) are at the resolution of the brackets (1e-4 wide by default).
+RESOLUTION = 2e-4
 FIELDS = ["model", "h", "points", "dt", "unknowns", "t_stable", "t_unstable", "wall"]
 BRACKET = re.compile(r"loss of stability between t/tau_d = ([0-9.eE+-]+) (?:\(stable\) )?and "
                      r"([0-9.eE+-]+)")
@@ -110,14 +112,21 @@ def richardson(values, ratio=2.0):
 
 
 def limit(table, hs, dts):
-    """The dt-extrapolated onsets per h (at three steps), then extrapolated in h."""
+    """The dt-extrapolated onsets per h (at the three smallest steps), then extrapolated in h
+    (three grids). Where a sequence has stopped changing (its differences at the bisection's
+    resolution, or not monotone), its finest value is the limit."""
     per_h = []
     for h in hs:
         vals = [table.get((h, dt)) for dt in dts[-3:]]
-        if None in vals:
+        if len(dts) < 3 or None in vals:
             return math.nan
-        per_h.append(richardson(vals)[0])
-    return richardson(per_h[-3:])[0] if len(per_h) >= 3 else math.nan
+        extrapolated = richardson(vals)[0]
+        per_h.append(vals[-1] if math.isnan(extrapolated) else extrapolated)
+    if len(per_h) < 3:
+        return per_h[-1] if len(per_h) == 2 and abs(per_h[-1] - per_h[-2]) < RESOLUTION \
+            else math.nan
+    extrapolated = richardson(per_h[-3:])[0]
+    return per_h[-1] if math.isnan(extrapolated) else extrapolated
 
 
 def report(rows, model, points):
@@ -148,6 +157,8 @@ def report(rows, model, points):
     best = limit(table, hs, dts)
     spread = [abs(best - x) for x in (limit(table, hs[:-1], dts), limit(table, hs, dts[:-1]))
               if not math.isnan(x)]
+    if spread:
+        spread.append(RESOLUTION)
     lines += ["", f"Limit h, dt -> 0: {best:.5f} tau_d"
               + (f" +- {max(spread):.5f}" if spread else " (no uncertainty: too few runs)"), ""]
     return "\n".join(lines)

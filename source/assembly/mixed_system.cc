@@ -1414,13 +1414,14 @@ namespace GelMPM
   template <int dim>
   typename MixedSystem<dim>::StepError
   MixedSystem<dim>::local_error_estimate(const dealii::Vector<double> &solution,
-                                         const double                  ratio) const
+                                         const double                  ratio,
+                                         const bool                    largest) const
   {
     // Milne's device for backward Euler after a step of ratio r = dt / dt_last: the corrector
     // misses x(t + dt) by dt^2 x''/2 and the linear predictor x_n + r (x_n - x_{n-1}) by
     // -dt (dt + dt_last) x''/2, so the local error is r / (2 r + 1) times their difference.
     const double weight = ratio / (2. * ratio + 1.);
-    double       volume = 0., u_sum = 0., mu_sum = 0.;
+    double       volume = 0., u_sum = 0., mu_sum = 0., u_max = 0., mu_max = 0.;
     for (const auto &r : points)
       if (r.kind == PointKind::volume)
         {
@@ -1429,10 +1430,16 @@ namespace GelMPM
           double         mu;
           fields_at_point(r, solution, du, delta_F, mu);
           const double mu_difference = (mu - r.mu_n) - ratio * r.dmu_last;
+          const double u_square      = (du - ratio * r.du_last).norm_square();
           volume += r.measure;
-          u_sum += r.measure * (du - ratio * r.du_last).norm_square();
+          u_sum += r.measure * u_square;
           mu_sum += r.measure * mu_difference * mu_difference;
+          u_max  = std::max(u_max, u_square);
+          mu_max = std::max(mu_max, mu_difference * mu_difference);
         }
+    if (largest)
+      return {weight * std::sqrt(dealii::Utilities::MPI::max(u_max, communicator)),
+              weight * std::sqrt(dealii::Utilities::MPI::max(mu_max, communicator))};
     double sums[3] = {volume, u_sum, mu_sum};
     Collective::sum_in_place(communicator, sums, 3);
     volume = sums[0];

@@ -768,8 +768,9 @@ namespace GelMPM
     double local_error = 0.;
     if (tolerance_rule)
       {
-        const auto error = scene.system->local_error_estimate(solution, dt / last_dt);
-        local_error      = std::max(error.displacement / time_stepping.characteristic_length,
+        const auto error =
+          scene.system->local_error_estimate(solution, dt / last_dt, time_stepping.error_largest);
+        local_error = std::max(error.displacement / time_stepping.characteristic_length,
                                error.chemical_potential);
       }
     const auto excess = control->error_excess(difference, local_error, dt);

@@ -32,6 +32,18 @@ namespace GelMPM
         return d1 * d2 < 0. && d3 * d4 < 0.;
       }
 
+      /** The distance from @p x to the segment from @p a to @p b. */
+      double
+      distance_to_segment(const dealii::Point<2> &x,
+                          const dealii::Point<2> &a,
+                          const dealii::Point<2> &b)
+      {
+        const dealii::Tensor<1, 2> ab     = b - a;
+        const double               length = ab.norm_square();
+        const double along = length > 0. ? std::clamp((x - a) * ab / length, 0., 1.) : 0.;
+        return x.distance(a + along * ab);
+      }
+
       /**
        * The walk of order_along_surface() over points sorted by X_0: which point may follow
        * which, and the nearest one that may.
@@ -281,6 +293,24 @@ namespace GelMPM
         for (unsigned int i = polyline.curve_begin[c]; i < polyline.curve_begin[c + 1]; ++i)
           curve_of[i] = c;
       const auto &s = polyline.s_0;
+      // How far apart two places are along the surface is measured on the current surface: a
+      // crease's flanks were close along the initial surface when the surface layer has since
+      // swollen or stretched (a slit of depth d has 2d of current surface between its flanks).
+      std::vector<double> s_now(n, 0.), length_now(polyline.n_curves(), 0.);
+      for (unsigned int c = 0; c < polyline.n_curves(); ++c)
+        {
+          const unsigned int begin = polyline.curve_begin[c], end = polyline.curve_begin[c + 1];
+          for (unsigned int i = begin + 1; i < end; ++i)
+            s_now[i] = s_now[i - 1] + polyline.points[i - 1].x.distance(polyline.points[i].x);
+          length_now[c] = end > begin ? s_now[end - 1] : 0.;
+          if (polyline.closed[c] && end > begin)
+            length_now[c] += polyline.points[end - 1].x.distance(polyline.points[begin].x);
+        }
+      const auto current_arc = [&](const unsigned int i, const unsigned int j) {
+        const double direct = std::abs(s_now[j] - s_now[i]);
+        return polyline.closed[curve_of[i]] ? std::min(direct, length_now[curve_of[i]] - direct)
+                                            : direct;
+      };
 
       // The stretch of surface between two places [s_i, s_j] (s_i <= s_j, both in the list's
       // order) and its length; on a closed curve the shorter way round, which may run past its
@@ -294,21 +324,6 @@ namespace GelMPM
       };
 
       std::vector<std::pair<double, double>> folded;
-      for (unsigned int i = 0; i < n; ++i)
-        for (unsigned int j = i + 1; j < n; ++j)
-          {
-            if (!(polyline.points[i].x.distance(polyline.points[j].x) < approach_distance))
-              continue;
-            if (curve_of[i] != curve_of[j])
-              folded.emplace_back(s[i], s[j]);
-            else
-              {
-                const auto [interval, length] = stretch(s[i], s[j], curve_of[i]);
-                if (length > arc_length)
-                  folded.push_back(interval);
-              }
-          }
-
       // Segments (first point, second point, s at each end): a closed curve's last segment
       // returns to its first point, at s_0 of its first point plus its length.
       struct Segment
@@ -325,6 +340,26 @@ namespace GelMPM
           if (polyline.closed[c])
             segments.push_back({end - 1, begin, s[end - 1], s[begin] + polyline.length_0[c]});
         }
+      // A point close to a segment of another curve, or of a stretch of its own curve far from it
+      // along the surface. Point to segment, not point to point: the points on the two flanks of a
+      // closed crease need not face each other.
+      for (unsigned int i = 0; i < n; ++i)
+        for (const auto &segment : segments)
+          {
+            if (segment.a == i || segment.b == i ||
+                !(distance_to_segment(polyline.points[i].x,
+                                      polyline.points[segment.a].x,
+                                      polyline.points[segment.b].x) < approach_distance))
+              continue;
+            const unsigned int j = segment.a;
+            if (curve_of[i] != curve_of[j])
+              folded.emplace_back(std::min(s[i], s[j]), std::max(s[i], s[j]));
+            else if (current_arc(i, segment.a) > arc_length &&
+                     current_arc(i, segment.b) > arc_length)
+              folded.push_back(
+                stretch(std::min(s[i], s[j]), std::max(s[i], s[j]), curve_of[i]).first);
+          }
+
       for (unsigned int k = 0; k < segments.size(); ++k)
         for (unsigned int l = k + 1; l < segments.size(); ++l)
           {

@@ -82,6 +82,13 @@ namespace GelMPM
       "set by hand, e.g. over a loading ramp); combine it with 'Growth factor' = 2. "
       "Material point scenes only; the "
       "body-fitted peer ignores it. 0: off.");
+    prm.declare_entry("Error norm",
+                      "rms",
+                      Patterns::Selection("rms|max"),
+                      "How 'Tolerance' measures the local error over the volume points: 'rms', the "
+                      "volume-weighted root mean square (errors spread over the body), or 'max', "
+                      "the largest value (errors confined to a boundary layer, e.g. the diffusion "
+                      "front that sets a buckling onset: doc/column_buckling.md).");
     prm.declare_entry("Step caps",
                       "",
                       Patterns::Anything(),
@@ -118,6 +125,7 @@ namespace GelMPM
     largest_increment           = prm.get_double("Largest increment");
     displacement_tolerance      = prm.get_double("Displacement tolerance");
     tolerance                   = prm.get_double("Tolerance");
+    error_largest               = prm.get("Error norm") == "max";
     const std::string caps_text = prm.get("Step caps");
     const std::string stops     = prm.get("Stop at times");
     prm.leave_subsection();

@@ -190,10 +190,13 @@ namespace GelMPM
      * The local error of the backward Euler step that ended in @p solution, estimated from its
      * difference to the linear predictor (the points' changes in the last accepted step scaled
      * by @p ratio = dt / dt_last): r / (2 r + 1) times that difference (doc/method.md, "Error
-     * control").
+     * control"), its volume-weighted root mean square over the volume points or, with
+     * @p largest, its largest value.
      */
     StepError
-    local_error_estimate(const dealii::Vector<double> &solution, const double ratio) const;
+    local_error_estimate(const dealii::Vector<double> &solution,
+                         const double                  ratio,
+                         const bool                    largest = false) const;
 
     /**
      * The displacement coefficients (n_u_dofs(), interleaved as the unknowns) closest to

@@ -42,7 +42,10 @@ namespace GelMPM
      * scene's length unit; 0: off. */
     double displacement_tolerance = 0.;
     /** Bound on the run's accumulated local error (units L and k_BT); 0: off. */
-    double                                 tolerance = 0.;
+    double tolerance = 0.;
+    /** Measure the local error by its largest value over the volume points (instead of the
+     * root mean square): for errors confined to a boundary layer. */
+    bool                                   error_largest = false;
     std::vector<std::pair<double, double>> caps; // (until time, largest step), sorted
     std::vector<double>                    stop_times;
 
