@@ -100,8 +100,9 @@ namespace GelMPM
         const auto surface             = lower_surface();
         record.curvature               = fitted_curvature(surface);
         // The last point is the lower corner of the free end.
-        record.tip_deflection         = surface.back()[1];
-        record.relative_volume_change = system_->deformation_summary().deformed_volume / volume - 1.;
+        record.tip_deflection = surface.back()[1];
+        record.relative_volume_change =
+          system_->deformation_summary().deformed_volume / volume - 1.;
         on_step(record);
       });
   }
@@ -145,8 +146,8 @@ namespace GelMPM
     for (const auto &point : points)
       {
         const dealii::Point<2> p(point - centroid);
-        const double row[3] = {2. * p[0], 2. * p[1], 1.};
-        const double r2     = p.square();
+        const double           row[3] = {2. * p[0], 2. * p[1], 1.};
+        const double           r2     = p.square();
         for (unsigned int i = 0; i < 3; ++i)
           {
             rhs(i) += row[i] * r2;

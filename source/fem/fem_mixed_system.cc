@@ -537,15 +537,21 @@ namespace GelMPM
     if (std::find(ids.begin(), ids.end(), id) == ids.end())
       throw std::invalid_argument("FemMixedSystem: no boundary with id " + std::to_string(id));
     Tensor<1, dim> force;
+    const auto     held = displacement_constraints.find(id);
+    if (held == displacement_constraints.end())
+      return force;
+    // Only the components this boundary holds: at a node it shares with another boundary, a
+    // component the other one holds carries that boundary's reaction.
     for (unsigned int k = 0; k < dim; ++k)
-      {
-        std::vector<bool> mask(dim + 1, false);
-        mask[k] = true;
-        for (const auto i : dealii::DoFTools::extract_boundary_dofs(dof_handler_,
-                                                                    dealii::ComponentMask(mask),
-                                                                    {id}))
-          force[k] += unconstrained_residual_(i);
-      }
+      if (held->second[k])
+        {
+          std::vector<bool> mask(dim + 1, false);
+          mask[k] = true;
+          for (const auto i : dealii::DoFTools::extract_boundary_dofs(dof_handler_,
+                                                                      dealii::ComponentMask(mask),
+                                                                      {id}))
+            force[k] += unconstrained_residual_(i);
+        }
     return force;
   }
 

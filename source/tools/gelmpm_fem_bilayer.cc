@@ -68,18 +68,16 @@ main(int argc, char **argv)
       dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
 
       // The scene's stepping: steps of at most 0.05 tau_d during the ramp, 0.5 after it.
-      const std::string ramp = GelMPM::entry_value(parameters.ramp_time);
-      const auto        settings =
-        GelMPM::fem_run_settings({{"Characteristic length",
-                                   GelMPM::entry_value(parameters.thickness)},
-                                  {"Initial step", "1e-3"},
-                                  {"End time", GelMPM::entry_value(end_time)},
-                                  {"Step caps",
-                                   ramp + ": 0.05, " +
-                                     GelMPM::entry_value(std::max(end_time, parameters.ramp_time)) +
-                                     ": 0.5"}},
-                                 {{"Tolerance", GelMPM::entry_value(tolerance)},
-                                  {"Maximum iterations", std::to_string(max_iterations)}});
+      const std::string ramp     = GelMPM::entry_value(parameters.ramp_time);
+      const auto        settings = GelMPM::fem_run_settings(
+        {{"Characteristic length", GelMPM::entry_value(parameters.thickness)},
+                {"Initial step", "1e-3"},
+                {"End time", GelMPM::entry_value(end_time)},
+                {"Step caps",
+                 ramp + ": 0.05, " + GelMPM::entry_value(std::max(end_time, parameters.ramp_time)) +
+                   ": 0.5"}},
+        {{"Tolerance", GelMPM::entry_value(tolerance)},
+                {"Maximum iterations", std::to_string(max_iterations)}});
       const GelMPM::LinearSolver linear_solver;
 
       const auto         start = std::chrono::steady_clock::now();
@@ -89,9 +87,9 @@ main(int argc, char **argv)
       std::cout << "gelmpm-fem-bilayer: " << 10 * parameters.cells << " x " << parameters.cells
                 << " cells, Q" << parameters.u_degree << "-Q" << parameters.u_degree - 1 << ", "
                 << system.n_dofs() << " DoFs; lambda_0 " << materials[0].lambda_0()
-                << " (active, chi " << materials[0].chi() << "), "
-                << materials[1].lambda_0() << " (passive, chi " << materials[1].chi()
-                << "), mu_0 " << materials[0].mu_0() << std::endl;
+                << " (active, chi " << materials[0].chi() << "), " << materials[1].lambda_0()
+                << " (passive, chi " << materials[1].chi() << "), mu_0 " << materials[0].mu_0()
+                << std::endl;
 
       std::filesystem::create_directories(directory);
       const std::vector<std::string> columns = {"step",
@@ -141,11 +139,10 @@ main(int argc, char **argv)
                       if (!quiet)
                         std::cout << "  step " << std::setw(4) << s.number
                                   << "  t/tau_d = " << std::setw(10) << std::setprecision(5)
-                                  << s.t_over_tau_d << "  dt = " << std::setw(9)
-                                  << s.dt_over_tau_d << "  Newton " << std::setw(2)
-                                  << s.newton_iterations << "  curvature " << std::setw(10)
-                                  << s.curvature << "  tip u_y " << s.tip_deflection
-                                  << std::endl;
+                                  << s.t_over_tau_d << "  dt = " << std::setw(9) << s.dt_over_tau_d
+                                  << "  Newton " << std::setw(2) << s.newton_iterations
+                                  << "  curvature " << std::setw(10) << s.curvature << "  tip u_y "
+                                  << s.tip_deflection << std::endl;
                     });
 
       // The lower surface of the last converged state: current x, y (as the MPM's
@@ -171,8 +168,7 @@ main(int argc, char **argv)
         {
           std::cerr << "gelmpm-fem-bilayer: " << result.failure << "\n"
                     << "  kept: " << n_steps << " converged steps to t/tau_d = " << last_time
-                    << " in " << directory << " (statistics.csv, surface_bottom.csv)"
-                    << std::endl;
+                    << " in " << directory << " (statistics.csv, surface_bottom.csv)" << std::endl;
           return 1;
         }
       std::cout << "gelmpm-fem-bilayer: reached t/tau_d = " << end_time << " in " << n_steps

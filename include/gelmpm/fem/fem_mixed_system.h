@@ -179,12 +179,13 @@ namespace GelMPM
     /**
      * The force on the body from the displacement conditions of boundary @p id (per unit
      * thickness in 2D): the consistent reaction, i.e. the displacement rows of the residual
-     * assembled last, before the constraints zero them, summed over the displacement DoFs of the
-     * boundary per component. After a converged step (the residual at the converged state; the
-     * free rows are zero to the Newton tolerance) its constrained components are the force that
-     * holds the boundary there, e.g. the punch's on the gel; a traction-free component is zero to
-     * the tolerance. Same sign as the MPM's `<piece>_force_*` (doc/statistics.md): the force
-     * the boundary exerts on the body. Throws std::invalid_argument for an unknown boundary.
+     * assembled last, before the constraints zero them, summed per component over the DoFs of
+     * the boundary's faces, for the components the boundary holds (constrain_displacement; the
+     * others are zero: no condition, no force, and at a node shared with another boundary they
+     * would carry that one's reaction). After a converged step (the residual at the converged
+     * state) this is the force that holds the boundary where it is, e.g. the punch's on the gel:
+     * the same sign as the MPM's `<piece>_force_*` (doc/statistics.md), the force the boundary
+     * exerts on the body. Throws std::invalid_argument for an unknown boundary.
      */
     dealii::Tensor<1, dim>
     boundary_force(const dealii::types::boundary_id id) const;
