@@ -110,6 +110,7 @@ namespace GelMPM
         record.punch_displacement      = punch_displacement(step.t_over_tau_d);
         record.deformation             = system_->deformation_summary();
         record.relative_volume_change  = record.deformation.deformed_volume / volume - 1.;
+        record.punch_force             = system_->boundary_force(punch);
         on_step(record);
       });
   }

@@ -14,6 +14,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -23,12 +24,24 @@ namespace GelMPM
 {
   using dealii::Tensor;
 
+  namespace
+  {
+    template <int dim>
+    const FloryRehnerGel<dim> &
+    first_material(const std::vector<FloryRehnerGel<dim>> &materials)
+    {
+      if (materials.empty())
+        throw std::invalid_argument("FemMixedSystem: no material given");
+      return materials.front();
+    }
+  } // namespace
+
   template <int dim>
   FemMixedSystem<dim>::FemMixedSystem(const FloryRehnerGel<dim>        &material,
                                       const dealii::Triangulation<dim> &triangulation,
                                       const unsigned int                u_degree,
                                       const Formulation                 formulation)
-    : material(material)
+    : materials{&material}
     , triangulation(triangulation)
     , formulation(formulation)
     , fe(dealii::FE_Q<dim>(u_degree < 2 ? 2 : u_degree),
@@ -41,6 +54,43 @@ namespace GelMPM
       throw std::invalid_argument("FemMixedSystem: the displacement degree must be at least 2 "
                                   "(Taylor-Hood Q_k^dim - Q_{k-1}), not " +
                                   std::to_string(u_degree));
+  }
+
+
+  template <int dim>
+  FemMixedSystem<dim>::FemMixedSystem(const std::vector<FloryRehnerGel<dim>> &materials,
+                                      const dealii::Triangulation<dim>       &triangulation,
+                                      const unsigned int                      u_degree,
+                                      const Formulation                       formulation)
+    : FemMixedSystem(first_material(materials), triangulation, u_degree, formulation)
+  {
+    this->materials.clear();
+    const FloryRehnerGel<dim> &first = materials.front();
+    for (unsigned int id = 0; id < materials.size(); ++id)
+      {
+        const FloryRehnerGel<dim> &gel = materials[id];
+        if (std::abs(gel.kT_over_nu() - first.kT_over_nu()) > 1e-12 * first.kT_over_nu())
+          throw std::invalid_argument(
+            "FemMixedSystem: the gel of material_id " + std::to_string(id) +
+            " has k_BT/nu = " + std::to_string(gel.kT_over_nu()) + ", that of material_id 0 " +
+            std::to_string(first.kT_over_nu()) + ": all gels share one solvent");
+        if (std::abs(gel.mu_0() - first.mu_0()) > 1e-9 * std::max(1., std::abs(first.mu_0())))
+          throw std::invalid_argument(
+            "FemMixedSystem: the gel of material_id " + std::to_string(id) +
+            " starts at mu_0 = " + std::to_string(gel.mu_0()) + ", that of material_id 0 at " +
+            std::to_string(first.mu_0()) +
+            ": all gels start in equilibrium with one chemical potential (give each its "
+            "lambda_0 from eq. (22), FloryRehnerGel::lambda_0_from_mu_0)");
+        this->materials.push_back(&gel);
+      }
+  }
+
+
+  template <int dim>
+  const FloryRehnerGel<dim> &
+  FemMixedSystem<dim>::material_of(const dealii::CellAccessor<dim, dim> &cell) const
+  {
+    return *materials[materials.size() == 1 ? 0 : cell.material_id()];
   }
 
 
@@ -122,6 +172,16 @@ namespace GelMPM
   void
   FemMixedSystem<dim>::setup()
   {
+    if (materials.size() > 1)
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (cell->material_id() >= materials.size())
+          {
+            std::ostringstream message;
+            message << "FemMixedSystem: the cell at (" << cell->center() << ") has material_id "
+                    << cell->material_id() << ", but only " << materials.size()
+                    << " gels are given";
+            throw std::invalid_argument(message.str());
+          }
     const auto ids = triangulation.get_boundary_ids();
     for (const auto &c : displacement_constraints)
       if (std::find(ids.begin(), ids.end(), c.first) == ids.end())
@@ -244,10 +304,12 @@ namespace GelMPM
     pattern.copy_from(dsp);
     matrix_.reinit(pattern);
     residual_.reinit(dof_handler_.n_dofs());
+    unconstrained_residual_.reinit(dof_handler_.n_dofs());
 
+    // One mu_0 for all gels (checked by the constructor).
     state_.reinit(dof_handler_.n_dofs());
     for (unsigned int i = n_u_dofs_; i < state_.size(); ++i)
-      state_(i) = material.mu_0();
+      state_(i) = materials.front()->mu_0();
   }
 
 
@@ -299,16 +361,18 @@ namespace GelMPM
     for (unsigned int i = 0; i < n_dofs_cell; ++i)
       component[i] = fe.system_to_component_index(i).first;
 
-    const double         kTnu = material.kT_over_nu();
-    const Tensor<2, dim> I    = dealii::unit_symmetric_tensor<dim>();
-    const Tensor<2, dim> F_0  = material.lambda_0() * I;
+    const Tensor<2, dim> I = dealii::unit_symmetric_tensor<dim>();
 
     if (with_matrix)
       matrix_ = 0.;
-    residual_ = 0.;
+    residual_               = 0.;
+    unconstrained_residual_ = 0.;
 
     for (const auto &cell : dof_handler_.active_cell_iterators())
       {
+        const FloryRehnerGel<dim> &material = material_of(*cell);
+        const double               kTnu     = material.kT_over_nu();
+        const Tensor<2, dim>       F_0      = material.lambda_0() * I;
         fe_values.reinit(cell);
         cell->get_dof_indices(dofs);
         fe_values[u_extractor].get_function_gradients(solution, grad_du);
@@ -400,6 +464,8 @@ namespace GelMPM
               }
           }
 
+        for (unsigned int i = 0; i < n_dofs_cell; ++i)
+          unconstrained_residual_(dofs[i]) += cell_residual(i);
         if (with_matrix)
           zero_constraints.distribute_local_to_global(cell_matrix,
                                                       cell_residual,
@@ -460,6 +526,33 @@ namespace GelMPM
       state_(i) += solution(i);
     for (unsigned int i = n_u_dofs_; i < state_.size(); ++i)
       state_(i) = solution(i);
+  }
+
+
+  template <int dim>
+  Tensor<1, dim>
+  FemMixedSystem<dim>::boundary_force(const dealii::types::boundary_id id) const
+  {
+    const auto ids = triangulation.get_boundary_ids();
+    if (std::find(ids.begin(), ids.end(), id) == ids.end())
+      throw std::invalid_argument("FemMixedSystem: no boundary with id " + std::to_string(id));
+    Tensor<1, dim> force;
+    const auto     held = displacement_constraints.find(id);
+    if (held == displacement_constraints.end())
+      return force;
+    // Only the components this boundary holds: at a node it shares with another boundary, a
+    // component the other one holds carries that boundary's reaction.
+    for (unsigned int k = 0; k < dim; ++k)
+      if (held->second[k])
+        {
+          std::vector<bool> mask(dim + 1, false);
+          mask[k] = true;
+          for (const auto i : dealii::DoFTools::extract_boundary_dofs(dof_handler_,
+                                                                      dealii::ComponentMask(mask),
+                                                                      {id}))
+            force[k] += unconstrained_residual_(i);
+        }
+    return force;
   }
 
 

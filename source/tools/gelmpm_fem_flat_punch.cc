@@ -1,8 +1,9 @@
 // gelmpm-fem-flat-punch: flat punch indentation of a swollen gel (paper §4.2, prm/flat_punch.prm)
 // with the body-fitted finite-element peer of the MPM (FemMixedSystem: Taylor-Hood on a conforming
 // mesh of the initial configuration, same equations, material, Newton test and time stepping;
-// doc/fem_peer.md). Writes statistics.csv (one row per converged step, with the mesh distortion)
-// and the top surface (top_profile-NN.csv) at the stop times and at the end of the run.
+// doc/fem_peer.md). Writes statistics.csv (one row per converged step, with the punch force and
+// the mesh distortion) and the top surface (top_profile-NN.csv) at the stop times and at the end of
+// the run.
 #include <gelmpm/core/parameters.h>
 #include <gelmpm/fem/fem_flat_punch.h>
 #include <gelmpm/io/statistics_file.h>
@@ -128,6 +129,8 @@ main(int argc, char **argv)
                                                 "residual_u",
                                                 "residual_mu",
                                                 "punch_displacement",
+                                                "punch_force_x",
+                                                "punch_force_y",
                                                 "min_det_F",
                                                 "max_stretch_ratio",
                                                 "relative_volume_change",
@@ -170,6 +173,8 @@ main(int argc, char **argv)
           statistics.set("residual_u", s.residual_u);
           statistics.set("residual_mu", s.residual_mu);
           statistics.set("punch_displacement", s.punch_displacement);
+          statistics.set("punch_force_x", s.punch_force[0]);
+          statistics.set("punch_force_y", s.punch_force[1]);
           statistics.set("min_det_F", s.deformation.min_det_F);
           statistics.set("max_stretch_ratio", s.deformation.max_stretch_ratio);
           statistics.set("relative_volume_change", s.relative_volume_change);
@@ -182,8 +187,9 @@ main(int argc, char **argv)
             std::cout << "  step " << std::setw(5) << s.number << "  t/tau_d = " << std::setw(11)
                       << std::setprecision(5) << s.t_over_tau_d << "  dt = " << std::setw(10)
                       << s.dt_over_tau_d << "  Newton " << std::setw(2) << s.newton_iterations
-                      << "  punch " << std::setw(9) << s.punch_displacement << "  min det F "
-                      << std::setw(9) << s.deformation.min_det_F << "  max stretch ratio "
+                      << "  punch " << std::setw(9) << s.punch_displacement << "  force "
+                      << std::setw(10) << s.punch_force[1] << "  min det F " << std::setw(9)
+                      << s.deformation.min_det_F << "  max stretch ratio "
                       << s.deformation.max_stretch_ratio << std::endl;
         });
       // The end state (or the last converged one) unless a stop time already wrote it.

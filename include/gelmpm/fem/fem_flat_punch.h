@@ -54,6 +54,10 @@ namespace GelMPM
       /** Volume change int (det F_n - 1) dV_0 over |Omega_0|: the solvent taken up (> 0) or
        * squeezed out (< 0); 0 for an undrained (incompressible) response. */
       double relative_volume_change = 0.;
+      /** The force of the punch on the gel (per unit thickness, in G H; y < 0 while it pushes
+       * down): the consistent reaction at the held punch DoFs (FemMixedSystem::boundary_force),
+       * the MPM's `punch_force_x`, `punch_force_y` of prm/flat_punch.prm. */
+      dealii::Tensor<1, 2> punch_force;
     };
 
     /** Boundary ids of the mesh. */

@@ -8,6 +8,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/grid/tria.h>
+#include <deal.II/grid/tria_accessor.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
@@ -48,6 +49,11 @@ namespace GelMPM
    * pointwise, the two give the same residual and tangent up to round-off; both are kept so that
    * this can be checked (tests/fem/fem_formulations).
    *
+   * Materials: one gel for the whole mesh, or one per cell material_id (bonded regions, e.g. the
+   * two layers of a bilayer). All gels share one solvent (k_BT/nu) and start in equilibrium with
+   * one mu_0, each at its own lambda_0 (F_0 = lambda_0 I per cell), as MaterialRegions does for
+   * the MPM (doc/own_scenes.md).
+   *
    * Boundary conditions: displacement components held (du = 0 on them, so u = 0 relative to
    * Omega_0) on boundary ids of the triangulation or at single vertices, and prescribed mu on
    * boundary ids (constant, or changed per step with set_chemical_potential()); everything else
@@ -73,6 +79,18 @@ namespace GelMPM
                    const dealii::Triangulation<dim> &triangulation,
                    const unsigned int                u_degree,
                    const Formulation                 formulation);
+
+    /**
+     * As above, with the gel of a cell given by its material_id: cell->material_id() indexes
+     * @p materials (kept by reference, like the triangulation). Throws std::invalid_argument if
+     * @p materials is empty, if the gels differ in k_BT/nu (one solvent) or in mu_0 (one initial
+     * chemical potential; relative 1e-9), and setup() throws for a cell whose material_id has no
+     * gel. One gel in @p materials is the one-material system (material_ids are then ignored).
+     */
+    FemMixedSystem(const std::vector<FloryRehnerGel<dim>> &materials,
+                   const dealii::Triangulation<dim>       &triangulation,
+                   const unsigned int                      u_degree,
+                   const Formulation                       formulation);
 
     /** Hold the displacement components @p components (0..dim-1) on boundary @p id. */
     void
@@ -158,6 +176,20 @@ namespace GelMPM
     void
     update(const dealii::Vector<double> &solution);
 
+    /**
+     * The force on the body from the displacement conditions of boundary @p id (per unit
+     * thickness in 2D): the consistent reaction, i.e. the displacement rows of the residual
+     * assembled last, before the constraints zero them, summed per component over the DoFs of
+     * the boundary's faces, for the components the boundary holds (constrain_displacement; the
+     * others are zero: no condition, no force, and at a node shared with another boundary they
+     * would carry that one's reaction). After a converged step (the residual at the converged
+     * state) this is the force that holds the boundary where it is, e.g. the punch's on the gel:
+     * the same sign as the MPM's `<piece>_force_*` (doc/statistics.md), the force the boundary
+     * exerts on the body. Throws std::invalid_argument for an unknown boundary.
+     */
+    dealii::Tensor<1, dim>
+    boundary_force(const dealii::types::boundary_id id) const;
+
     /** Mean of the displacement component @p component of u_n over boundary @p id. */
     double
     mean_boundary_displacement(const dealii::types::boundary_id id,
@@ -221,11 +253,12 @@ namespace GelMPM
     dof_handler() const;
 
   private:
-    const FloryRehnerGel<dim>        &material;
-    const dealii::Triangulation<dim> &triangulation;
-    const Formulation                 formulation;
-    const dealii::FESystem<dim>       fe;
-    dealii::DoFHandler<dim>           dof_handler_;
+    /** The gel of every material_id (one entry: the gel of every cell). */
+    std::vector<const FloryRehnerGel<dim> *> materials;
+    const dealii::Triangulation<dim>        &triangulation;
+    const Formulation                        formulation;
+    const dealii::FESystem<dim>              fe;
+    dealii::DoFHandler<dim>                  dof_handler_;
 
     std::map<dealii::types::boundary_id, std::vector<bool>> displacement_constraints;
     std::map<dealii::types::boundary_id, double>            mu_constraints;
@@ -246,6 +279,12 @@ namespace GelMPM
     dealii::Vector<double>                 state_;
     dealii::TrilinosWrappers::SparseMatrix matrix_;
     dealii::Vector<double>                 residual_;
+    /** The residual assembled last without the constraints (for boundary_force()). */
+    dealii::Vector<double> unconstrained_residual_;
+
+    /** The gel of @p cell. */
+    const FloryRehnerGel<dim> &
+    material_of(const dealii::CellAccessor<dim, dim> &cell) const;
   };
 } // namespace GelMPM
 
