@@ -1,0 +1,257 @@
+#!/usr/bin/env python3
+"""Paper §4.1, the first decade (t <= 0.02 tau_d): refinement study against the 1D reference.
+
+Runs prm/constrained_swelling.prm to t = 0.02 tau_d (no particle output) with one or more changes
+at a time -- the background grid (h_u, and h_mu = 2 h_u), the points per cell, the Nitsche penalty
+of mu, the first step, and a ramp of the top's mu from mu_0 to 0 over t_inc (through the top's
+'Chemical potential value' expression) -- one gelmpm after the other, and compares Delta h with
+the finite-difference reference gelmpm-swelling-1d (a step of mu at t = 0+; with --ramp also with
+the same ramp). Writes <output>/early.md (the Markdown table) and early.csv.
+
+    /usr/bin/python3 contrib/benchmarks/constrained_swelling_early.py [--output DIR]
+        [--only NAME,...] [--tabulate-only] [--list]
+
+Columns: Delta h_MPM / Delta h_ref at the first step, at t = 1.197e-3 and 8.589e-3 tau_d; the
+worst |Delta h_MPM / Delta h_ref - 1| over all steps with 1e-3 <= t <= 1e-2 (signed, with its
+time); the least-squares log-log slope of Delta h_MPM over the steps in [1e-3, 1e-2] (reference
+0.500); steps; wall time of the run (measured around the process); unknowns (u + mu) at the first
+and the last step; material points. Environment: GELMPM_BUILD_DIR (default: build); NICE (default
+5, the niceness of every run).
+"""
+import argparse
+import csv
+import math
+import os
+import subprocess
+import sys
+import time
+
+import numpy as np
+
+TOP = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+T1, T2 = 0.001197, 0.008589
+WINDOW = (1e-3, 1e-2)
+LAMBDA_0, CHI, N_NU = 1.2801, 0.1, 7.299e-3
+
+
+def mu_0():
+    """mu/k_BT of the initial state (P_22 = 0 at lambda = 1), as in the reference."""
+    J = LAMBDA_0 ** 3
+    return N_NU * (LAMBDA_0 ** 2 - 1) / J + math.log(1 - 1 / J) + 1 / J + CHI / J ** 2
+
+
+def grid(nx, ppc):
+    return [f"Background grid/Cells={nx}, {8 * nx}", f"Material points/Points per cell={ppc}"]
+
+
+def ramp(t_inc):
+    base = "Boundary conditions/top/Chemical potential value/"
+    return [base + f"Function constants=mu0={mu_0():.10g},tinc={t_inc:g}",
+            base + "Function expression=mu0*max(0, 1 - t/tinc)"]
+
+
+def gamma(g):
+    return [f"Nitsche/Chemical potential penalty={g:g}"]
+
+
+def dt0(dt):
+    return [f"Time stepping/Initial step={dt:g}"]
+
+
+def variants():
+    """(name, group, description, --set overrides, ramp time or None)."""
+    v = []
+    # h and points per cell (h_mu = 2 h_u; u cells nx x 8 nx).
+    for nx in (20, 30, 40, 60, 80):
+        for ppc in ((2, 3, 4, 6) if nx in (20, 40) else (3, 6)):
+            v.append((f"h{nx}_p{ppc}", "h, points", f"{nx} × {8 * nx}, {ppc} × {ppc}",
+                      grid(nx, ppc), None))
+    # First step (Delta t_0 = 8.75e-5 in the scene).
+    for nx, ppc in ((20, 6), (40, 6), (80, 3)):
+        for div in (4, 16):
+            v.append((f"h{nx}_p{ppc}_dt{div}", "first step",
+                      f"{nx} × {8 * nx}, {ppc} × {ppc}, Δt_0/{div}",
+                      grid(nx, ppc) + dt0(8.75e-5 / div), None))
+    # Nitsche penalty of mu.
+    for nx, ppc, gammas in ((20, 6, (2, 5, 8, 10, 12, 15, 50, 100, 250, 1000)),
+                            (40, 6, (5, 10, 100, 250)),
+                            (80, 3, (5, 100))):
+        for g in gammas:
+            v.append((f"h{nx}_p{ppc}_g{g}", "γ_μ", f"{nx} × {8 * nx}, {ppc} × {ppc}, γ_μ = {g}",
+                      grid(nx, ppc) + gamma(g), None))
+    # Ramp of the top's mu from mu_0 to 0 over t_inc.
+    for nx, ppc, t_incs in ((20, 6, (1e-4, 2e-4, 5e-4, 1e-3)),
+                            (40, 6, (1e-4, 2e-4, 5e-4, 1e-3)),
+                            (80, 3, (1e-4, 2e-4))):
+        for t_inc in t_incs:
+            v.append((f"h{nx}_p{ppc}_r{t_inc:g}", "ramp",
+                      f"{nx} × {8 * nx}, {ppc} × {ppc}, ramp t_inc = {t_inc:g}",
+                      grid(nx, ppc) + ramp(t_inc), t_inc))
+    # Combinations.
+    for nx, ppc, t_inc, div in ((40, 6, 1e-4, 4), (60, 3, 1e-4, 4), (80, 3, 1e-4, 4),
+                                (60, 3, 2e-4, 1), (80, 3, 2e-4, 4)):
+        sets = grid(nx, ppc) + ramp(t_inc) + (dt0(8.75e-5 / div) if div > 1 else [])
+        v.append((f"h{nx}_p{ppc}_r{t_inc:g}" + (f"_dt{div}" if div > 1 else ""), "combination",
+                  f"{nx} × {8 * nx}, {ppc} × {ppc}, ramp t_inc = {t_inc:g}"
+                  + (f", Δt_0/{div}" if div > 1 else ""), sets, t_inc))
+    return v
+
+
+def read_csv(path):
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+def reference_curve(directory):
+    rows = read_csv(os.path.join(directory, "reference_thickness.csv"))
+    t = np.array([float(r["t_over_tau_d"]) for r in rows])
+    d = np.array([float(r["delta_h_over_h0"]) for r in rows])
+    return lambda x: np.exp(np.interp(np.log(x), np.log(t), np.log(d)))
+
+
+def run_reference(build, out, t_inc=None):
+    directory = os.path.join(out, "reference" if t_inc is None else f"reference_ramp_{t_inc:g}")
+    if os.path.exists(os.path.join(directory, "reference_thickness.csv")):
+        return directory
+    command = [os.path.join(build, "gelmpm-swelling-1d"), "--samples", "4000", "--times",
+               "0.001197,0.008589,0.02", "--output", directory]
+    if t_inc is not None:
+        command += ["--ramp", f"{t_inc:g}"]
+    print(" ".join(command), flush=True)
+    subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
+    return directory
+
+
+def run_variant(build, out, name, sets, nice):
+    directory = os.path.join(out, name)
+    command = (["nice", "-n", str(nice)] if nice else []) + [
+        os.path.join(build, "gelmpm"),
+        "--set", f"Output/Directory={directory}",
+        "--set", "Output/Write particles=false",
+        "--set", "Time stepping/End time=0.02",
+        "--set", "Time stepping/Stop at times=0.001197, 0.008589, 0.02"]
+    for s in sets:
+        command += ["--set", s]
+    command.append(os.path.join(TOP, "prm", "constrained_swelling.prm"))
+    print(" ".join(f'"{c}"' if " " in c else c for c in command), flush=True)
+    start = time.monotonic()
+    with open(os.path.join(out, name + ".log"), "w") as log:
+        status = subprocess.run(command, stdout=log, stderr=subprocess.STDOUT).returncode
+    wall = time.monotonic() - start
+    with open(os.path.join(directory if os.path.isdir(directory) else out, "wall.txt"), "w") as f:
+        f.write(f"{wall:.3f} {status}\n")
+    print(f"  {name}: exit {status}, {wall:.1f} s", flush=True)
+
+
+def evaluate(out, name, reference, ramp_reference):
+    directory = os.path.join(out, name)
+    try:
+        wall, status = open(os.path.join(directory, "wall.txt")).read().split()
+        rows = read_csv(os.path.join(directory, "statistics.csv"))[1:]
+    except (OSError, ValueError):
+        return None
+    result = {"wall": float(wall), "status": int(status)}
+    if not rows or int(status) != 0:
+        return result
+    t = np.array([float(r["t_over_tau_d"]) for r in rows])
+    d = np.array([float(r["delta_h_over_h0"]) for r in rows])
+    ratio = d / reference(t)
+    at = lambda s: ratio[np.argmin(abs(t - s))]
+    w = (t >= WINDOW[0] * (1 - 1e-9)) & (t <= WINDOW[1] * (1 + 1e-9))
+    worst = np.argmax(abs(ratio[w] - 1))
+    dofs = lambda r: int(r["n_dofs_u"]) + int(r["n_dofs_mu"])
+    result.update(first=ratio[0], t_first=t[0], r1=at(T1), r2=at(T2), worst=ratio[w][worst] - 1,
+                  t_worst=t[w][worst], slope=np.polyfit(np.log(t[w]), np.log(d[w]), 1)[0],
+                  steps=len(rows), dofs=(dofs(rows[0]), dofs(rows[-1])),
+                  points=int(rows[-1]["n_particles"]), d1=d[np.argmin(abs(t - T1))])
+    if ramp_reference is not None:
+        rr = d / ramp_reference(t)
+        result.update(ramp_r1=rr[np.argmin(abs(t - T1))], ramp_r2=rr[np.argmin(abs(t - T2))],
+                      ramp_worst=max(abs(rr[w] - 1)))
+    return result
+
+
+def table(out, rows, with_ramp):
+    header = ["variant", "first step: Δh/Δh_ref", "Δh/Δh_ref at 1.197e-3", "at 8.589e-3",
+              "worst Δh/Δh_ref − 1 in [1e-3, 1e-2] (at t)", "slope 1e-3–1e-2", "steps",
+              "wall [s]", "unknowns (first → last step)", "points"]
+    if with_ramp:
+        header += ["against the ramped reference: at 1.197e-3, 8.589e-3, worst"]
+    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    group = None
+    for name, grp, description, _, t_inc in rows:
+        r = evaluate_cache[name]
+        if grp != group:
+            lines.append(f"| **{grp}** |" + " |" * (len(header) - 1))
+            group = grp
+        if r is None:
+            cells = [description, "not run"] + [""] * (len(header) - 2)
+        elif "r1" not in r:
+            cells = [description, f"**failed: exit {r['status']}**"] + [""] * (len(header) - 2)
+            cells[7] = f"{r['wall']:.1f}"
+        else:
+            cells = [description, f"{r['first']:.3f} (t = {r['t_first']:.3g})", f"{r['r1']:.4f}",
+                     f"{r['r2']:.4f}", f"{100 * r['worst']:+.2f} % ({r['t_worst']:.3g})",
+                     f"{r['slope']:.3f}", str(r["steps"]), f"{r['wall']:.1f}",
+                     f"{r['dofs'][0]} → {r['dofs'][1]}", str(r["points"])]
+            if with_ramp:
+                cells.append(f"{r['ramp_r1']:.4f}, {r['ramp_r2']:.4f}, {100 * r['ramp_worst']:.2f} %"
+                             if "ramp_r1" in r else "")
+        lines.append("| " + " | ".join(cells) + " |")
+    return "\n".join(lines) + "\n"
+
+
+evaluate_cache = {}
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[1])
+    parser.add_argument("--output", default=os.path.join(TOP, "output", "constrained_swelling_early"))
+    parser.add_argument("--only", default="", help="comma-separated variant names")
+    parser.add_argument("--tabulate-only", action="store_true", help="no runs, tables from --output")
+    parser.add_argument("--ramp", action="store_true",
+                        help="also compare the ramp variants with the reference under the same ramp "
+                             "(gelmpm-swelling-1d --ramp)")
+    parser.add_argument("--list", action="store_true", help="list the variants and exit")
+    args = parser.parse_args()
+    build = os.environ.get("GELMPM_BUILD_DIR", os.path.join(TOP, "build"))
+    nice = int(os.environ.get("NICE", "5"))
+    out = os.path.abspath(args.output)
+    os.makedirs(out, exist_ok=True)
+    todo = variants()
+    if args.list:
+        for name, grp, description, sets, _ in todo:
+            print(f"{name:24s} {grp:12s} {description}")
+        return 0
+    if args.only:
+        keep = set(args.only.split(","))
+        todo = [v for v in todo if v[0] in keep]
+    reference = reference_curve(run_reference(build, out))
+    ramp_references = {}
+    if args.ramp:
+        for t_inc in sorted({v[4] for v in todo if v[4] is not None}):
+            ramp_references[t_inc] = reference_curve(run_reference(build, out, t_inc))
+    if not args.tabulate_only:
+        for name, _, _, sets, _ in todo:
+            run_variant(build, out, name, sets, nice)
+    for name, _, _, _, t_inc in todo:
+        evaluate_cache[name] = evaluate(out, name, reference, ramp_references.get(t_inc))
+    markdown = table(out, todo, args.ramp)
+    with open(os.path.join(out, "early.md"), "w") as f:
+        f.write(markdown)
+    with open(os.path.join(out, "early.csv"), "w") as f:
+        keys = ["first", "t_first", "r1", "r2", "worst", "t_worst", "slope", "steps", "wall",
+                "points", "ramp_r1", "ramp_r2", "ramp_worst"]
+        f.write("name,group,description," + ",".join(keys) + ",dofs_first,dofs_last\n")
+        for name, grp, description, _, _ in todo:
+            r = evaluate_cache[name] or {}
+            f.write(f'{name},{grp},"{description}",'
+                    + ",".join(str(r.get(k, "")) for k in keys)
+                    + "," + ",".join(str(x) for x in r.get("dofs", ("", ""))) + "\n")
+    print(markdown)
+    print(f"tables: {out}/early.md, early.csv")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
