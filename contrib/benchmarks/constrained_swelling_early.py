@@ -58,12 +58,22 @@ def dt0(dt):
     return [f"Time stepping/Initial step={dt:g}"]
 
 
+def growth(g):
+    return [f"Time stepping/Growth factor={g:g}"]
+
+
+def tolerance(tol):
+    # Error-controlled steps act only where no step cap applies; growth 2 (doc/performance.md).
+    return ["Time stepping/Step caps=", f"Time stepping/Tolerance={tol:g}",
+            "Time stepping/Growth factor=2"]
+
+
 def variants():
     """(name, group, description, --set overrides, ramp time or None)."""
     v = []
     # h and points per cell (h_mu = 2 h_u; u cells nx x 8 nx).
     for nx in (20, 30, 40, 60, 80):
-        for ppc in ((2, 3, 4, 6) if nx in (20, 40) else (3, 6)):
+        for ppc in ((3, 4, 6) if nx in (20, 40) else (3, 6)):
             v.append((f"h{nx}_p{ppc}", "h, points", f"{nx} × {8 * nx}, {ppc} × {ppc}",
                       grid(nx, ppc), None))
     # First step (Delta t_0 = 8.75e-5 in the scene).
@@ -72,6 +82,18 @@ def variants():
             v.append((f"h{nx}_p{ppc}_dt{div}", "first step",
                       f"{nx} × {8 * nx}, {ppc} × {ppc}, Δt_0/{div}",
                       grid(nx, ppc) + dt0(8.75e-5 / div), None))
+    # Later steps: growth factor of the step (1.25 in the scene), error-controlled steps.
+    for nx, ppc, factors in ((20, 6, (1.1, 1.05)), (30, 6, (1.1,)), (40, 6, (1.1, 1.05)),
+                             (60, 3, (1.1,)), (80, 3, (1.1, 1.05))):
+        for g in factors:
+            v.append((f"h{nx}_p{ppc}_growth{g:g}", "step growth",
+                      f"{nx} × {8 * nx}, {ppc} × {ppc}, growth {g:g}", grid(nx, ppc) + growth(g),
+                      None))
+    for nx, ppc, tols in ((20, 6, (1e-3,)), (40, 6, (1e-3, 3e-4)), (80, 3, (1e-3,))):
+        for tol in tols:
+            v.append((f"h{nx}_p{ppc}_tol{tol:g}", "step growth",
+                      f"{nx} × {8 * nx}, {ppc} × {ppc}, Tolerance = {tol:g} (growth 2, no caps)",
+                      grid(nx, ppc) + tolerance(tol), None))
     # Nitsche penalty of mu.
     for nx, ppc, gammas in ((20, 6, (2, 5, 8, 10, 12, 15, 50, 100, 250, 1000)),
                             (40, 6, (5, 10, 100, 250)),
@@ -171,6 +193,109 @@ def evaluate(out, name, reference, ramp_reference):
     return result
 
 
+def plot(out, reference, panels):
+    """One panel per list of variant names: Delta h_MPM / Delta h_ref against t at every step."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    descriptions = {v[0]: v[2] for v in variants()}
+    figure, axes = plt.subplots(1, len(panels), figsize=(5.2 * len(panels), 4.2), sharey=True)
+    for ax, (title, names) in zip(np.atleast_1d(axes), panels):
+        for name in names:
+            path = os.path.join(out, name, "statistics.csv")
+            if not os.path.exists(path):
+                continue
+            rows = read_csv(path)[1:]
+            t = np.array([float(r["t_over_tau_d"]) for r in rows])
+            d = np.array([float(r["delta_h_over_h0"]) for r in rows])
+            ax.semilogx(t, d / reference(t), "o-", ms=3, lw=1, label=descriptions.get(name, name))
+        ax.axhspan(0.99, 1.01, color="0.9")
+        ax.axhline(1, color="k", lw=0.8)
+        ax.axvspan(*WINDOW, color="y", alpha=0.1)
+        ax.set_xlabel("t/τ_d")
+        ax.set_title(title, fontsize=10)
+        ax.legend(fontsize=7)
+    np.atleast_1d(axes)[0].set_ylabel("Δh_MPM / Δh_ref")
+    np.atleast_1d(axes)[0].set_ylim(0.6, 1.3)
+    figure.tight_layout()
+    figure.savefig(os.path.join(out, "early.png"), dpi=110)
+
+
+PANELS = [("grid and points (γ_μ = 25, growth 1.25)",
+           ["h20_p6", "h30_p6", "h40_p6", "h60_p6", "h80_p6", "h80_p3"]),
+          ("γ_μ on 20 × 160 and 80 × 640",
+           ["h20_p6_g5", "h20_p6_g8", "h20_p6_g10", "h20_p6", "h20_p6_g250", "h80_p3_g5",
+            "h80_p3", "h80_p3_g100"]),
+          ("ramp of the top's μ (against the step reference)",
+           ["h20_p6_r0.0001", "h20_p6_r0.0005", "h20_p6_r0.001", "h40_p6_r0.0001", "h80_p3_r0.0001"]),
+          ("step growth", ["h20_p6_growth1.1", "h40_p6", "h40_p6_growth1.1", "h40_p6_growth1.05",
+                           "h80_p3_growth1.05", "h40_p6_tol0.001"])]
+
+
+MECHANISM = [("m_h20_g5", 20, 6, 5), ("m_h20_g25", 20, 6, 25), ("m_h20_g250", 20, 6, 250),
+             ("m_h80_g25", 80, 3, 25), ("m_h80_g5", 80, 3, 5)]
+
+
+def mechanism(build, out, nice, run):
+    """The first steps with the particles written at every step: mu at the top surface points,
+    the undershoot of mu below mu_0 ahead of the front, the largest |mu - mu_ref| at the volume
+    points, against sqrt(t)/h_mu. Returns a Markdown table."""
+    sys.path.insert(0, os.path.join(TOP, "contrib", "plotting"))
+    from gelmpm_files import read_pvd, read_vtu
+    lines = ["| variant | t/τ_d | √t / h_μ | Δh/Δh_ref | μ at the top points (mean) | "
+             "min μ − μ_0 (volume points) | max \\|μ − μ_ref\\| (at Y) |", "|" + "---|" * 7]
+    for name, nx, ppc, g in MECHANISM:
+        directory = os.path.join(out, name)
+        if run:
+            sets = grid(nx, ppc) + gamma(g) + ["Output/Interval steps=1"]
+            command = (["nice", "-n", str(nice)] if nice else []) + [
+                os.path.join(build, "gelmpm"), "--set", f"Output/Directory={directory}",
+                "--set", "Time stepping/End time=0.001197",
+                "--set", "Time stepping/Stop at times=0.001197"]
+            for x in sets:
+                command += ["--set", x]
+            command.append(os.path.join(TOP, "prm", "constrained_swelling.prm"))
+            print(" ".join(f'"{c}"' if " " in c else c for c in command), flush=True)
+            with open(os.path.join(out, name + ".log"), "w") as log:
+                subprocess.run(command, stdout=log, stderr=subprocess.STDOUT, check=True)
+        series = [(t, f) for t, f in read_pvd(directory) if t > 0]
+        times = ",".join(f"{t:.10g}" for t, _ in series)
+        ref_dir = os.path.join(out, name + "_reference")
+        if run or not os.path.exists(ref_dir):
+            subprocess.run([os.path.join(build, "gelmpm-swelling-1d"), "--times", times,
+                            "--output", ref_dir], check=True, stdout=subprocess.DEVNULL)
+        profiles = np.genfromtxt(os.path.join(ref_dir, "reference_profiles.csv"), delimiter=",",
+                                 names=True)
+        thickness = {round(float(r["t_over_tau_d"]), 12): float(r["delta_h_over_h0"])
+                     for r in read_csv(os.path.join(directory, "statistics.csv"))}
+        h_mu = 2 * 0.5 / nx
+        for t, f in series:
+            x, a = read_vtu(f)
+            Y = x[:, 1] - a["displacement"][:, 1]
+            mu, kind = a["mu_over_kT"].astype(float), a["kind"]
+            top = (kind > 0) & (abs(Y - 1) < 1e-6)
+            volume = kind == 0
+            p = profiles[abs(profiles["t_over_tau_d"] - t) < 1e-9 * max(t, 1e-12)]
+            mu_ref = np.interp(Y[volume], p["Y_over_h0"], p["mu_over_kT"])
+            err = abs(mu[volume] - mu_ref)
+            k = np.argmax(err)
+            d_ref = reference_curve_cache(out)(t)
+            d = min(thickness.items(), key=lambda kv: abs(kv[0] - t))[1]
+            lines.append(f"| {nx} × {8 * nx}, {ppc} × {ppc}, γ_μ = {g} | {t:.3g} | "
+                         f"{math.sqrt(t) / h_mu:.2f} | {d / d_ref:.3f} | {mu[top].mean():+.4f} | "
+                         f"{mu[volume].min() - mu_0():+.4f} | {err[k]:.4f} ({Y[volume][k]:.3f}) |")
+    return "\n".join(lines) + "\n"
+
+
+_reference_cache = {}
+
+
+def reference_curve_cache(out):
+    if out not in _reference_cache:
+        _reference_cache[out] = reference_curve(os.path.join(out, "reference"))
+    return _reference_cache[out]
+
+
 def table(out, rows, with_ramp):
     header = ["variant", "first step: Δh/Δh_ref", "Δh/Δh_ref at 1.197e-3", "at 8.589e-3",
               "worst Δh/Δh_ref − 1 in [1e-3, 1e-2] (at t)", "slope 1e-3–1e-2", "steps",
@@ -213,6 +338,13 @@ def main():
                         help="also compare the ramp variants with the reference under the same ramp "
                              "(gelmpm-swelling-1d --ramp)")
     parser.add_argument("--list", action="store_true", help="list the variants and exit")
+    parser.add_argument("--plot", action="store_true",
+                        help="also write early.png (Delta h_MPM / Delta h_ref of chosen variants)")
+    parser.add_argument("--mechanism", action="store_true",
+                        help="also the first steps with the particles at every step (mu at the "
+                             "top, undershoot ahead of the front): mechanism.md")
+    parser.add_argument("--skip-existing", action="store_true",
+                        help="do not run a variant whose directory holds a finished run")
     args = parser.parse_args()
     build = os.environ.get("GELMPM_BUILD_DIR", os.path.join(TOP, "build"))
     nice = int(os.environ.get("NICE", "5"))
@@ -233,10 +365,18 @@ def main():
             ramp_references[t_inc] = reference_curve(run_reference(build, out, t_inc))
     if not args.tabulate_only:
         for name, _, _, sets, _ in todo:
+            if args.skip_existing and os.path.exists(os.path.join(out, name, "wall.txt")):
+                continue
             run_variant(build, out, name, sets, nice)
     for name, _, _, _, t_inc in todo:
         evaluate_cache[name] = evaluate(out, name, reference, ramp_references.get(t_inc))
     markdown = table(out, todo, args.ramp)
+    if args.plot:
+        plot(out, reference, PANELS)
+    if args.mechanism:
+        with open(os.path.join(out, "mechanism.md"), "w") as f:
+            f.write(mechanism(build, out, nice, not args.tabulate_only))
+        print(open(os.path.join(out, "mechanism.md")).read())
     with open(os.path.join(out, "early.md"), "w") as f:
         f.write(markdown)
     with open(os.path.join(out, "early.csv"), "w") as f:
