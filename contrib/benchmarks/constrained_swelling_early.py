@@ -402,7 +402,7 @@ def main():
         f.write("name,group,description," + ",".join(keys) + ",dofs_first,dofs_last\n")
         for name, grp, description, _, _ in todo:
             r = evaluate_cache[name] or {}
-            f.write(f'{name},{grp},"{description}",'
+            f.write(f'{name},"{grp}","{description}",'
                     + ",".join(str(r.get(k, "")) for k in keys)
                     + "," + ",".join(str(x) for x in r.get("dofs", ("", ""))) + "\n")
     print(markdown)
