@@ -2,14 +2,19 @@
 """Paper §4.1, the first decade (t <= 0.02 tau_d): refinement study against the 1D reference.
 
 Runs prm/constrained_swelling.prm to t = 0.02 tau_d (no particle output) with one or more changes
-at a time -- the background grid (h_u, and h_mu = 2 h_u), the points per cell, the Nitsche penalty
-of mu, the first step, and a ramp of the top's mu from mu_0 to 0 over t_inc (through the top's
-'Chemical potential value' expression) -- one gelmpm after the other, and compares Delta h with
-the finite-difference reference gelmpm-swelling-1d (a step of mu at t = 0+; with --ramp also with
-the same ramp). Writes <output>/early.md (the Markdown table) and early.csv.
+at a time -- the background grid (h_u, and h_mu = 2 h_u), the points per cell, the first step,
+the step growth or error-controlled steps, the Nitsche penalty of mu, and a ramp of the top's mu
+from mu_0 to 0 over t_inc (through the top's 'Chemical potential value' expression) -- one gelmpm
+after the other, and compares Delta h with the finite-difference reference gelmpm-swelling-1d (a
+step of mu at t = 0+; with --ramp also with the same ramp). Writes <output>/early.md (the Markdown
+table) and early.csv; with --plot early.png; with --mechanism mechanism.md (five short runs with
+the particles at every step: mu at the top, the undershoot ahead of the front).
 
-    /usr/bin/python3 contrib/benchmarks/constrained_swelling_early.py [--output DIR]
-        [--only NAME,...] [--tabulate-only] [--list]
+    /usr/bin/python3 contrib/benchmarks/constrained_swelling_early.py [--output DIR] [--ramp]
+        [--plot] [--mechanism] [--only NAME,...] [--skip-existing] [--tabulate-only] [--list]
+
+The whole study (69 variants and the mechanism runs) took about 12 min of gelmpm wall time on a
+loaded 2-core machine (doc/constrained_swelling.md, "Early times").
 
 Columns: Delta h_MPM / Delta h_ref at the first step, at t = 1.197e-3 and 8.589e-3 tau_d; the
 worst |Delta h_MPM / Delta h_ref - 1| over all steps with 1e-3 <= t <= 1e-2 (signed, with its
