@@ -35,9 +35,9 @@ namespace GelMPM
     , dt_next(parameters.first_step)
   {
     if (parameters.n_cells < 2 || parameters.grading < 1. || parameters.first_step <= 0. ||
-        parameters.growth < 1.)
+        parameters.growth < 1. || !(parameters.ramp >= 0.))
       throw std::invalid_argument("ConstrainedSwelling1D: need at least 2 cells, grading >= 1, "
-                                  "a positive first step and growth >= 1");
+                                  "a positive first step, growth >= 1 and a ramp >= 0");
     const unsigned int n = parameters.n_cells;
     Y.resize(n + 1);
     for (unsigned int i = 0; i <= n; ++i)
@@ -104,6 +104,18 @@ namespace GelMPM
   }
 
 
+  double
+  ConstrainedSwelling1D::top_chemical_potential(const double time) const
+  {
+    if (parameters.ramp > 0. && time < parameters.ramp)
+      {
+        const double mu_0 = chemical_potential(1.);
+        return mu_0 + (parameters.mu_top - mu_0) * std::max(time, 0.) / parameters.ramp;
+      }
+    return parameters.mu_top;
+  }
+
+
   void
   ConstrainedSwelling1D::advance_to(const double t_end)
   {
@@ -142,7 +154,9 @@ namespace GelMPM
     std::vector<double> lower(n), diagonal(n), upper(n), residual(n);
 
     std::vector<double> next = lambda;
-    next[n]                  = lambda_top;
+    next[n]                  = parameters.ramp > 0. && t + dt < parameters.ramp
+                                 ? stretch_at(top_chemical_potential(t + dt))
+                                 : lambda_top;
     std::vector<double> mu(n + 1), dmu(n + 1), k(n + 1), dk(n + 1);
     bool                converged = false;
     for (unsigned int iteration = 0; iteration < 50 && !converged; ++iteration)

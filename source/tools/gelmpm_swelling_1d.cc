@@ -64,6 +64,10 @@ main(int argc, char **argv)
     "mu-top",
     po::value(&parameters.mu_top)->default_value(0.),
     "mu/k_BT on the top for t > 0")(
+    "ramp",
+    po::value(&parameters.ramp)->default_value(0.),
+    "time over which mu on the top rises linearly from mu_0 (the initial state's) to mu-top; 0: a "
+    "step at t = 0+")(
     "times",
     po::value(&times_text)->default_value("0.001197,0.008589,0.1281,0.4531,1.953,4.453,16.06,1713"),
     "comma-separated times of the profiles; the last one ends the run")(
@@ -94,6 +98,9 @@ main(int argc, char **argv)
           if (t < end)
             times.insert(t);
         }
+      // A step ends where the ramp does (its kink).
+      if (parameters.ramp > 0. && parameters.ramp < end)
+        times.insert(parameters.ramp);
 
       GelMPM::ConstrainedSwelling1D reference(parameters);
       std::filesystem::create_directories(directory);

@@ -7,7 +7,10 @@
 // - space-time convergence at second order: with cells and step growth refined together (n, 1 +
 //   0.64/n), the error in Delta h at t = 0.5 tau_d falls by a factor between 3 and 5.5 per
 //   refinement, and is below 1e-5 at n = 400;
-// - at t = 1713 tau_d the layer is at the analytic equilibrium lambda(mu = 0) - 1 (1e-8).
+// - at t = 1713 tau_d the layer is at the analytic equilibrium lambda(mu = 0) - 1 (1e-8);
+// - with a ramp of the top's mu from mu_0 to 0 over t_r = 1e-4 tau_d, the top node follows the
+//   ramp, and the layer takes up less than with the step by (1 - ratio) t/t_r between 0.2 and 0.3
+//   at t = 10 t_r and 100 t_r (linear diffusion: 1/4 for t >> t_r; measured 0.24 and 0.23).
 #include <gelmpm/material/flory_rehner_gel.h>
 #include <gelmpm/reference/constrained_swelling_1d.h>
 
@@ -112,6 +115,31 @@ main()
       }
     std::cout << "error ratios per refinement between 3 and 5.5 (second order): " << orders_ok
               << std::endl;
+  }
+
+  // A ramp of the top's mu over t_r.
+  {
+    const double                      t_r = 1e-4;
+    ConstrainedSwelling1D::Parameters p   = parameters(400);
+    p.ramp                                = t_r;
+    ConstrainedSwelling1D ramp(p), step(parameters(400));
+    const double          mu_0 = ramp.chemical_potential(1.);
+    ramp.advance_to(0.5 * t_r);
+    const bool follows = std::abs(ramp.chemical_potentials().back() - 0.5 * mu_0) < 1e-10 &&
+                         std::abs(ramp.top_chemical_potential(0.5 * t_r) - 0.5 * mu_0) < 1e-14 &&
+                         ramp.top_chemical_potential(2. * t_r) == 0.;
+    std::cout << "the top follows the ramp (mu = mu_0/2 at t_r/2, 0 after t_r): " << follows
+              << std::endl;
+    bool deficit_ok = true;
+    for (const double t : {10. * t_r, 100. * t_r})
+      {
+        ramp.advance_to(t);
+        step.advance_to(t);
+        const double deficit = (1. - ramp.thickness_change() / step.thickness_change()) * t / t_r;
+        deficit_ok &= deficit > 0.2 && deficit < 0.3;
+      }
+    std::cout << "uptake deficit of the ramp (1 - ratio) t/t_r in (0.2, 0.3) at 10 and 100 t_r: "
+              << deficit_ok << std::endl;
   }
 
   // Equilibrium.

@@ -18,7 +18,8 @@ namespace GelMPM
    *   mu/kT = N nu (F_22^2 - 1)/J + ln(1 - 1/J) + 1/J + chi/J^2,   J = lambda_0^3 lambda,
    *
    * and solvent conservation becomes d lambda/dt = d/dY [ k(lambda) d mu/dY ] with
-   * k = (J - 1)/(lambda_0^3 lambda^2). Boundary conditions: mu = mu_top at Y = 1 for t > 0, no
+   * k = (J - 1)/(lambda_0^3 lambda^2). Boundary conditions: mu = mu_top at Y = 1 for t > 0 (or,
+   * with a ramp t_r > 0, rising linearly from mu_0 = mu(lambda = 1) at t = 0 to mu_top at t_r), no
    * flux at Y = 0; initially lambda = 1.
    *
    * Discretisation: vertex-centred finite volumes on nodes graded towards the top (the early
@@ -42,6 +43,8 @@ namespace GelMPM
       /** First time step and geometric growth factor of the steps. */
       double first_step = 1e-9;
       double growth     = 1.02;
+      /** Time over which mu on the top rises linearly from mu_0 to mu_top (0: a step at 0+). */
+      double ramp = 0.;
     };
 
     explicit ConstrainedSwelling1D(const Parameters &parameters);
@@ -54,6 +57,9 @@ namespace GelMPM
     /** The stretch lambda at which chemical_potential(lambda) = @p mu (Newton, bracketed). */
     double
     stretch_at(const double mu) const;
+    /** mu/kT prescribed on the top at time @p t (mu_top, or the ramp's value before its end). */
+    double
+    top_chemical_potential(const double t) const;
     /** The mobility k(lambda) and its derivative. */
     double
     mobility(const double lambda) const;
