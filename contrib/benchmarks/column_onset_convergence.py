@@ -129,6 +129,33 @@ def limit(table, hs, dts):
     return per_h[-1] if math.isnan(extrapolated) else extrapolated
 
 
+def separable_limit(table, hs, dts):
+    """Where the finest grid has one step only: the h-limit at the smallest step that three
+    grids share (that of the finest grid if it is one of them), plus the dt-correction (limit dt -> 0 minus the value at that step) of the
+    finest grid that has three steps; its change from the next coarser grid is the
+    uncertainty."""
+    shared = [dt for dt in dts if sum((h, dt) in table for h in hs) >= 3]
+    if not shared:
+        return "Separable limit: too few runs."
+    # The finest grid's sequence if it has one, else the smallest step.
+    with_finest = [dt for dt in shared if (hs[-1], dt) in table]
+    dt0 = (with_finest or shared)[-1]
+    grids = [h for h in hs if (h, dt0) in table]
+    h_limit = richardson([table[(h, dt0)] for h in grids[-3:]])[0]
+    corrections = []
+    for h in hs:
+        vals = [table.get((h, dt)) for dt in dts[-3:]]
+        if (h, dt0) in table and None not in vals and len(dts) >= 3:
+            corrections.append(richardson(vals)[0] - table[(h, dt0)])
+    if math.isnan(h_limit) or not corrections:
+        return "Separable limit: too few runs."
+    uncertainty = (abs(corrections[-1] - corrections[-2]) if len(corrections) > 1 else 0.) \
+        + RESOLUTION
+    return (f"Separable limit: h -> 0 at dt = {dt0:g} ({len(grids[-3:])} finest grids) "
+            f"{h_limit:.5f}, plus the dt -> 0 correction of the finest grid with three steps "
+            f"{corrections[-1]:+.5f}: {h_limit + corrections[-1]:.5f} +- {uncertainty:.5f} tau_d")
+
+
 def report(rows, model, points):
     rows = [r for r in rows if r["model"] == model and int(r["points"]) == points
             and not math.isnan(float(r["t_stable"]))]
@@ -161,6 +188,8 @@ def report(rows, model, points):
         spread.append(RESOLUTION)
     lines += ["", f"Limit h, dt -> 0: {best:.5f} tau_d"
               + (f" +- {max(spread):.5f}" if spread else " (no uncertainty: too few runs)"), ""]
+    if math.isnan(best):
+        lines += [separable_limit(table, hs, dts), ""]
     return "\n".join(lines)
 
 

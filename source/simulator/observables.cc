@@ -90,22 +90,23 @@ namespace GelMPM
       "3D only <piece>_relief. Empty: off.");
     prm.declare_entry(
       "Fold approach distance",
-      "0.5",
+      "0.75",
       dealii::Patterns::Double(0.),
-      "With 'Surface pieces' (2D): a piece folds where two of its points that are more than "
-      "'Fold arc length' apart along the surface in the initial configuration come closer than "
-      "this distance, in units of the grid spacing h_u, or where its polyline crosses itself; "
-      "folded stretches of surface that overlap or lie less than 'Fold arc length' apart "
-      "(the nested pairs of the two flanks of one crease) make one fold. Keep it below 'Fold "
-      "arc length' times the smallest stretch of the surface (0.5 < 3 x 0.17), so that a "
-      "compressed surface without a fold does not count.");
+      "With 'Surface pieces' (2D): a piece folds where one of its points comes closer than "
+      "this distance, in units of the grid spacing h_u, to a segment of its polyline whose ends "
+      "are both more than 'Fold arc length' away along the current surface, or where its "
+      "polyline crosses itself; folded stretches of surface that overlap or lie less than 'Fold "
+      "arc length' apart (the nested pairs of the two flanks of one crease) make one fold. The "
+      "flanks of a closed crease come to rest about h_u/2 apart (one cell's motion carries both), "
+      "a groove that has not folded keeps them more than h_u apart: 0.75 lies between "
+      "(doc/own_scenes.md, the creasing film).");
     prm.declare_entry("Fold arc length",
                       "3",
                       dealii::Patterns::Double(0.),
-                      "With 'Surface pieces' (2D): the least distance along the surface in the "
-                      "initial configuration, in units of h_u, between two points whose approach "
-                      "counts as a fold (points closer along the surface are neighbours on a "
-                      "bend). More than 'Fold approach distance'.");
+                      "With 'Surface pieces' (2D): the least distance along the current surface, "
+                      "in units of h_u, between two places whose approach counts as a fold "
+                      "(places closer along the surface are neighbours on a bend). More than "
+                      "'Fold approach distance'.");
     prm.declare_entry("Volume ratio range",
                       "false",
                       dealii::Patterns::Bool(),

@@ -760,7 +760,9 @@ namespace GelMPM
     // A step far longer than the last (after a landing on a stop time) would amplify the last
     // step's noise into its predictor: no estimate of the tolerance rule for it.
     const bool tolerance_rule =
-      time_stepping.tolerance > 0. && StepControl::estimate_applies(dt, last_dt);
+      time_stepping.tolerance > 0. &&
+      (time_stepping.tolerance_until == 0. || time < time_stepping.tolerance_until) &&
+      StepControl::estimate_applies(dt, last_dt);
     if (!(displacement_rule || tolerance_rule) || !(last_dt > 0.))
       return true;
     const double difference =

@@ -89,6 +89,13 @@ namespace GelMPM
                       "volume-weighted root mean square (errors spread over the body), or 'max', "
                       "the largest value (errors confined to a boundary layer, e.g. the diffusion "
                       "front that sets a buckling onset: doc/column_buckling.md).");
+    prm.declare_entry("Tolerance until",
+                      "0",
+                      Patterns::Double(0.),
+                      "'Tolerance' applies to the steps that begin before this time (tau_d); 0: "
+                      "to the whole run. E.g. the history that sets a buckling onset, after which "
+                      "the motion's own control ('Displacement tolerance') suffices "
+                      "(prm/column_buckling.prm).");
     prm.declare_entry("Step caps",
                       "",
                       Patterns::Anything(),
@@ -126,6 +133,7 @@ namespace GelMPM
     displacement_tolerance      = prm.get_double("Displacement tolerance");
     tolerance                   = prm.get_double("Tolerance");
     error_largest               = prm.get("Error norm") == "max";
+    tolerance_until             = prm.get_double("Tolerance until");
     const std::string caps_text = prm.get("Step caps");
     const std::string stops     = prm.get("Stop at times");
     prm.leave_subsection();

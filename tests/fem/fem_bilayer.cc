@@ -42,9 +42,12 @@ namespace
   stress_free_stretch(const double chi)
   {
     const double mu_0 = table_1_mu_0();
-    return GelMPMTests::bisect([&](double s) { return p11(s, s * s * s, mu_0, chi); },
-                               1. + 1e-12,
-                               10.);
+    return GelMPMTests::bisect(
+      [&](double s) {
+        return p11(s, s * s * s, mu_0, chi);
+      },
+      1. + 1e-12,
+      10.);
   }
 
   /** The in-plane free-swelling stretch a (relative to the initial state) and the drained
@@ -54,14 +57,20 @@ namespace
   layer(const double chi, const double mu_b)
   {
     const double l0 = stress_free_stretch(chi);
-    const double a = GelMPMTests::bisect(
-      [&](double t) { return p11(l0 * t, l0 * l0 * l0 * t * t, mu_b, chi); },
+    const double a  = GelMPMTests::bisect(
+      [&](double t) {
+        return p11(l0 * t, l0 * l0 * l0 * t * t, mu_b, chi);
+      },
       (1. + 1e-12) / std::pow(l0, 1.5),
       10.);
     const auto cauchy_11 = [&](const double delta) {
       const double F11 = l0 * a * (1. + delta);
       const double b   = GelMPMTests::bisect(
-        [&](double u) { return p11(l0 * a * u, F11 * l0 * a * u * l0, mu_b, chi); }, 0.5, 1.5);
+        [&](double u) {
+          return p11(l0 * a * u, F11 * l0 * a * u * l0, mu_b, chi);
+        },
+        0.5,
+        1.5);
       const double J = F11 * l0 * a * b * l0;
       return p11(F11, J, mu_b, chi) / J;
     };
@@ -91,12 +100,12 @@ main(int argc, char **argv)
   std::cout << std::boolalpha;
 
   GelMPM::FemBilayer::Parameters parameters;
-  parameters.cells       = 4;
-  parameters.chi_passive = 0.15;
-  const auto settings    = GelMPM::fem_run_settings({{"Characteristic length", "0.2"},
-                                                     {"Initial step", "1e-3"},
-                                                     {"End time", "10"},
-                                                     {"Step caps", "1: 0.05, 10: 0.5"}},
+  parameters.cells            = 4;
+  parameters.chi_passive      = 0.15;
+  const auto         settings = GelMPM::fem_run_settings({{"Characteristic length", "0.2"},
+                                                          {"Initial step", "1e-3"},
+                                                          {"End time", "10"},
+                                                          {"Step caps", "1: 0.05, 10: 0.5"}},
                                                  {});
   GelMPM::FemBilayer bilayer(parameters);
 
@@ -108,8 +117,8 @@ main(int argc, char **argv)
             << (std::abs(passive_lambda_0 - stress_free_stretch(parameters.chi_passive)) < 1e-8)
             << std::endl;
 
-  double     curvature = 0.;
-  const auto result    = bilayer.run(settings.time_stepping,
+  double       curvature = 0.;
+  const auto   result    = bilayer.run(settings.time_stepping,
                                   settings.newton,
                                   GelMPM::LinearSolver(),
                                   [&](const GelMPM::FemBilayer::Step &s) {
@@ -119,6 +128,6 @@ main(int argc, char **argv)
   const double deviation = curvature / reference - 1.;
   std::cout << "run completed: " << result.completed << std::endl;
   std::cout << "Timoshenko curvature " << std::setprecision(4) << reference
-            << "; FE 40 x 4 within 1 %: " << (std::abs(deviation) < 0.01) << " ("
-            << std::fixed << std::setprecision(1) << 100. * deviation << " %)" << std::endl;
+            << "; FE 40 x 4 within 1 %: " << (std::abs(deviation) < 0.01) << " (" << std::fixed
+            << std::setprecision(1) << 100. * deviation << " %)" << std::endl;
 }

@@ -27,9 +27,9 @@ using SurfaceGeometry::SurfacePoint;
 namespace
 {
   const double h        = 0.1;
-  const double approach = 0.5 * h; // the defaults: 'Fold approach distance' 0.5 h_u,
-  const double arc      = 3. * h;  // 'Fold arc length' 3 h_u
-  const double gap      = 2. * h;  // what Observables uses to join points into a curve
+  const double approach = 0.75 * h; // the defaults: 'Fold approach distance' 0.75 h_u,
+  const double arc      = 3. * h;   // 'Fold arc length' 3 h_u
+  const double gap      = 2. * h;   // what Observables uses to join points into a curve
 
   bool
   report(const std::string &what, const bool ok)

@@ -45,7 +45,9 @@ namespace GelMPM
     double tolerance = 0.;
     /** Measure the local error by its largest value over the volume points (instead of the
      * root mean square): for errors confined to a boundary layer. */
-    bool                                   error_largest = false;
+    bool error_largest = false;
+    /** 'Tolerance' applies to steps that begin before this time (tau_d); 0: the whole run. */
+    double                                 tolerance_until = 0.;
     std::vector<std::pair<double, double>> caps; // (until time, largest step), sorted
     std::vector<double>                    stop_times;
 
