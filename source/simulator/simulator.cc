@@ -761,7 +761,9 @@ namespace GelMPM
     // step's noise into its predictor: no estimate of the tolerance rule for it.
     const bool tolerance_rule =
       time_stepping.tolerance > 0. &&
-      (time_stepping.tolerance_until == 0. || time < time_stepping.tolerance_until) &&
+      (time_stepping.tolerance_until_onset
+         ? !control->onset_seen()
+         : (time_stepping.tolerance_until == 0. || time < time_stepping.tolerance_until)) &&
       StepControl::estimate_applies(dt, last_dt);
     if (!(displacement_rule || tolerance_rule) || !(last_dt > 0.))
       return true;

@@ -91,11 +91,12 @@ namespace GelMPM
                       "front that sets a buckling onset: doc/column_buckling.md).");
     prm.declare_entry("Tolerance until",
                       "0",
-                      Patterns::Double(0.),
-                      "'Tolerance' applies to the steps that begin before this time (tau_d); 0: "
-                      "to the whole run. E.g. the history that sets a buckling onset, after which "
-                      "the motion's own control ('Displacement tolerance') suffices "
-                      "(prm/column_buckling.prm).");
+                      Patterns::Anything(),
+                      "'Tolerance' applies to the steps that begin before this time (tau_d; 0: "
+                      "the whole run), or, with 'onset', until the first bracketed loss of "
+                      "stability (section Stability): the history that sets a buckling onset, "
+                      "after which the motion's own control ('Displacement tolerance') and the "
+                      "signature suffice (prm/column_buckling.prm).");
     prm.declare_entry("Step caps",
                       "",
                       Patterns::Anything(),
@@ -133,10 +134,22 @@ namespace GelMPM
     displacement_tolerance      = prm.get_double("Displacement tolerance");
     tolerance                   = prm.get_double("Tolerance");
     error_largest               = prm.get("Error norm") == "max";
-    tolerance_until             = prm.get_double("Tolerance until");
+    const std::string until     = prm.get("Tolerance until");
     const std::string caps_text = prm.get("Step caps");
     const std::string stops     = prm.get("Stop at times");
     prm.leave_subsection();
+
+    tolerance_until_onset = dealii::Utilities::trim(until) == "onset";
+    if (!tolerance_until_onset)
+      {
+        char        *end   = nullptr;
+        const double value = std::strtod(until.c_str(), &end);
+        require(end != until.c_str() && dealii::Utilities::trim(end).empty() && value >= 0.,
+                "Time stepping/Tolerance until",
+                "is '" + until + "', neither a time nor 'onset'",
+                "give a time in tau_d (0: the whole run) or 'onset'");
+        tolerance_until = value;
+      }
 
     require(characteristic_length > 0.,
             "Time stepping/Characteristic length",

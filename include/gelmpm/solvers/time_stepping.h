@@ -47,7 +47,9 @@ namespace GelMPM
      * root mean square): for errors confined to a boundary layer. */
     bool error_largest = false;
     /** 'Tolerance' applies to steps that begin before this time (tau_d); 0: the whole run. */
-    double                                 tolerance_until = 0.;
+    double tolerance_until = 0.;
+    /** 'Tolerance' applies until the first bracketed loss of stability. */
+    bool                                   tolerance_until_onset = false;
     std::vector<std::pair<double, double>> caps; // (until time, largest step), sorted
     std::vector<double>                    stop_times;
 
