@@ -6,8 +6,12 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 namespace GelMPM
@@ -387,6 +391,7 @@ namespace GelMPM
         throw InputError("", "in scene file: " + describe(e), fix_for(prm, describe(e)));
       }
     apply_overrides(prm, overrides, skip_undefined);
+    check_numbers_representable(prm);
   }
 
 
@@ -414,6 +419,87 @@ namespace GelMPM
           }
       }
     return values;
+  }
+
+
+  std::vector<std::pair<std::string, std::string>>
+  parameter_entries(const std::string &short_prm)
+  {
+    std::vector<std::pair<std::string, std::string>> result;
+    std::vector<std::string>                         sections;
+    std::istringstream                               in(short_prm);
+    for (std::string line; std::getline(in, line);)
+      {
+        const auto first = line.find_first_not_of(' ');
+        if (first == std::string::npos)
+          continue;
+        line = line.substr(first);
+        if (line.rfind("subsection ", 0) == 0)
+          sections.push_back(line.substr(11));
+        else if (line == "end" && !sections.empty())
+          sections.pop_back();
+        else if (line.rfind("set ", 0) == 0)
+          {
+            const auto  equals = line.find('=');
+            std::string name =
+              line.substr(4, equals == std::string::npos ? std::string::npos : equals - 4);
+            name.erase(name.find_last_not_of(' ') + 1);
+            std::string value =
+              equals == std::string::npos ? std::string() : line.substr(equals + 1);
+            value.erase(0, value.find_first_not_of(' '));
+            std::string path;
+            for (const auto &s : sections)
+              path += s + "/";
+            result.emplace_back(path + name, value);
+          }
+      }
+    return result;
+  }
+
+
+  void
+  check_numbers_representable(const dealii::ParameterHandler &prm)
+  {
+    std::ostringstream text;
+    prm.print_parameters(text, dealii::ParameterHandler::ShortPRM);
+    for (const auto &[path, value] : parameter_entries(text.str()))
+      {
+        // The numbers of an entry: those of lists ('1, 0'), step caps ('5: 0.0125') and
+        // expressions that are a number alone; a number inside an expression ('2*x') is left
+        // to the expression's own checks.
+        std::string token;
+        for (std::size_t k = 0; k <= value.size(); ++k)
+          {
+            const char c = k < value.size() ? value[k] : ' ';
+            if (c != ',' && c != ':' && c != ';' && !std::isspace(static_cast<unsigned char>(c)))
+              {
+                token += c;
+                continue;
+              }
+            if (token.empty())
+              continue;
+            char *end              = nullptr;
+            errno                  = 0;
+            const double x         = std::strtod(token.c_str(), &end);
+            const bool   number    = end == token.c_str() + token.size();
+            const bool   too_big   = errno == ERANGE && std::abs(x) >= 1.;
+            const bool   too_small = (errno == ERANGE && std::abs(x) < 1.) ||
+                                   (x != 0. && std::abs(x) < std::numeric_limits<double>::min());
+            const std::string what =
+              (token == value ? "is " + value + ","
+                              : "is '" + value + "', whose number " + token + " is");
+            if (number && too_big)
+              throw InputError(path,
+                               what + " beyond the largest double (about 1.8e308)",
+                               "give a number of magnitude below 1e308");
+            if (number && too_small)
+              throw InputError(path,
+                               what + " below the smallest normal double (about 2.2e-308), "
+                                      "where arithmetic loses its precision",
+                               "give 0 or a number of magnitude at least 1e-300");
+            token.clear();
+          }
+      }
   }
 
 

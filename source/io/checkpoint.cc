@@ -1,4 +1,5 @@
 #include <gelmpm/core/input_error.h>
+#include <gelmpm/core/parameters.h>
 #include <gelmpm/core/version.h>
 #include <gelmpm/io/checkpoint.h>
 #include <gelmpm/io/file_writing.h>
@@ -36,41 +37,6 @@ namespace GelMPM
       for (const unsigned char c : bytes)
         hash = (hash ^ c) * 1099511628211ull;
       return hash;
-    }
-
-    /** The entries of a ShortPRM text as (Section/Entry, value), in the order printed. */
-    std::vector<std::pair<std::string, std::string>>
-    entries(const std::string &parameters)
-    {
-      std::vector<std::pair<std::string, std::string>> result;
-      std::vector<std::string>                         sections;
-      std::istringstream                               in(parameters);
-      for (std::string line; std::getline(in, line);)
-        {
-          const auto first = line.find_first_not_of(' ');
-          if (first == std::string::npos)
-            continue;
-          line = line.substr(first);
-          if (line.rfind("subsection ", 0) == 0)
-            sections.push_back(line.substr(11));
-          else if (line == "end" && !sections.empty())
-            sections.pop_back();
-          else if (line.rfind("set ", 0) == 0)
-            {
-              const auto  equals = line.find('=');
-              std::string name =
-                line.substr(4, equals == std::string::npos ? std::string::npos : equals - 4);
-              name.erase(name.find_last_not_of(' ') + 1);
-              std::string value =
-                equals == std::string::npos ? std::string() : line.substr(equals + 1);
-              value.erase(0, value.find_first_not_of(' '));
-              std::string path;
-              for (const auto &s : sections)
-                path += s + "/";
-              result.emplace_back(path + name, value);
-            }
-        }
-      return result;
     }
 
     InputError
@@ -132,7 +98,7 @@ namespace GelMPM
   checkpoint_parameters(const std::string &parameters)
   {
     std::string result;
-    for (const auto &[path, value] : entries(parameters))
+    for (const auto &[path, value] : parameter_entries(parameters))
       if (path.rfind("Checkpoint/", 0) != 0 && path != "Output/Directory" &&
           path != "Time stepping/End time")
         result += path + " = " + value + "\n";
