@@ -104,6 +104,30 @@ namespace GelMPM
             "Stability/Perturbation direction",
             "has fewer components than the scene's dimension " + std::to_string(dim),
             "give one component per coordinate direction");
+    {
+      double in_plane = 0.;
+      for (unsigned int d = 0; d < dim; ++d)
+        in_plane += stability.perturbation_direction[d] * stability.perturbation_direction[d];
+      require(stability.perturbation_amplitude == 0. || in_plane > 0.,
+              "Stability/Perturbation direction",
+              "has no component in the scene's " + std::to_string(dim) +
+                " coordinate directions (a third component is ignored in 2D)",
+              "give the direction the gel is to leave the unstable branch in, e.g. '1, 0'");
+    }
+    // Bracket ends closer than this are one time for the step arithmetic (times are sums of
+    // many steps, compared to relative_time_tolerance): a narrower bracket would end at zero
+    // width, both of its ends on the same side of the loss of stability.
+    const double narrowest_bracket = 100. * relative_time_tolerance * time_stepping.end_time;
+    if (stability.bisection_tolerance > 0. && stability.bisection_tolerance < narrowest_bracket)
+      {
+        std::ostringstream problem, fix;
+        problem << "is " << stability.bisection_tolerance
+                << ", below 1e-10 times 'Time stepping/End time' (" << narrowest_bracket
+                << "), the narrowest bracket that the step arithmetic resolves";
+        fix << "give at least " << narrowest_bracket
+            << " (tau_d), e.g. 1e-3, or 0 for no bisection";
+        throw InputError("Stability/Bisection tolerance", problem.str(), fix.str());
+      }
     // Checks that need more than one section: build the spaces once (odd cell counts with
     // subdivision are reported here, before anything is written).
     // The material points too: a body outside the grid or a piece that selects nothing is
