@@ -149,6 +149,16 @@ namespace GelMPM
         resume_from        = std::make_unique<CheckpointReader>(output_settings.directory,
                                                          checkpoint_parameters(parameters_as_used));
         const auto &header = resume_from->header();
+        if (time_stepping.end_time < header.time * (1. - relative_time_tolerance))
+          {
+            std::ostringstream problem, fix;
+            problem << "is " << time_stepping.end_time << ", before the time of the checkpoint in '"
+                    << output_settings.directory << "' (t/tau_d = " << header.time << ", step "
+                    << header.step << "): a resumed run cannot go back";
+            fix << "give an End time of at least " << header.time
+                << " to continue the run, or run the scene from the start (without --resume)";
+            throw InputError("Time stepping/End time", problem.str(), fix.str());
+          }
         for (const auto &[name, size] : header.file_sizes)
           {
             const std::string path = output_settings.directory + "/" + name;

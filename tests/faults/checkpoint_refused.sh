@@ -1,7 +1,8 @@
 # --resume refuses, with one message, exit status 2 and nothing written: an output directory
 # without a checkpoint, a checkpoint written for other parameters, by another version, a
-# truncated or altered checkpoint, and a statistics.csv shorter than the checkpoint counted. A
-# later End time is no other scene: it continues the finished run.
+# truncated or altered checkpoint, a statistics.csv shorter than the checkpoint counted, and an
+# End time before the checkpoint's time. A later End time is no other scene: it continues the
+# finished run.
 source "$(dirname "$0")/common.sh"
 options=(--set "Time stepping/End time=1" --set "Checkpoint/Interval steps=5")
 "$gelmpm" "$scene" "${options[@]}" >run.log 2>&1
@@ -48,6 +49,9 @@ cp good/checkpoint.bin results/
 head -c $(($(stat -c %s good/statistics.csv) / 2)) good/statistics.csv >results/statistics.csv
 refused "statistics.csv cut short" "needs 'results/statistics.csv' as it was then"
 cp good/statistics.csv results/
+
+refused "End time before the checkpoint" "'Time stepping/End time' is 0.5, before the time of the checkpoint" \
+  --set "Time stepping/End time=0.5"
 
 rows=$(wc -l <results/statistics.csv)
 "$gelmpm" "$scene" "${options[@]}" --resume --set "Time stepping/End time=1.5" >stdout 2>stderr
