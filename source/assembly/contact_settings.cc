@@ -53,14 +53,25 @@ namespace GelMPM
     prm.leave_subsection();
 
     const std::vector<std::string> allowed(side_names.begin(), side_names.begin() + 2 * dim);
-    if (sides.size() == 1 && sides[0] == "all")
+    const bool all = std::find(sides.begin(), sides.end(), "all") != sides.end();
+    require(!all || sides.size() == 1,
+            "Contact/Grid sides",
+            "names 'all' (every side) together with other sides",
+            "write 'all' alone, or list the sides without it");
+    if (all)
       sides = allowed;
-    for (const auto &side : sides)
-      require(std::find(allowed.begin(), allowed.end(), side) != allowed.end(),
-              "Contact/Grid sides",
-              "names '" + side + "', which is not a side of a " + std::to_string(dim) + "D grid",
-              dim == 2 ? "list some of left, right, bottom, top, or write 'all'"
-                       : "list some of left, right, bottom, top, back, front, or write 'all'");
+    for (auto side = sides.begin(); side != sides.end(); ++side)
+      {
+        require(std::find(allowed.begin(), allowed.end(), *side) != allowed.end(),
+                "Contact/Grid sides",
+                "names '" + *side + "', which is not a side of a " + std::to_string(dim) + "D grid",
+                dim == 2 ? "list some of left, right, bottom, top, or write 'all'"
+                         : "list some of left, right, bottom, top, back, front, or write 'all'");
+        require(std::find(sides.begin(), side, *side) == side,
+                "Contact/Grid sides",
+                "names '" + *side + "' twice",
+                "list each side once");
+      }
     require(penalty > 0., "Contact/Penalty", "must be positive", "give gamma_c > 0 (e.g. 1000)");
     require(method == Method::none || !sides.empty(),
             "Contact/Grid sides",

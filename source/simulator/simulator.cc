@@ -615,7 +615,8 @@ namespace GelMPM
         pcout << "  note: from t/tau_d = " << t_begin << ", "
               << scene.spaces->n_inexact_extrapolations()
               << " boundary control point(s) next to the grid's edge are extrapolated inexactly "
-                 "(the body has moved within q cells of it; doc/method.md, \"Contact\")\n";
+                 "(the body has moved within q cells of it; a larger 'Background grid' avoids "
+                 "it; doc/method.md, \"Discretisation\")\n";
         inexact_extrapolation_noted = true;
       }
     // The initial body was checked strictly; from here on its motion cannot be helped.
@@ -812,10 +813,11 @@ namespace GelMPM
     const auto excess = control->error_excess(difference, local_error, dt);
     if (control->judge_error(excess))
       {
-        if (control->error_uncontrolled())
+        if (control->error_uncontrolled() && n_uncontrolled_errors++ == 0)
           pcout << "    the step's error estimate exceeds its tolerance " << excess.factor
                 << " times whatever the step: a jump in the last step (a perturbation) or the "
-                   "points' integration noise, not an error of this one; accepted"
+                   "points' integration noise, not an error of this one; accepted (such steps "
+                   "are accepted without a word from here on and counted at the end)"
                 << std::endl;
         return true;
       }
@@ -1093,8 +1095,11 @@ namespace GelMPM
           return stop_on_signal(signal);
         if (control->out_of_steps())
           {
-            pcout << "gelmpm: stopped after 'Time stepping/Maximum steps' = "
-                  << time_stepping.maximum_steps << " steps at t/tau_d = " << time << std::endl;
+            std::ostringstream message;
+            message << "gelmpm: stopped after 'Time stepping/Maximum steps' = "
+                    << time_stepping.maximum_steps << " steps at t/tau_d = " << time;
+            pcout << message.str() << std::endl;
+            pcerr << message.str() << std::endl;
             return 1;
           }
         const StepOutcome outcome = advance();
@@ -1103,8 +1108,12 @@ namespace GelMPM
                                 false);
         if (outcome == StepOutcome::failed)
           {
-            pcout << "gelmpm: the run cannot converge beyond t/tau_d = " << time
-                  << "; results up to there are in " << output_settings.directory << std::endl;
+            // In the log and on stderr, where a failed run's message is looked for.
+            std::ostringstream message;
+            message << "gelmpm: the run cannot converge beyond t/tau_d = " << time
+                    << "; results up to there are in " << output_settings.directory;
+            pcout << message.str() << std::endl;
+            pcerr << message.str() << std::endl;
             write_output();
             return 1;
           }
@@ -1363,6 +1372,11 @@ namespace GelMPM
       }
     if (status == 0)
       pcout << "gelmpm: reached t/tau_d = " << time << " in " << step << " steps" << std::endl;
+    if (n_uncontrolled_errors > 0)
+      pcout << "gelmpm: " << n_uncontrolled_errors
+            << " step(s) accepted with an error estimate above its tolerance whatever the step "
+               "(a perturbation's jump or the points' integration noise)"
+            << std::endl;
     if (!output_settings.test_mode)
       pcout << "gelmpm: " << n_newton_iterations << " Newton iterations, " << n_factorizations
             << " factorisations (" << linear_solver.name() << "), " << n_new_patterns

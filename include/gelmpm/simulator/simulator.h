@@ -277,6 +277,9 @@ namespace GelMPM
     // Over all attempts of the run, for the summary at its end.
     unsigned long n_newton_iterations = 0, n_factorizations = 0, n_new_patterns = 0;
     unsigned long n_repartitions = 0;
+    // Steps accepted although their error estimate exceeds its tolerance whatever the step: said
+    // once when it first happens, counted in the summary.
+    unsigned long n_uncontrolled_errors = 0;
     // On several ranks: the ratio of the largest number of points on a rank to the mean above
     // which the grid is partitioned anew (a repartition costs about one grid reset).
     static constexpr double largest_imbalance         = 1.1;
