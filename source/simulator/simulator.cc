@@ -313,7 +313,7 @@ namespace GelMPM
 
   template <int dim>
   void
-  Simulator<dim>::prepare_output_directory() const
+  Simulator<dim>::prepare_output_directory()
   {
     Collective::on_root(scene.communicator, [this]() {
       prepare_output_directory_here();
@@ -323,7 +323,7 @@ namespace GelMPM
 
   template <int dim>
   void
-  Simulator<dim>::prepare_output_directory_here() const
+  Simulator<dim>::prepare_output_directory_here()
   {
     std::error_code error;
     std::filesystem::create_directories(output_settings.directory, error);
@@ -331,6 +331,8 @@ namespace GelMPM
             "Output/Directory",
             "'" + output_settings.directory + "' cannot be created (" + error.message() + ")",
             "choose a directory you can write to");
+    // Before anything in it is touched: another run may be writing into it.
+    output_lock = std::make_unique<DirectoryLock>(output_settings.directory);
     if (!resume_from)
       remove_earlier_output();
     {
