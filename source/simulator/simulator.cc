@@ -1187,6 +1187,22 @@ namespace GelMPM
                                      std::make_pair(&events_file, "events.csv")})
       if (file->bytes() > 0)
         header.file_sizes[name] = file->bytes();
+    // And every file the .pvd series list, so that a resumed run never lists one that is gone.
+    std::vector<std::string> listed;
+    if (particle_output)
+      for (const auto &[t, name] : particle_output->times_and_names())
+        listed.push_back(name);
+    for (const auto *output : {grid_output.get(), mode_output.get()})
+      if (output)
+        for (const auto &[t, name] : output->times_and_names())
+          listed.push_back(name);
+    for (const auto &name : listed)
+      {
+        std::error_code error;
+        const auto size = std::filesystem::file_size(output_settings.directory + "/" + name, error);
+        if (!error)
+          header.file_sizes[name] = size;
+      }
     // Every rank's points, as its own archive, and the factorised tangent's entries of every
     // rank, gathered on rank 0, which writes the file.
     std::string my_points;
