@@ -14,13 +14,16 @@
 #include <deal.II/base/revision.h>
 #include <deal.II/grid/grid_tools.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <regex>
 #include <sstream>
+#include <unistd.h>
 
 namespace GelMPM
 {
@@ -273,6 +276,23 @@ namespace GelMPM
               "', whose results (parameters.prm, original.prm, statistics.csv, "
               ".vtu files) the run would overwrite",
             "give the run another directory, e.g. --set \"Output/Directory=rerun\"");
+    // What creating or writing into it would fail on only once the run starts.
+    const std::string &directory = output_settings.directory;
+    if (fs::is_symlink(fs::symlink_status(directory, error)) && !fs::exists(directory, error))
+      throw InputError("Output/Directory",
+                       "is '" + directory + "', a symbolic link to '" +
+                         fs::read_symlink(directory, error).string() + "', which does not exist",
+                       "create the directory the link points to, or give another directory");
+    require(!fs::exists(directory, error) || fs::is_directory(directory, error),
+            "Output/Directory",
+            "is '" + directory + "', which is a file, not a directory",
+            "move that file away, or give the run another directory, e.g. --set "
+            "\"Output/Directory=rerun\"");
+    if (fs::is_directory(directory, error) && ::access(directory.c_str(), W_OK | X_OK) != 0)
+      throw InputError("Output/Directory",
+                       "is '" + directory + "', which this user cannot write into (" +
+                         std::strerror(errno) + ")",
+                       "give the directory write permission, or give another directory");
   }
 
 
