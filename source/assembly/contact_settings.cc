@@ -1,9 +1,11 @@
 #include <gelmpm/assembly/contact_settings.h>
+#include <gelmpm/assembly/nitsche_settings.h>
 #include <gelmpm/core/input_error.h>
 
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
+#include <sstream>
 
 namespace GelMPM
 {
@@ -35,7 +37,8 @@ namespace GelMPM
     prm.declare_entry("Penalty",
                       "1000",
                       Patterns::Double(0.),
-                      "gamma_c: the contact penalty is beta_c = gamma_c G / h_u (both methods).");
+                      "gamma_c: the contact penalty is beta_c = gamma_c G / h_u (both methods). At "
+                      "most 1e8.");
     prm.leave_subsection();
   }
 
@@ -73,6 +76,14 @@ namespace GelMPM
                 "list each side once");
       }
     require(penalty > 0., "Contact/Penalty", "must be positive", "give gamma_c > 0 (e.g. 1000)");
+    if (penalty > largest_penalty)
+      {
+        std::ostringstream problem;
+        problem << "is " << penalty
+                << ", above 1e8: the condition number of the tangent grows in proportion to it "
+                   "and the linear solves would keep no digit";
+        throw InputError("Contact/Penalty", problem.str(), "give gamma_c of e.g. 1000");
+      }
     require(method == Method::none || !sides.empty(),
             "Contact/Grid sides",
             "is empty while 'Contact/Method' is " + name,
