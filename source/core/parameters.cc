@@ -179,10 +179,23 @@ namespace GelMPM
       if (const auto at = message.find("no such subsection to be entered: ");
           at != std::string::npos)
         {
-          const auto rest = message.substr(at + 34);
-          return nearest_name_fix(prm,
-                                  dealii::Utilities::trim(rest.substr(0, rest.find('.'))),
-                                  true);
+          // "Section.Subsection." (deal.II separates the path by dots and ends with one).
+          std::string path = dealii::Utilities::trim(message.substr(at + 34));
+          if (!path.empty() && path.back() == '.')
+            path.pop_back();
+          const auto        dot    = path.rfind('.');
+          const std::string name   = path.substr(dot == std::string::npos ? 0 : dot + 1);
+          const std::string parent = dot == std::string::npos ? "" : path.substr(0, dot);
+          const std::string fix    = nearest_name_fix(prm, name, true);
+          // A piece or region left out of its list (e.g. by --set) keeps its subsection.
+          for (const auto &[section, list] :
+               {std::make_pair("Boundary conditions", "Boundary conditions/Pieces"),
+                std::make_pair("Material", "Material/Regions")})
+            if (fix == list_hint && parent == section)
+              return "add '" + name + "' to '" + list +
+                     "', or remove its subsection from the "
+                     "scene file";
+          return fix;
         }
       if (message.find("does not match the given pattern") != std::string::npos)
         return "give a value of the pattern in brackets (the entry's documentation: 'gelmpm "
