@@ -1,9 +1,11 @@
 #include <gelmpm/assembly/contact_settings.h>
+#include <gelmpm/assembly/nitsche_settings.h>
 #include <gelmpm/core/input_error.h>
 
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
+#include <sstream>
 
 namespace GelMPM
 {
@@ -35,7 +37,8 @@ namespace GelMPM
     prm.declare_entry("Penalty",
                       "1000",
                       Patterns::Double(0.),
-                      "gamma_c: the contact penalty is beta_c = gamma_c G / h_u (both methods).");
+                      "gamma_c: the contact penalty is beta_c = gamma_c G / h_u (both methods). At "
+                      "most 1e8.");
     prm.leave_subsection();
   }
 
@@ -53,15 +56,34 @@ namespace GelMPM
     prm.leave_subsection();
 
     const std::vector<std::string> allowed(side_names.begin(), side_names.begin() + 2 * dim);
-    if (sides.size() == 1 && sides[0] == "all")
+    const bool all = std::find(sides.begin(), sides.end(), "all") != sides.end();
+    require(!all || sides.size() == 1,
+            "Contact/Grid sides",
+            "names 'all' (every side) together with other sides",
+            "write 'all' alone, or list the sides without it");
+    if (all)
       sides = allowed;
-    for (const auto &side : sides)
-      require(std::find(allowed.begin(), allowed.end(), side) != allowed.end(),
-              "Contact/Grid sides",
-              "names '" + side + "', which is not a side of a " + std::to_string(dim) + "D grid",
-              dim == 2 ? "list some of left, right, bottom, top, or write 'all'"
-                       : "list some of left, right, bottom, top, back, front, or write 'all'");
+    for (auto side = sides.begin(); side != sides.end(); ++side)
+      {
+        require(std::find(allowed.begin(), allowed.end(), *side) != allowed.end(),
+                "Contact/Grid sides",
+                "names '" + *side + "', which is not a side of a " + std::to_string(dim) + "D grid",
+                dim == 2 ? "list some of left, right, bottom, top, or write 'all'"
+                         : "list some of left, right, bottom, top, back, front, or write 'all'");
+        require(std::find(sides.begin(), side, *side) == side,
+                "Contact/Grid sides",
+                "names '" + *side + "' twice",
+                "list each side once");
+      }
     require(penalty > 0., "Contact/Penalty", "must be positive", "give gamma_c > 0 (e.g. 1000)");
+    if (penalty > largest_penalty)
+      {
+        std::ostringstream problem;
+        problem << "is " << penalty
+                << ", above 1e8: the condition number of the tangent grows in proportion to it "
+                   "and the linear solves would keep no digit";
+        throw InputError("Contact/Penalty", problem.str(), "give gamma_c of e.g. 1000");
+      }
     require(method == Method::none || !sides.empty(),
             "Contact/Grid sides",
             "is empty while 'Contact/Method' is " + name,

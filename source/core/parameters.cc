@@ -6,8 +6,12 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 namespace GelMPM
@@ -175,10 +179,23 @@ namespace GelMPM
       if (const auto at = message.find("no such subsection to be entered: ");
           at != std::string::npos)
         {
-          const auto rest = message.substr(at + 34);
-          return nearest_name_fix(prm,
-                                  dealii::Utilities::trim(rest.substr(0, rest.find('.'))),
-                                  true);
+          // "Section.Subsection." (deal.II separates the path by dots and ends with one).
+          std::string path = dealii::Utilities::trim(message.substr(at + 34));
+          if (!path.empty() && path.back() == '.')
+            path.pop_back();
+          const auto        dot    = path.rfind('.');
+          const std::string name   = path.substr(dot == std::string::npos ? 0 : dot + 1);
+          const std::string parent = dot == std::string::npos ? "" : path.substr(0, dot);
+          const std::string fix    = nearest_name_fix(prm, name, true);
+          // A piece or region left out of its list (e.g. by --set) keeps its subsection.
+          for (const auto &[section, list] :
+               {std::make_pair("Boundary conditions", "Boundary conditions/Pieces"),
+                std::make_pair("Material", "Material/Regions")})
+            if (fix == list_hint && parent == section)
+              return "add '" + name + "' to '" + list +
+                     "', or remove its subsection from the "
+                     "scene file";
+          return fix;
         }
       if (message.find("does not match the given pattern") != std::string::npos)
         return "give a value of the pattern in brackets (the entry's documentation: 'gelmpm "
@@ -387,6 +404,7 @@ namespace GelMPM
         throw InputError("", "in scene file: " + describe(e), fix_for(prm, describe(e)));
       }
     apply_overrides(prm, overrides, skip_undefined);
+    check_numbers_representable(prm);
   }
 
 
@@ -414,6 +432,87 @@ namespace GelMPM
           }
       }
     return values;
+  }
+
+
+  std::vector<std::pair<std::string, std::string>>
+  parameter_entries(const std::string &short_prm)
+  {
+    std::vector<std::pair<std::string, std::string>> result;
+    std::vector<std::string>                         sections;
+    std::istringstream                               in(short_prm);
+    for (std::string line; std::getline(in, line);)
+      {
+        const auto first = line.find_first_not_of(' ');
+        if (first == std::string::npos)
+          continue;
+        line = line.substr(first);
+        if (line.rfind("subsection ", 0) == 0)
+          sections.push_back(line.substr(11));
+        else if (line == "end" && !sections.empty())
+          sections.pop_back();
+        else if (line.rfind("set ", 0) == 0)
+          {
+            const auto  equals = line.find('=');
+            std::string name =
+              line.substr(4, equals == std::string::npos ? std::string::npos : equals - 4);
+            name.erase(name.find_last_not_of(' ') + 1);
+            std::string value =
+              equals == std::string::npos ? std::string() : line.substr(equals + 1);
+            value.erase(0, value.find_first_not_of(' '));
+            std::string path;
+            for (const auto &s : sections)
+              path += s + "/";
+            result.emplace_back(path + name, value);
+          }
+      }
+    return result;
+  }
+
+
+  void
+  check_numbers_representable(const dealii::ParameterHandler &prm)
+  {
+    std::ostringstream text;
+    prm.print_parameters(text, dealii::ParameterHandler::ShortPRM);
+    for (const auto &[path, value] : parameter_entries(text.str()))
+      {
+        // The numbers of an entry: those of lists ('1, 0'), step caps ('5: 0.0125') and
+        // expressions that are a number alone; a number inside an expression ('2*x') is left
+        // to the expression's own checks.
+        std::string token;
+        for (std::size_t k = 0; k <= value.size(); ++k)
+          {
+            const char c = k < value.size() ? value[k] : ' ';
+            if (c != ',' && c != ':' && c != ';' && !std::isspace(static_cast<unsigned char>(c)))
+              {
+                token += c;
+                continue;
+              }
+            if (token.empty())
+              continue;
+            char *end              = nullptr;
+            errno                  = 0;
+            const double x         = std::strtod(token.c_str(), &end);
+            const bool   number    = end == token.c_str() + token.size();
+            const bool   too_big   = errno == ERANGE && std::abs(x) >= 1.;
+            const bool   too_small = (errno == ERANGE && std::abs(x) < 1.) ||
+                                   (x != 0. && std::abs(x) < std::numeric_limits<double>::min());
+            const std::string what =
+              (token == value ? "is " + value + ","
+                              : "is '" + value + "', whose number " + token + " is");
+            if (number && too_big)
+              throw InputError(path,
+                               what + " beyond the largest double (about 1.8e308)",
+                               "give a number of magnitude below 1e308");
+            if (number && too_small)
+              throw InputError(path,
+                               what + " below the smallest normal double (about 2.2e-308), "
+                                      "where arithmetic loses its precision",
+                               "give 0 or a number of magnitude at least 1e-300");
+            token.clear();
+          }
+      }
   }
 
 

@@ -1,12 +1,12 @@
 #include <gelmpm/core/input_error.h>
+#include <gelmpm/core/parameters.h>
 #include <gelmpm/core/version.h>
 #include <gelmpm/io/checkpoint.h>
 #include <gelmpm/io/file_writing.h>
 
-#include <cstring>
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <utility>
 #include <vector>
 
@@ -36,41 +36,6 @@ namespace GelMPM
       for (const unsigned char c : bytes)
         hash = (hash ^ c) * 1099511628211ull;
       return hash;
-    }
-
-    /** The entries of a ShortPRM text as (Section/Entry, value), in the order printed. */
-    std::vector<std::pair<std::string, std::string>>
-    entries(const std::string &parameters)
-    {
-      std::vector<std::pair<std::string, std::string>> result;
-      std::vector<std::string>                         sections;
-      std::istringstream                               in(parameters);
-      for (std::string line; std::getline(in, line);)
-        {
-          const auto first = line.find_first_not_of(' ');
-          if (first == std::string::npos)
-            continue;
-          line = line.substr(first);
-          if (line.rfind("subsection ", 0) == 0)
-            sections.push_back(line.substr(11));
-          else if (line == "end" && !sections.empty())
-            sections.pop_back();
-          else if (line.rfind("set ", 0) == 0)
-            {
-              const auto  equals = line.find('=');
-              std::string name =
-                line.substr(4, equals == std::string::npos ? std::string::npos : equals - 4);
-              name.erase(name.find_last_not_of(' ') + 1);
-              std::string value =
-                equals == std::string::npos ? std::string() : line.substr(equals + 1);
-              value.erase(0, value.find_first_not_of(' '));
-              std::string path;
-              for (const auto &s : sections)
-                path += s + "/";
-              result.emplace_back(path + name, value);
-            }
-        }
-      return result;
     }
 
     InputError
@@ -132,7 +97,7 @@ namespace GelMPM
   checkpoint_parameters(const std::string &parameters)
   {
     std::string result;
-    for (const auto &[path, value] : entries(parameters))
+    for (const auto &[path, value] : parameter_entries(parameters))
       if (path.rfind("Checkpoint/", 0) != 0 && path != "Output/Directory" &&
           path != "Time stepping/End time")
         result += path + " = " + value + "\n";
@@ -201,18 +166,34 @@ namespace GelMPM
 
   CheckpointReader::CheckpointReader(const std::string &directory, const std::string &parameters)
   {
+    namespace fs           = std::filesystem;
     const std::string path = checkpoint_path(directory);
-    std::ifstream     in(path, std::ios::binary);
-    if (!in)
+    std::error_code   error;
+    if (!fs::exists(path, error))
       throw refusal("found no checkpoint in '" + directory + "' (no file checkpoint.bin)",
                     "resume the scene whose 'Output/Directory' holds the checkpoint, " +
                       start_afresh +
                       " with 'Checkpoint/Interval steps' or 'Interval minutes' set so that it "
                       "writes checkpoints");
-    const std::string contents((std::istreambuf_iterator<char>(in)),
-                               std::istreambuf_iterator<char>());
-    const auto        newline = contents.find('\n');
-    const std::string line    = contents.substr(0, newline == std::string::npos ? 0 : newline + 1);
+    // Read no more than the file holds: a directory, a device such as /dev/zero or a pipe has
+    // no size to bound the read by.
+    if (!fs::is_regular_file(path, error))
+      throw refusal("'" + path + "' is not a checkpoint file but a " +
+                      (fs::is_directory(path, error) ? "directory" : "device, pipe or socket"),
+                    "restore the checkpoint that the run wrote, " + start_afresh);
+    const std::uintmax_t file_size = fs::file_size(path, error);
+    std::ifstream        in(path, std::ios::binary);
+    if (error || !in)
+      throw refusal("'" + path + "' cannot be read" +
+                      (error ? " (" + error.message() + ")" : std::string()),
+                    "give the file read permission, " + start_afresh);
+
+    // The first line, of at most a few hundred bytes.
+    std::string head(std::min<std::uintmax_t>(file_size, 256), '\0');
+    in.read(head.data(), head.size());
+    head.resize(in.gcount());
+    const auto        newline = head.find('\n');
+    const std::string line    = head.substr(0, newline == std::string::npos ? 0 : newline + 1);
     if (line.rfind("GelMPM checkpoint", 0) != 0)
       throw refusal("'" + path + "' is not a GelMPM checkpoint",
                     "restore the checkpoint that the run wrote, " + start_afresh);
@@ -224,22 +205,27 @@ namespace GelMPM
 
     std::uint64_t size = 0, sum = 0;
     const auto    expected = line.size() + sizeof(size) + sizeof(sum);
-    if (contents.size() >= expected)
+    in.clear();
+    in.seekg(line.size());
+    if (file_size >= expected)
       {
-        std::memcpy(&size, contents.data() + line.size(), sizeof(size));
-        std::memcpy(&sum, contents.data() + line.size() + sizeof(size), sizeof(sum));
+        in.read(reinterpret_cast<char *>(&size), sizeof(size));
+        in.read(reinterpret_cast<char *>(&sum), sizeof(sum));
       }
     const std::string damaged = "'" + path + "' is damaged: ";
     const std::string restore = "restore the checkpoint that the run wrote, " + start_afresh;
-    if (contents.size() < expected || contents.size() - expected != size)
-      throw refusal(damaged + "it has " + std::to_string(contents.size()) +
+    if (file_size < expected || file_size - expected != size)
+      throw refusal(damaged + "it has " + std::to_string(file_size) +
                       " bytes where it was "
                       "written with " +
-                      (contents.size() < expected ? std::string("more")
-                                                  : std::to_string(expected + size)) +
+                      (file_size < expected ? std::string("more")
+                                            : std::to_string(expected + size)) +
                       " (truncated or appended to)",
                     restore);
-    const std::string bytes = contents.substr(expected);
+    std::string bytes(size, '\0');
+    in.read(bytes.data(), size);
+    if (static_cast<std::uint64_t>(in.gcount()) != size)
+      throw refusal(damaged + "it ended while it was read (changed meanwhile?)", restore);
     if (checksum(bytes) != sum)
       throw refusal(damaged + "its contents do not match the checksum written with them", restore);
 

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <unistd.h>
 
 namespace GelMPM
 {
@@ -162,6 +163,46 @@ namespace GelMPM
 
   template <int dim>
   void
+  MaterialPointGenerator<dim>::check_point_memory(const Geometry<dim>       &geometry,
+                                                  const BackgroundGrid<dim> &grid) const
+  {
+    // About as many points as the cells whose centre lies in the body hold: beyond the
+    // machine's memory their allocation fails late (std::bad_alloc), naming no entry. A lower
+    // bound of what a point costs: its properties and its shape values in the step's cache.
+    const double  bytes_per_point = dim == 2 ? 512. : 2048.;
+    unsigned long n_cells = 1, cells_inside = 0;
+    for (unsigned int d = 0; d < dim; ++d)
+      n_cells *= grid.n_cells[d];
+    for (unsigned long c = 0; c < n_cells; ++c)
+      {
+        dealii::Point<dim> centre;
+        unsigned long      rest = c;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            centre[d] = grid.lower[d] + (rest % grid.n_cells[d] + 0.5) * grid.cell_size(d);
+            rest /= grid.n_cells[d];
+          }
+        cells_inside += geometry.inside(centre) ? 1 : 0;
+      }
+    const double points = cells_inside * std::pow(static_cast<double>(points_per_cell), dim);
+    const double physical =
+      static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
+    if (!(physical > 0.) || points * bytes_per_point <= physical)
+      return;
+    std::ostringstream problem;
+    problem.precision(3);
+    problem << "is " << points_per_cell << ": the body's " << cells_inside
+            << " cells would hold about " << points << " volume points, which need at least "
+            << points * bytes_per_point / 1e9 << " GB of memory, more than this machine's "
+            << physical / 1e9 << " GB";
+    throw InputError("Material points/Points per cell",
+                     problem.str(),
+                     "give fewer points per cell, or fewer cells ('Background grid/Cells')");
+  }
+
+
+  template <int dim>
+  void
   MaterialPointGenerator<dim>::generate_at(const Geometry<dim>              &geometry,
                                            const BackgroundGrid<dim>        &grid,
                                            const dealii::Triangulation<dim> &tria,
@@ -244,6 +285,7 @@ namespace GelMPM
             n_sub *= n;
             n_cells *= grid.n_cells[d];
           }
+        check_point_memory(geometry, grid);
         bool in_boxes = false;
         for (unsigned int c = 0; c < n_cells; ++c)
           for (unsigned int s = 0; s < n_sub; ++s)

@@ -526,6 +526,36 @@ namespace GelMPM
                             ? "quadrilaterals or triangles only (Gmsh: Mesh.RecombineAll = 1; "
                               "Mesh.SubdivisionAlgorithm = 1 for quadrilaterals only)"
                             : "hexahedra or tetrahedra only"));
+    // An inverted or self-intersecting cell gives its points negative volumes (while the total
+    // may still match): the Jacobian must be positive at every corner (for a bilinear
+    // quadrilateral that is where it is smallest; a simplex's is constant).
+    {
+      const bool simplex       = mesh->all_reference_cells_are_simplex();
+      const auto [fe, mapping] = linear_element<dim>(simplex);
+      dealii::FEValues<dim> corners(*mapping,
+                                    *fe,
+                                    simplex ? dealii::Quadrature<dim>(dealii::QGaussSimplex<dim>(1))
+                                            : dealii::Quadrature<dim>(dealii::QTrapezoid<dim>()),
+                                    dealii::update_JxW_values);
+      for (const auto &cell : mesh->active_cell_iterators())
+        {
+          corners.reinit(cell);
+          for (const unsigned int k : corners.quadrature_point_indices())
+            if (!(corners.JxW(k) > 0.))
+              {
+                std::ostringstream vertices;
+                for (const unsigned int v : cell->vertex_indices())
+                  vertices << (v > 0 ? ", " : "") << text(cell->vertex(v));
+                throw InputError(entry,
+                                 "'" + file_name +
+                                   "' has a flat, inverted or crossed cell with the vertices " +
+                                   vertices.str() +
+                                   ": material points in it would get volumes of zero or below",
+                                 "remesh the body so that every cell is convex and none is "
+                                 "flat (Gmsh: Tools > Statistics shows the cells' quality)");
+              }
+        }
+    }
     std::ifstream in(file_name);
     group_names = read_physical_names(in, dim - 1);
     std::ifstream again(file_name);

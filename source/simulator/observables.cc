@@ -129,7 +129,7 @@ namespace GelMPM
                       "differences| of mu; the mean over rows, divided by the range of mu over "
                       "all volume points. Spurious (inf-sup) pressure modes make it of order one; "
                       "a smooth field gives a small value that shrinks with the point spacing "
-                      "(doc/flat_punch.md).");
+                      "(doc/flat_punch.md). 2D only.");
     prm.leave_subsection();
   }
 
@@ -168,6 +168,13 @@ namespace GelMPM
         pore_centres.push_back(centre);
       }
     prm.leave_subsection();
+    // Its rows are the points of equal initial y, ordered by x: lines in 2D, but in 3D planes
+    // whose points in x order jump between lines of different z.
+    require(!mu_oscillation || dim == 2,
+            "Observables/Chemical potential oscillation",
+            "is set in a 3D scene, but it is measured along rows of points of equal initial y, "
+            "which are lines in 2D only",
+            "set it to false in 3D");
     pore_piece = -1;
     if (!pore_name.empty())
       {

@@ -14,13 +14,16 @@
 #include <deal.II/base/revision.h>
 #include <deal.II/grid/grid_tools.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <regex>
 #include <sstream>
+#include <unistd.h>
 
 namespace GelMPM
 {
@@ -104,6 +107,30 @@ namespace GelMPM
             "Stability/Perturbation direction",
             "has fewer components than the scene's dimension " + std::to_string(dim),
             "give one component per coordinate direction");
+    {
+      double in_plane = 0.;
+      for (unsigned int d = 0; d < dim; ++d)
+        in_plane += stability.perturbation_direction[d] * stability.perturbation_direction[d];
+      require(stability.perturbation_amplitude == 0. || in_plane > 0.,
+              "Stability/Perturbation direction",
+              "has no component in the scene's " + std::to_string(dim) +
+                " coordinate directions (a third component is ignored in 2D)",
+              "give the direction the gel is to leave the unstable branch in, e.g. '1, 0'");
+    }
+    // Bracket ends closer than this are one time for the step arithmetic (times are sums of
+    // many steps, compared to relative_time_tolerance): a narrower bracket would end at zero
+    // width, both of its ends on the same side of the loss of stability.
+    const double narrowest_bracket = 100. * relative_time_tolerance * time_stepping.end_time;
+    if (stability.bisection_tolerance > 0. && stability.bisection_tolerance < narrowest_bracket)
+      {
+        std::ostringstream problem, fix;
+        problem << "is " << stability.bisection_tolerance
+                << ", below 1e-10 times 'Time stepping/End time' (" << narrowest_bracket
+                << "), the narrowest bracket that the step arithmetic resolves";
+        fix << "give at least " << narrowest_bracket
+            << " (tau_d), e.g. 1e-3, or 0 for no bisection";
+        throw InputError("Stability/Bisection tolerance", problem.str(), fix.str());
+      }
     // Checks that need more than one section: build the spaces once (odd cell counts with
     // subdivision are reported here, before anything is written).
     // The material points too: a body outside the grid or a piece that selects nothing is
@@ -125,6 +152,16 @@ namespace GelMPM
         resume_from        = std::make_unique<CheckpointReader>(output_settings.directory,
                                                          checkpoint_parameters(parameters_as_used));
         const auto &header = resume_from->header();
+        if (time_stepping.end_time < header.time * (1. - relative_time_tolerance))
+          {
+            std::ostringstream problem, fix;
+            problem << "is " << time_stepping.end_time << ", before the time of the checkpoint in '"
+                    << output_settings.directory << "' (t/tau_d = " << header.time << ", step "
+                    << header.step << "): a resumed run cannot go back";
+            fix << "give an End time of at least " << header.time
+                << " to continue the run, or run the scene from the start (without --resume)";
+            throw InputError("Time stepping/End time", problem.str(), fix.str());
+          }
         for (const auto &[name, size] : header.file_sizes)
           {
             const std::string path = output_settings.directory + "/" + name;
@@ -239,6 +276,23 @@ namespace GelMPM
               "', whose results (parameters.prm, original.prm, statistics.csv, "
               ".vtu files) the run would overwrite",
             "give the run another directory, e.g. --set \"Output/Directory=rerun\"");
+    // What creating or writing into it would fail on only once the run starts.
+    const std::string &directory = output_settings.directory;
+    if (fs::is_symlink(fs::symlink_status(directory, error)) && !fs::exists(directory, error))
+      throw InputError("Output/Directory",
+                       "is '" + directory + "', a symbolic link to '" +
+                         fs::read_symlink(directory, error).string() + "', which does not exist",
+                       "create the directory the link points to, or give another directory");
+    require(!fs::exists(directory, error) || fs::is_directory(directory, error),
+            "Output/Directory",
+            "is '" + directory + "', which is a file, not a directory",
+            "move that file away, or give the run another directory, e.g. --set "
+            "\"Output/Directory=rerun\"");
+    if (fs::is_directory(directory, error) && ::access(directory.c_str(), W_OK | X_OK) != 0)
+      throw InputError("Output/Directory",
+                       "is '" + directory + "', which this user cannot write into (" +
+                         std::strerror(errno) + ")",
+                       "give the directory write permission, or give another directory");
   }
 
 
@@ -279,7 +333,7 @@ namespace GelMPM
 
   template <int dim>
   void
-  Simulator<dim>::prepare_output_directory() const
+  Simulator<dim>::prepare_output_directory()
   {
     Collective::on_root(scene.communicator, [this]() {
       prepare_output_directory_here();
@@ -289,7 +343,7 @@ namespace GelMPM
 
   template <int dim>
   void
-  Simulator<dim>::prepare_output_directory_here() const
+  Simulator<dim>::prepare_output_directory_here()
   {
     std::error_code error;
     std::filesystem::create_directories(output_settings.directory, error);
@@ -297,6 +351,8 @@ namespace GelMPM
             "Output/Directory",
             "'" + output_settings.directory + "' cannot be created (" + error.message() + ")",
             "choose a directory you can write to");
+    // Before anything in it is touched: another run may be writing into it.
+    output_lock = std::make_unique<DirectoryLock>(output_settings.directory);
     if (!resume_from)
       remove_earlier_output();
     {
@@ -581,7 +637,8 @@ namespace GelMPM
         pcout << "  note: from t/tau_d = " << t_begin << ", "
               << scene.spaces->n_inexact_extrapolations()
               << " boundary control point(s) next to the grid's edge are extrapolated inexactly "
-                 "(the body has moved within q cells of it; doc/method.md, \"Contact\")\n";
+                 "(the body has moved within q cells of it; a larger 'Background grid' avoids "
+                 "it; doc/method.md, \"Discretisation\")\n";
         inexact_extrapolation_noted = true;
       }
     // The initial body was checked strictly; from here on its motion cannot be helped.
@@ -780,10 +837,11 @@ namespace GelMPM
     const auto excess = control->error_excess(difference, local_error, dt);
     if (control->judge_error(excess))
       {
-        if (control->error_uncontrolled())
+        if (control->error_uncontrolled() && n_uncontrolled_errors++ == 0)
           pcout << "    the step's error estimate exceeds its tolerance " << excess.factor
                 << " times whatever the step: a jump in the last step (a perturbation) or the "
-                   "points' integration noise, not an error of this one; accepted"
+                   "points' integration noise, not an error of this one; accepted (such steps "
+                   "are accepted without a word from here on and counted at the end)"
                 << std::endl;
         return true;
       }
@@ -1061,8 +1119,11 @@ namespace GelMPM
           return stop_on_signal(signal);
         if (control->out_of_steps())
           {
-            pcout << "gelmpm: stopped after 'Time stepping/Maximum steps' = "
-                  << time_stepping.maximum_steps << " steps at t/tau_d = " << time << std::endl;
+            std::ostringstream message;
+            message << "gelmpm: stopped after 'Time stepping/Maximum steps' = "
+                    << time_stepping.maximum_steps << " steps at t/tau_d = " << time;
+            pcout << message.str() << std::endl;
+            pcerr << message.str() << std::endl;
             return 1;
           }
         const StepOutcome outcome = advance();
@@ -1071,8 +1132,12 @@ namespace GelMPM
                                 false);
         if (outcome == StepOutcome::failed)
           {
-            pcout << "gelmpm: the run cannot converge beyond t/tau_d = " << time
-                  << "; results up to there are in " << output_settings.directory << std::endl;
+            // In the log and on stderr, where a failed run's message is looked for.
+            std::ostringstream message;
+            message << "gelmpm: the run cannot converge beyond t/tau_d = " << time
+                    << "; results up to there are in " << output_settings.directory;
+            pcout << message.str() << std::endl;
+            pcerr << message.str() << std::endl;
             write_output();
             return 1;
           }
@@ -1144,6 +1209,22 @@ namespace GelMPM
                                      std::make_pair(&events_file, "events.csv")})
       if (file->bytes() > 0)
         header.file_sizes[name] = file->bytes();
+    // And every file the .pvd series list, so that a resumed run never lists one that is gone.
+    std::vector<std::string> listed;
+    if (particle_output)
+      for (const auto &[t, name] : particle_output->times_and_names())
+        listed.push_back(name);
+    for (const auto *output : {grid_output.get(), mode_output.get()})
+      if (output)
+        for (const auto &[t, name] : output->times_and_names())
+          listed.push_back(name);
+    for (const auto &name : listed)
+      {
+        std::error_code error;
+        const auto size = std::filesystem::file_size(output_settings.directory + "/" + name, error);
+        if (!error)
+          header.file_sizes[name] = size;
+      }
     // Every rank's points, as its own archive, and the factorised tangent's entries of every
     // rank, gathered on rank 0, which writes the file.
     std::string my_points;
@@ -1331,6 +1412,11 @@ namespace GelMPM
       }
     if (status == 0)
       pcout << "gelmpm: reached t/tau_d = " << time << " in " << step << " steps" << std::endl;
+    if (n_uncontrolled_errors > 0)
+      pcout << "gelmpm: " << n_uncontrolled_errors
+            << " step(s) accepted with an error estimate above its tolerance whatever the step "
+               "(a perturbation's jump or the points' integration noise)"
+            << std::endl;
     if (!output_settings.test_mode)
       pcout << "gelmpm: " << n_newton_iterations << " Newton iterations, " << n_factorizations
             << " factorisations (" << linear_solver.name() << "), " << n_new_patterns

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <limits>
 
 namespace GelMPM
@@ -117,15 +116,10 @@ namespace GelMPM
   TimeStepping::parse_parameters(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection("Time stepping");
-    characteristic_length = prm.get_double("Characteristic length");
-    initial_step          = prm.get_double("Initial step");
-    end_time              = prm.get_double("End time");
-    {
-      // Not get_double(): deal.II refuses to convert a denormal number with an exception that
-      // does not name the entry.
-      const std::string text = prm.get("Minimum step");
-      minimum_step           = std::strtod(text.c_str(), nullptr);
-    }
+    characteristic_length       = prm.get_double("Characteristic length");
+    initial_step                = prm.get_double("Initial step");
+    end_time                    = prm.get_double("End time");
+    minimum_step                = prm.get_double("Minimum step");
     growth_factor               = prm.get_double("Growth factor");
     growth_below                = prm.get_integer("Growth below iterations");
     cut_factor                  = prm.get_double("Cut factor");

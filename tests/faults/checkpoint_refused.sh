@@ -1,7 +1,8 @@
 # --resume refuses, with one message, exit status 2 and nothing written: an output directory
 # without a checkpoint, a checkpoint written for other parameters, by another version, a
-# truncated or altered checkpoint, and a statistics.csv shorter than the checkpoint counted. A
-# later End time is no other scene: it continues the finished run.
+# truncated or altered checkpoint, a statistics.csv shorter than the checkpoint counted, an End
+# time before the checkpoint's time, and a .vtu file that particles.pvd listed, deleted. A later
+# End time is no other scene: it continues the finished run.
 source "$(dirname "$0")/common.sh"
 options=(--set "Time stepping/End time=1" --set "Checkpoint/Interval steps=5")
 "$gelmpm" "$scene" "${options[@]}" >run.log 2>&1
@@ -49,6 +50,9 @@ head -c $(($(stat -c %s good/statistics.csv) / 2)) good/statistics.csv >results/
 refused "statistics.csv cut short" "needs 'results/statistics.csv' as it was then"
 cp good/statistics.csv results/
 
+refused "End time before the checkpoint" "'Time stepping/End time' is 0.5, before the time of the checkpoint" \
+  --set "Time stepping/End time=0.5"
+
 rows=$(wc -l <results/statistics.csv)
 "$gelmpm" "$scene" "${options[@]}" --resume --set "Time stepping/End time=1.5" >stdout 2>stderr
 check $? "a later End time: the resumed run failed: $(cat stderr)"
@@ -58,4 +62,12 @@ cp good/statistics.csv good/checkpoint.bin results/
 
 rm results/checkpoint.bin
 refused "no checkpoint" "found no checkpoint in 'results'"
+
+rm -rf results
+particles=(--set "Output/Write particles=true" --set "Output/Interval steps=5")
+"$gelmpm" "$scene" "${options[@]}" "${particles[@]}" >run.log 2>&1
+check $? "the run that writes particles and a checkpoint failed"
+rm results/particles-00001.vtu
+refused "a .vtu that particles.pvd listed, deleted" \
+  "needs 'results/particles-00001.vtu' as it was then" "${particles[@]}"
 finish

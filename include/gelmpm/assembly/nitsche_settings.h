@@ -6,6 +6,13 @@
 namespace GelMPM
 {
   /**
+   * The largest penalty (Nitsche and contact) accepted: the condition number of the tangent grows
+   * in proportion to a penalty (doc/extremes.md: 7e14 at gamma_u = 1e6 on a coarse grid), and far
+   * above this the linear solves keep no digit, so that every step fails without naming a cause.
+   */
+  constexpr double largest_penalty = 1e8;
+
+  /**
    * @brief The "Nitsche" section: weak imposition of essential conditions on surface material
    * points (paper eq. (32), §3.1).
    *

@@ -5,6 +5,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace GelMPM
@@ -107,6 +108,24 @@ namespace GelMPM
                   const std::string              &entry,
                   const std::string              &entry_path,
                   const unsigned int              n);
+
+  /**
+   * The entries of a parameter text in deal.II's ShortPRM format (ParameterHandler::
+   * print_parameters()) as ("Section/Subsection/Entry", value), in the order printed.
+   */
+  std::vector<std::pair<std::string, std::string>>
+  parameter_entries(const std::string &short_prm);
+
+  /**
+   * Throw an InputError for the first entry of @p prm whose value holds a number that a double
+   * cannot carry: one below the smallest normal double (a denormal such as 1e-320, or one that
+   * underflows to 0 such as 1e-400) or beyond the largest. deal.II's patterns accept such a
+   * number, and ParameterHandler::get_double() then fails an assertion that names no entry.
+   * read_scene_file() calls it once the file and the overrides are read, so every numeric entry
+   * (lists and function expressions included) is checked in this one place.
+   */
+  void
+  check_numbers_representable(const dealii::ParameterHandler &prm);
 
   /** @p x as the text of a parameter entry, with all its digits (round-trips exactly). */
   std::string

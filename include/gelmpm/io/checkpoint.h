@@ -55,7 +55,8 @@ namespace GelMPM
     unsigned int step = 0;
     double       time = 0.;
     /** Bytes of each .csv file (by file name in the output directory) at the checkpoint: a
-     * resumed run cuts off the rows written after it. */
+     * resumed run cuts off the rows written after it; and of each file that a .pvd series
+     * lists, which a resumed run needs as it was. */
     std::map<std::string, std::uint64_t> file_sizes;
 
     /** Boost serialization. */

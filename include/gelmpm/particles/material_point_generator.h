@@ -78,6 +78,14 @@ namespace GelMPM
                 const double                             mu_0,
                 dealii::Particles::ParticleHandler<dim> &particles) const;
 
+    /**
+     * Throw InputError ('Material points/Points per cell') if the volume points of a body given
+     * by boxes or a level set would need more than the machine's memory (estimated from the
+     * cells whose centre lies in the body), before any is made.
+     */
+    void
+    check_point_memory(const Geometry<dim> &geometry, const BackgroundGrid<dim> &grid) const;
+
   public:
     unsigned int points_per_cell         = 3;
     unsigned int surface_points_per_edge = 2;

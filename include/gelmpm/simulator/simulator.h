@@ -4,6 +4,7 @@
 #include <gelmpm/core/parameters.h>
 #include <gelmpm/core/sparse_entries.h>
 #include <gelmpm/io/checkpoint.h>
+#include <gelmpm/io/directory_lock.h>
 #include <gelmpm/io/grid_output.h>
 #include <gelmpm/io/output_settings.h>
 #include <gelmpm/io/particle_output.h>
@@ -110,8 +111,9 @@ namespace GelMPM
     void
     print_header();
 
+    /** Create and lock the output directory, remove earlier output, write the parameters. */
     void
-    prepare_output_directory() const;
+    prepare_output_directory();
     /** Remove the files an earlier run wrote to the output directory (only names gelmpm writes). */
     void
     remove_earlier_output() const;
@@ -127,7 +129,7 @@ namespace GelMPM
 
     /** prepare_output_directory()'s work, on the one rank that does it. */
     void
-    prepare_output_directory_here() const;
+    prepare_output_directory_here();
 
     /** The volume points in each cell of the background grid, over all ranks. */
     std::vector<unsigned int>
@@ -277,6 +279,9 @@ namespace GelMPM
     // Over all attempts of the run, for the summary at its end.
     unsigned long n_newton_iterations = 0, n_factorizations = 0, n_new_patterns = 0;
     unsigned long n_repartitions = 0;
+    // Steps accepted although their error estimate exceeds its tolerance whatever the step: said
+    // once when it first happens, counted in the summary.
+    unsigned long n_uncontrolled_errors = 0;
     // On several ranks: the ratio of the largest number of points on a rank to the mean above
     // which the grid is partitioned anew (a repartition costs about one grid reset).
     static constexpr double largest_imbalance         = 1.1;
@@ -285,6 +290,9 @@ namespace GelMPM
     std::vector<double>     mu_projection;           // points' mu on the step's basis
     std::vector<double>     displacement_projection; // last step's motion on the step's basis
     double                  last_dt = 0.;            // the last accepted step (0 before the first)
+
+    // Held by rank 0 from the preparation of the output directory to the end of the run.
+    std::unique_ptr<DirectoryLock> output_lock;
 
     CheckpointSettings checkpoint_settings;
     // Read from a checkpoint: the factorisation to restore at the first step (see
