@@ -33,7 +33,7 @@ namespace
 
     if (cl.print_parameters)
       {
-        prm.print_parameters(std::cout, dealii::ParameterHandler::PRM);
+        GelMPM::print_parameters_with_patterns(prm, std::cout);
         return 0;
       }
 

@@ -5,13 +5,17 @@
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <limits>
+#include <map>
 #include <sstream>
 
 namespace GelMPM
@@ -512,6 +516,69 @@ namespace GelMPM
                                "give 0 or a number of magnitude at least 1e-300");
             token.clear();
           }
+      }
+  }
+
+
+  void
+  print_parameters_with_patterns(const dealii::ParameterHandler &prm, std::ostream &out)
+  {
+    // The patterns, from deal.II's JSON listing, whose names are mangled ("_20" for a space).
+    const auto demangle = [](const std::string &name) {
+      std::string result;
+      for (std::size_t k = 0; k < name.size(); ++k)
+        if (name[k] == '_' && k + 2 < name.size() &&
+            std::isxdigit(static_cast<unsigned char>(name[k + 1])) &&
+            std::isxdigit(static_cast<unsigned char>(name[k + 2])))
+          {
+            result += static_cast<char>(std::stoi(name.substr(k + 1, 2), nullptr, 16));
+            k += 2;
+          }
+        else
+          result += name[k];
+      return result;
+    };
+    std::map<std::string, std::string> patterns;
+    {
+      std::stringstream json;
+      prm.print_parameters(json, dealii::ParameterHandler::JSON);
+      boost::property_tree::ptree tree;
+      boost::property_tree::read_json(json, tree);
+      const std::function<void(const boost::property_tree::ptree &, const std::string &)> walk =
+        [&](const boost::property_tree::ptree &node, const std::string &path) {
+          for (const auto &[name, child] : node)
+            {
+              const std::string child_path = path + demangle(name);
+              if (const auto pattern = child.get_optional<std::string>("pattern_description"))
+                patterns[child_path] = *pattern;
+              else
+                walk(child, child_path + "/");
+            }
+        };
+      walk(tree, "");
+    }
+
+    std::stringstream text;
+    prm.print_parameters(text, dealii::ParameterHandler::PRM);
+    std::vector<std::string> sections;
+    for (std::string line; std::getline(text, line);)
+      {
+        const auto        first   = line.find_first_not_of(' ');
+        const std::string trimmed = first == std::string::npos ? "" : line.substr(first);
+        if (trimmed.rfind("subsection ", 0) == 0)
+          sections.push_back(dealii::Utilities::trim(trimmed.substr(11)));
+        else if (trimmed == "end" && !sections.empty())
+          sections.pop_back();
+        else if (trimmed.rfind("set ", 0) == 0)
+          {
+            std::string path;
+            for (const auto &section : sections)
+              path += section + "/";
+            path += dealii::Utilities::trim(trimmed.substr(4, trimmed.find('=') - 4));
+            if (const auto pattern = patterns.find(path); pattern != patterns.end())
+              out << line.substr(0, first) << "# Pattern: " << pattern->second << '\n';
+          }
+        out << line << '\n';
       }
   }
 

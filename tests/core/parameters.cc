@@ -2,8 +2,9 @@
 // (and text without '=' or without an entry is an InputError); the command line is parsed into
 // scene file, overrides and flags (an unknown option is an InputError); a scene file is read
 // strictly, so that an unknown entry or a value outside its pattern is one InputError naming it;
-// a list entry of the wrong length or with a non-number names its entry; entry_value() gives the
-// text that reads back to the same double.
+// a list entry of the wrong length or with a non-number names its entry; the listing of
+// --print-parameters gives every entry's pattern; entry_value() gives the text that reads back to
+// the same double.
 #include <gelmpm/core/input_error.h>
 #include <gelmpm/core/parameters.h>
 
@@ -13,6 +14,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -149,6 +151,20 @@ main()
     std::cout << "  " << pattern << std::endl;
     check(pattern.find("Diffusivity") != std::string::npos,
           "a value outside its pattern names the entry");
+  }
+
+  std::cout << "print_parameters_with_patterns" << std::endl;
+  {
+    dealii::ParameterHandler prm;
+    declare(prm);
+    std::ostringstream out;
+    print_parameters_with_patterns(prm, out);
+    const std::string text = out.str();
+    check(text.find("  # Pattern: [Double 0...MAX_DOUBLE (inclusive)]\n  set Diffusivity = 1") !=
+            std::string::npos,
+          "the listing gives an entry's pattern right above it");
+    check(text.find("# Pattern: [Anything]\n  set Corner") != std::string::npos,
+          "and that of every other entry");
   }
 
   std::cout << "entry_value" << std::endl;

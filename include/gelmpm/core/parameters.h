@@ -4,6 +4,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <ostream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -126,6 +127,14 @@ namespace GelMPM
    */
   void
   check_numbers_representable(const dealii::ParameterHandler &prm);
+
+  /**
+   * Write @p prm as a parameter file (deal.II's PRM format: every entry with its documentation
+   * and value) in which each entry's documentation ends with the pattern its values must match
+   * ("# Pattern: [Double 0...MAX_DOUBLE (inclusive)]"): what `gelmpm --print-parameters` shows.
+   */
+  void
+  print_parameters_with_patterns(const dealii::ParameterHandler &prm, std::ostream &out);
 
   /** @p x as the text of a parameter entry, with all its digits (round-trips exactly). */
   std::string
