@@ -313,14 +313,12 @@ namespace GelMPM
       };
 
       // The stretch of surface between two places [s_i, s_j] (s_i <= s_j, both in the list's
-      // order) and its length; on a closed curve the shorter way round, which may run past its
-      // end: [s_j, s_i + L].
+      // order); on a closed curve the shorter way round, which may run past its end:
+      // [s_j, s_i + L].
       const auto stretch = [&](const double s_i, const double s_j, const unsigned int c) {
-        const double direct = s_j - s_i;
-        if (polyline.closed[c] && polyline.length_0[c] - direct < direct)
-          return std::make_pair(std::make_pair(s_j, s_i + polyline.length_0[c]),
-                                polyline.length_0[c] - direct);
-        return std::make_pair(std::make_pair(s_i, s_j), direct);
+        if (polyline.closed[c] && polyline.length_0[c] - (s_j - s_i) < s_j - s_i)
+          return std::make_pair(s_j, s_i + polyline.length_0[c]);
+        return std::make_pair(s_i, s_j);
       };
 
       std::vector<std::pair<double, double>> folded;
@@ -356,8 +354,7 @@ namespace GelMPM
               folded.emplace_back(std::min(s[i], s[j]), std::max(s[i], s[j]));
             else if (current_arc(i, segment.a) > arc_length &&
                      current_arc(i, segment.b) > arc_length)
-              folded.push_back(
-                stretch(std::min(s[i], s[j]), std::max(s[i], s[j]), curve_of[i]).first);
+              folded.push_back(stretch(std::min(s[i], s[j]), std::max(s[i], s[j]), curve_of[i]));
           }
 
       for (unsigned int k = 0; k < segments.size(); ++k)

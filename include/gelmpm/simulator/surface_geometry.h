@@ -100,14 +100,14 @@ namespace GelMPM
 
     /**
      * The number of folds of @p polyline: the disjoint stretches of surface that are folded onto
-     * themselves. A pair of points folds the stretch between them when they are farther apart
-     * than @p arc_length along the surface in the initial configuration (on a closed curve the
-     * shorter way round; points of different curves always) but closer than
-     * @p approach_distance now (self-approach); two crossing segments (PoreGeometry's
-     * self-intersection) fold the stretch between them whatever its length. Stretches that
-     * overlap or are less than @p arc_length apart along the surface make one fold: the nested
-     * pairs of the two flanks of one crease, and on a closed curve whose sides touch the pairs
-     * that take one way round and those that take the other (also across its first point).
+     * themselves. A point and a segment fold the stretch between them when both ends of the
+     * segment are farther than @p arc_length from the point along the current surface (on a
+     * closed curve the shorter way round; points of different curves always) but the point is
+     * closer than @p approach_distance to the segment (self-approach); two crossing segments
+     * (PoreGeometry's self-intersection) fold the stretch between them whatever its length.
+     * Stretches that overlap or are less than @p arc_length apart along the surface make one fold:
+     * the nested pairs of the two flanks of one crease, and on a closed curve whose sides touch the
+     * pairs that take one way round and those that take the other (also across its first point).
      */
     unsigned int
     count_folds(const Polyline &polyline, const double approach_distance, const double arc_length);
