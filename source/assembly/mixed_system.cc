@@ -1060,40 +1060,10 @@ namespace GelMPM
 
 
   template <int dim>
-  const dealii::TrilinosWrappers::SparseMatrix &
-  MixedSystem<dim>::matrix() const
+  unsigned int
+  MixedSystem<dim>::n_u_dofs() const
   {
-    return matrix_;
-  }
-
-
-  template <int dim>
-  const dealii::Vector<double> &
-  MixedSystem<dim>::residual() const
-  {
-    return residual_;
-  }
-
-
-  template <int dim>
-  double
-  MixedSystem<dim>::residual_norm_u() const
-  {
-    double sum = 0.;
-    for (unsigned int i = 0; i < spaces_.n_u_dofs(); ++i)
-      sum += residual_(i) * residual_(i);
-    return std::sqrt(sum);
-  }
-
-
-  template <int dim>
-  double
-  MixedSystem<dim>::residual_norm_mu() const
-  {
-    double sum = 0.;
-    for (unsigned int i = spaces_.n_u_dofs(); i < spaces_.n_dofs(); ++i)
-      sum += residual_(i) * residual_(i);
-    return std::sqrt(sum);
+    return spaces_.n_u_dofs();
   }
 
 

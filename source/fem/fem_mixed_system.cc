@@ -481,44 +481,6 @@ namespace GelMPM
 
 
   template <int dim>
-  const dealii::TrilinosWrappers::SparseMatrix &
-  FemMixedSystem<dim>::matrix() const
-  {
-    return matrix_;
-  }
-
-
-  template <int dim>
-  const dealii::Vector<double> &
-  FemMixedSystem<dim>::residual() const
-  {
-    return residual_;
-  }
-
-
-  template <int dim>
-  double
-  FemMixedSystem<dim>::residual_norm_u() const
-  {
-    double sum = 0.;
-    for (unsigned int i = 0; i < n_u_dofs_; ++i)
-      sum += residual_(i) * residual_(i);
-    return std::sqrt(sum);
-  }
-
-
-  template <int dim>
-  double
-  FemMixedSystem<dim>::residual_norm_mu() const
-  {
-    double sum = 0.;
-    for (unsigned int i = n_u_dofs_; i < residual_.size(); ++i)
-      sum += residual_(i) * residual_(i);
-    return std::sqrt(sum);
-  }
-
-
-  template <int dim>
   void
   FemMixedSystem<dim>::update(const dealii::Vector<double> &solution)
   {

@@ -1,5 +1,7 @@
 #include <gelmpm/fem/fem_time_loop.h>
+#include <gelmpm/solvers/time_loop.h>
 
+#include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 
@@ -31,6 +33,113 @@ namespace GelMPM
   }
 
 
+  namespace
+  {
+    /**
+     * The body-fitted peer as a SteppedModel: its boundary data come from the scene's
+     * callback, its first iterate is the last state with the prescribed values, and its update
+     * keeps the converged state. It makes no error estimates (TimeLoop refuses the rules that
+     * need them).
+     */
+    template <int dim>
+    class FemModel : public SteppedModel
+    {
+    public:
+      FemModel(FemMixedSystem<dim> &system, const std::function<void(double, double)> &prescribe)
+        : fem_system(system)
+        , prescribe(prescribe)
+      {}
+
+      NewtonSystem &
+      system() override
+      {
+        return fem_system;
+      }
+
+      void
+      prepare_attempt(const double t_begin,
+                      const double dt,
+                      const double,
+                      dealii::Vector<double> &solution) override
+      {
+        if (prescribe)
+          prescribe(t_begin, t_begin + dt);
+        fem_system.initial_guess(solution);
+      }
+
+      void
+      update(const dealii::Vector<double> &solution, const double) override
+      {
+        fem_system.update(solution);
+      }
+
+    private:
+      FemMixedSystem<dim>                       &fem_system;
+      const std::function<void(double, double)> &prescribe;
+    };
+
+
+    /** The peer's callbacks as a StepObserver: the signature, the brackets, on_step. */
+    template <int dim>
+    class FemObserver : public StepObserver
+    {
+    public:
+      FemObserver(FemMixedSystem<dim>                        &system,
+                  TimeLoop                                   &loop,
+                  const FemSignatureControl                  &signature,
+                  const std::function<void(const FemStep &)> &on_step,
+                  FemRunResult                               &result)
+        : system(system)
+        , loop(loop)
+        , signature(signature)
+        , on_step(on_step)
+        , result(result)
+      {}
+
+      StepControl::Verdict
+      judge_attempt(const dealii::Vector<double> &solution,
+                    const double                  dt,
+                    const NewtonReport           &report) override
+      {
+        if (!signature.stable)
+          return StepControl::Verdict::accept;
+        // The signature reads the tangent at the converged state, which a modified Newton
+        // iteration need not have assembled.
+        if (!report.tangent_at_solution)
+          system.assemble(solution, dt * loop.scales().tau_d, true);
+        const auto verdict = loop.control().judge_signature(signature.stable());
+        if (verdict == StepControl::Verdict::onset)
+          result.onsets.push_back(loop.control().bracket());
+        return verdict;
+      }
+
+      void
+      accepted(const AcceptedStep &step, const dealii::Vector<double> &) override
+      {
+        result.t_over_tau_d = step.time;
+        result.newton_iterations += step.report.iterations;
+        FemStep record;
+        record.number            = step.number;
+        record.t_over_tau_d      = step.time;
+        record.dt_over_tau_d     = step.dt;
+        record.newton_iterations = step.report.iterations;
+        record.attempts          = step.attempts;
+        record.residual_u        = step.report.residual_u;
+        record.residual_mu       = step.report.residual_mu;
+        if (on_step)
+          on_step(record);
+      }
+
+    private:
+      FemMixedSystem<dim>                        &system;
+      TimeLoop                                   &loop;
+      const FemSignatureControl                  &signature;
+      const std::function<void(const FemStep &)> &on_step;
+      FemRunResult                               &result;
+    };
+  } // namespace
+
+
   template <int dim>
   FemRunResult
   run_fem_time_loop(FemMixedSystem<dim>                        &system,
@@ -53,87 +162,50 @@ namespace GelMPM
     } release{linear_solver};
     linear_solver.new_pattern();
 
-    const double tau_d  = std::pow(time_stepping.characteristic_length, 2) / material.diffusivity();
-    const double volume = system.volume();
-    const double scale_u  = material.shear_modulus() * std::pow(volume, (dim - 1.) / dim);
-    const double scale_mu = material.kT_over_nu() * volume;
+    const RunScales     scales = RunScales::of(dim,
+                                           time_stepping.characteristic_length,
+                                           material.diffusivity(),
+                                           material.shear_modulus(),
+                                           material.kT_over_nu(),
+                                           system.volume());
     dealii::TimerOutput timer(std::cout,
                               dealii::TimerOutput::never,
                               dealii::TimerOutput::wall_times);
+    // The peer's tools report through their callbacks: the loop's own lines are not printed.
+    dealii::ConditionalOStream silent(std::cout, false);
 
-    FemRunResult           result;
-    StepControl            control(time_stepping,
-                        signature.bisection_tolerance,
-                        signature.unstable_step,
-                        signature.signature_control);
-    dealii::Vector<double> solution;
-    while (!control.finished())
+    FemRunResult     result;
+    FemModel<dim>    model(system, prescribe);
+    TimeLoop         loop(model,
+                  time_stepping,
+                  newton,
+                  linear_solver,
+                  scales,
+                  silent,
+                  timer,
+                  signature.bisection_tolerance,
+                  signature.unstable_step,
+                  signature.signature_control);
+    FemObserver<dim> observer(system, loop, signature, on_step, result);
+    loop.add_observer(observer);
+    switch (loop.run())
       {
-        if (control.out_of_steps())
-          {
-            result.failure = "stopped after the maximum number of steps (" +
-                             std::to_string(time_stepping.maximum_steps) + ")";
-            return result;
-          }
-        for (unsigned int attempt = 1;; ++attempt)
-          {
-            const double t_begin = control.time();
-            const double step_dt = control.attempt();
-            if (prescribe)
-              prescribe(t_begin, t_begin + step_dt);
-            system.initial_guess(solution);
-            const NewtonReport report = solve_newton(system,
-                                                     solution,
-                                                     step_dt * tau_d,
-                                                     newton,
-                                                     linear_solver,
-                                                     scale_u,
-                                                     scale_mu,
-                                                     timer);
-            if (!report.converged)
-              {
-                if (!control.cut_step())
-                  {
-                    std::ostringstream message;
-                    message << "the step at t/tau_d = " << t_begin << " failed (" << report.failure
-                            << ") and would fall below the minimum step";
-                    result.failure = message.str();
-                    return result;
-                  }
-                continue;
-              }
-            if (signature.stable)
-              {
-                // The signature reads the tangent at the converged state, which a modified
-                // Newton iteration need not have assembled.
-                if (!report.tangent_at_solution)
-                  system.assemble(solution, step_dt * tau_d, true);
-                const auto verdict = control.judge_signature(signature.stable());
-                if (verdict == StepControl::Verdict::retake ||
-                    verdict == StepControl::Verdict::shorten)
-                  continue;
-                if (verdict == StepControl::Verdict::onset)
-                  result.onsets.push_back(control.bracket());
-              }
-            system.update(solution);
-            control.accept(report.iterations);
-            result.t_over_tau_d = control.time();
-            result.newton_iterations += report.iterations;
-
-            FemStep record;
-            record.number            = control.step();
-            record.t_over_tau_d      = control.time();
-            record.dt_over_tau_d     = step_dt;
-            record.newton_iterations = report.iterations;
-            record.attempts          = attempt;
-            record.residual_u        = report.residual_u;
-            record.residual_mu       = report.residual_mu;
-            if (on_step)
-              on_step(record);
-            break;
-          }
+        case TimeLoop::Outcome::finished:
+        case TimeLoop::Outcome::ended_early:
+          result.completed = true;
+          break;
+        case TimeLoop::Outcome::out_of_steps:
+          result.failure = "stopped after the maximum number of steps (" +
+                           std::to_string(time_stepping.maximum_steps) + ")";
+          break;
+        case TimeLoop::Outcome::failed:
+          result.failure = loop.failure();
+          break;
+        case TimeLoop::Outcome::interrupted:
+        case TimeLoop::Outcome::interrupted_within_step:
+          result.failure = "stopped by a signal";
+          break;
       }
-    result.completed = true;
     return result;
   }
 

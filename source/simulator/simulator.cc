@@ -66,7 +66,6 @@ namespace GelMPM
     linear_solver.set_symmetric(scene.nitsche.symmetry > 0.);
     newton.parse_parameters(prm);
     time_stepping.parse_parameters(prm);
-    newton.minimum_iterations = time_stepping.tolerance > 0. ? 1 : 0;
     observables.parse_parameters(prm, structure.boundary_pieces);
     balance.parse_parameters(prm, structure.boundary_pieces);
     stability.parse_parameters(prm);
@@ -405,9 +404,12 @@ namespace GelMPM
     observables.set_communicator(scene.communicator);
     balance.set_communicator(scene.communicator);
 
-    tau_d    = std::pow(time_stepping.characteristic_length, 2) / scene.material.diffusivity();
-    scale_u  = scene.material.shear_modulus() * std::pow(body_volume, (dim - 1.) / dim);
-    scale_mu = scene.material.kT_over_nu() * body_volume;
+    scales = RunScales::of(dim,
+                           time_stepping.characteristic_length,
+                           scene.material.diffusivity(),
+                           scene.material.shear_modulus(),
+                           scene.material.kT_over_nu(),
+                           body_volume);
   }
 
 
@@ -480,9 +482,9 @@ namespace GelMPM
                                     const unsigned int            attempts,
                                     const dealii::Vector<double> *solution)
   {
-    statistics.set("step", step);
-    statistics.set("time", time * tau_d);
-    statistics.set("t_over_tau_d", time);
+    statistics.set("step", current_step());
+    statistics.set("time", current_time() * scales.tau_d);
+    statistics.set("t_over_tau_d", current_time());
     statistics.set("newton_iterations", report.iterations);
     statistics.set("attempts", attempts);
     statistics.set("residual_u", report.residual_u);
@@ -490,7 +492,7 @@ namespace GelMPM
     statistics.set("n_particles", scene.particles.n_global_particles());
     if (!output_settings.test_mode && progress)
       statistics.set("wall_time", progress->elapsed());
-    if (scene.system && step > 0)
+    if (scene.system && current_step() > 0)
       {
         statistics.set("n_dofs_u", scene.spaces->n_u_dofs());
         statistics.set("n_dofs_mu", scene.spaces->n_mu_dofs());
@@ -510,121 +512,6 @@ namespace GelMPM
     observables.evaluate(scene.particles, scene.regions, dirichlet_errors, statistics);
     statistics.write_row();
     record_pore_events();
-  }
-
-
-  template <int dim>
-  void
-  Simulator<dim>::record_stability(const StabilityReport &result)
-  {
-    if (stability.inertia)
-      {
-        statistics.set("n_pos", result.inertia.n_positive);
-        statistics.set("n_neg", result.inertia.n_negative);
-        statistics.set("n_zero", result.inertia.n_zero);
-        if (stability.drained_onset)
-          statistics.set("n_neg_uu", result.drained_inertia.n_negative);
-      }
-    for (unsigned int k = 0; k < result.eigenvalues.size(); ++k)
-      statistics.set("eig_" + std::to_string(k + 1), result.eigenvalues[k]);
-    if (stability.inf_sup)
-      statistics.set("inf_sup", result.inf_sup);
-    if (stability.condition)
-      statistics.set("condition_number", result.condition_number);
-  }
-
-
-  template <int dim>
-  StepControl::Verdict
-  Simulator<dim>::judge_signature(const StabilityReport &result)
-  {
-    if (!stability.inertia)
-      return StepControl::Verdict::accept;
-    const bool tangent_stable = result.inertia.n_positive == scene.spaces->n_u_dofs() &&
-                                result.inertia.n_negative == scene.spaces->n_mu_dofs() &&
-                                result.inertia.n_zero == 0;
-    // Until the first onset the drained criterion (K_uu positive definite: no mode grows) brackets
-    // it independently of the step; from then on the tangent's signature (no mode grows faster
-    // than 1/dt) controls the steps.
-    const bool use_drained = stability.drained_onset && !control->onset_seen();
-    const bool stable =
-      use_drained ? (result.drained_inertia.n_negative == 0 && result.drained_inertia.n_zero == 0)
-                  : tangent_stable;
-    const double t_end   = control->time() + control->attempt_size();
-    const auto   verdict = control->judge_signature(stable);
-    switch (verdict)
-      {
-        case StepControl::Verdict::retake:
-          if (!announced_bracketing)
-            pcout << "    the state loses stability ("
-                  << (use_drained ? "K_uu indefinite" : "signature not (n_u, n_mu, 0)")
-                  << ") between t = " << control->time() << " and " << t_end
-                  << "; bisecting to 'Stability/Bisection tolerance' = "
-                  << stability.bisection_tolerance << std::endl;
-          announced_bracketing = true;
-          return verdict;
-        case StepControl::Verdict::shorten:
-          pcout << "    the signature at t = " << t_end << " with dt = " << control->attempt_size()
-                << " is (" << result.inertia.n_positive << ", " << result.inertia.n_negative << ", "
-                << result.inertia.n_zero << "): a mode grows faster than 1/dt; retrying "
-                << "with dt = " << control->proposed_step() << std::endl;
-          return verdict;
-        case StepControl::Verdict::step_dependent:
-          pcout << "    with shorter steps the state at t = " << t_end
-                << " is stable: the loss of stability depends on the step size; bracketing ended"
-                << std::endl;
-          break;
-        case StepControl::Verdict::regained:
-          pcout << "    the signature is (n_u, n_mu, 0) again at t/tau_d = " << t_end << ": stable"
-                << std::endl;
-          break;
-        case StepControl::Verdict::onset:
-          report_onset(result);
-          break;
-        case StepControl::Verdict::accept:
-          break;
-      }
-    announced_bracketing = control->bracketing();
-    if (tangent_stable)
-      {
-        last_stable_inertia = result.inertia;
-        last_eigenvalue     = result.eigenvalues.empty() ? 0. : result.eigenvalues[0];
-      }
-    return verdict;
-  }
-
-
-  template <int dim>
-  void
-  Simulator<dim>::report_onset(const StabilityReport &result)
-  {
-    const auto &bracket = control->bracket();
-    pcout << "    loss of stability between t/tau_d = " << bracket.t_stable << " (stable) and "
-          << bracket.t_unstable << ": signature (" << result.inertia.n_positive << ", "
-          << result.inertia.n_negative << ", " << result.inertia.n_zero << "), expected ("
-          << scene.spaces->n_u_dofs() << ", " << scene.spaces->n_mu_dofs() << ", 0)";
-    if (stability.drained_onset)
-      pcout << "; K_uu has " << result.drained_inertia.n_negative
-            << " negative eigenvalue(s) (drained criterion)";
-    pcout << std::endl;
-    stability_file.set("t_stable", bracket.t_stable);
-    stability_file.set("t_unstable", bracket.t_unstable);
-    stability_file.set("n_neg_stable", last_stable_inertia.n_negative);
-    stability_file.set("n_neg_unstable", result.inertia.n_negative);
-    stability_file.set("n_zero_unstable", result.inertia.n_zero);
-    stability_file.set("n_dofs_u", scene.spaces->n_u_dofs());
-    stability_file.set("n_dofs_mu", scene.spaces->n_mu_dofs());
-    if (!result.eigenvalues.empty())
-      {
-        stability_file.set("eig_1_stable", last_eigenvalue);
-        stability_file.set("eig_1_unstable", result.eigenvalues[0]);
-      }
-    stability_file.write_row();
-
-    // Written as the event happens. The points still hold the state of the bracket's stable end
-    // (the converged attempt is applied after the stability analysis): mu_boundary is taken there,
-    // at most 'Bisection tolerance' earlier.
-    write_event("bifurcation", bracket.t_unstable, 0);
   }
 
 
@@ -652,9 +539,9 @@ namespace GelMPM
   {
     for (const auto &[name, pore] : observables.new_events(scene.particles))
       {
-        write_event(name, time, pore);
+        write_event(name, current_time(), pore);
         pcout << "  event: " << name << (pore > 0 ? " of pore " + std::to_string(pore) : "")
-              << " at t/tau_d = " << time << '\n';
+              << " at t/tau_d = " << current_time() << '\n';
       }
   }
 
@@ -664,7 +551,7 @@ namespace GelMPM
   Simulator<dim>::write_event(const std::string &name, const double t_over_tau_d, const int pore)
   {
     events_file.set("event", name);
-    events_file.set("time", t_over_tau_d * tau_d);
+    events_file.set("time", t_over_tau_d * scales.tau_d);
     events_file.set("t_over_tau_d", t_over_tau_d);
     if (const auto mu = observables.boundary_chemical_potential(scene.particles))
       events_file.set("mu_boundary", *mu);
@@ -673,38 +560,6 @@ namespace GelMPM
     else
       events_file.set("pore", std::string());
     events_file.write_row();
-  }
-
-
-  template <int dim>
-  void
-  Simulator<dim>::perturb_along_mode(const dealii::Vector<double> &mode,
-                                     dealii::Vector<double>       &solution) const
-  {
-    // The eigenvector's sign and size are arbitrary: scale it to a largest control-point
-    // displacement of 'Perturbation amplitude', signed so that the control point that moves
-    // most along 'Perturbation direction' moves forwards.
-    double      largest = 0., along = 0.;
-    const auto &d = stability.perturbation_direction;
-    for (unsigned int i = 0; i + dim <= mode.size(); i += dim)
-      {
-        double norm2 = 0., projection = 0.;
-        for (unsigned int c = 0; c < dim; ++c)
-          {
-            norm2 += mode(i + c) * mode(i + c);
-            projection += mode(i + c) * d[c];
-          }
-        largest = std::max(largest, std::sqrt(norm2));
-        if (std::abs(projection) > std::abs(along))
-          along = projection;
-      }
-    if (!(largest > 0.))
-      return;
-    const double scale = stability.perturbation_amplitude / largest * (along < 0. ? -1. : 1.);
-    for (unsigned int i = 0; i < mode.size(); ++i)
-      solution(i) += scale * mode(i);
-    pcout << "    perturbed along the critical mode: largest control-point displacement "
-          << stability.perturbation_amplitude << std::endl;
   }
 
 
@@ -728,14 +583,14 @@ namespace GelMPM
   Simulator<dim>::write_output()
   {
     dealii::TimerOutput::Scope scope(timer, "output");
-    output_step = step;
+    output_step = current_step();
     if (output_settings.write_particles)
-      particle_output->write(scene.particles, time);
+      particle_output->write(scene.particles, current_time());
     if (grid_output)
-      grid_output->write(time);
+      grid_output->write(current_time());
     observables.write_surfaces(scene.particles, output_settings.directory);
     if (mode_output && mode_recorded)
-      mode_output->write(time);
+      mode_output->write(current_time());
   }
 
 
@@ -749,333 +604,8 @@ namespace GelMPM
       has_material[c] = grid_volume_points[c] > 0;
     scene.spaces->reinit(has_material);
     dealii::Vector<double> solution;
-    initial_guess(solution);
+    model->initial_guess(solution);
     grid_output->record(scene.spaces->u(), scene.spaces->mu(), grid_volume_points, solution);
-  }
-
-
-  template <int dim>
-  void
-  Simulator<dim>::store_mu_coefficients(const dealii::Vector<double> &solution)
-  {
-    const auto        &mu  = scene.spaces->mu();
-    const unsigned int n_u = scene.spaces->n_u_dofs();
-    for (unsigned int i = 0; i < mu_coefficients.size(); ++i)
-      {
-        const unsigned int dof = mu.dof_of_control_point(i);
-        mu_known[i]            = true;
-        if (dof != dealii::numbers::invalid_unsigned_int)
-          mu_coefficients[i] = solution(n_u + dof);
-        else if (mu.control_point_kind(i) == ControlPointKind::boundary)
-          {
-            double value = 0.;
-            for (const auto &[interior, weight] : mu.extrapolation_weights(i))
-              value += weight * solution(n_u + mu.dof_of_control_point(interior));
-            mu_coefficients[i] = value;
-          }
-        else
-          mu_known[i] = false;
-      }
-  }
-
-
-  template <int dim>
-  void
-  Simulator<dim>::initial_guess(dealii::Vector<double> &solution, const double dt) const
-  {
-    solution.reinit(scene.spaces->n_dofs());
-    if (!displacement_projection.empty() && last_dt > 0.)
-      for (unsigned int i = 0; i < displacement_projection.size(); ++i)
-        solution(i) = dt / last_dt * displacement_projection[i];
-    const auto        &mu  = scene.spaces->mu();
-    const unsigned int n_u = scene.spaces->n_u_dofs();
-    // With 'Newton/Initial chemical potential = points' every coefficient starts from the
-    // projection of the points' mu; otherwise only those that held no value in the last step
-    // (newly covered by material), where a stale coefficient would put a stress jump into the
-    // first residual that short (undrained) steps cannot absorb.
-    const std::vector<double> &from_points     = mu_projection;
-    const bool                 all_from_points = newton.mu_from_points && !from_points.empty();
-    for (unsigned int i = 0; i < mu_coefficients.size(); ++i)
-      {
-        const unsigned int dof = mu.dof_of_control_point(i);
-        if (dof != dealii::numbers::invalid_unsigned_int)
-          solution(n_u + dof) = (all_from_points || (!mu_known[i] && !from_points.empty()))
-                                  ? from_points[dof]
-                                  : mu_coefficients[i];
-      }
-  }
-
-
-  template <int dim>
-  bool
-  Simulator<dim>::error_acceptable(const dealii::Vector<double> &solution,
-                                   const double                  dt,
-                                   std::string                  &failure)
-  {
-    // The first step has no predictor: its estimate would be the whole motion.
-    const bool displacement_rule = time_stepping.displacement_tolerance > 0.;
-    // A step far longer than the last (after a landing on a stop time) would amplify the last
-    // step's noise into its predictor: no estimate of the tolerance rule for it.
-    const bool tolerance_rule =
-      time_stepping.tolerance > 0. &&
-      (time_stepping.tolerance_until_onset
-         ? !control->onset_seen()
-         : (time_stepping.tolerance_until == 0. || time < time_stepping.tolerance_until)) &&
-      StepControl::estimate_applies(dt, last_dt);
-    if (!(displacement_rule || tolerance_rule) || !(last_dt > 0.))
-      return true;
-    const double difference =
-      displacement_rule ? scene.system->largest_increment_deviation(solution, dt / last_dt) : 0.;
-    double local_error = 0.;
-    if (tolerance_rule)
-      {
-        const auto error =
-          scene.system->local_error_estimate(solution, dt / last_dt, time_stepping.error_largest);
-        local_error = std::max(error.displacement / time_stepping.characteristic_length,
-                               error.chemical_potential);
-      }
-    const auto excess = control->error_excess(difference, local_error, dt);
-    if (control->judge_error(excess))
-      {
-        if (control->error_uncontrolled() && n_uncontrolled_errors++ == 0)
-          pcout << "    the step's error estimate exceeds its tolerance " << excess.factor
-                << " times whatever the step: a jump in the last step (a perturbation) or the "
-                   "points' integration noise, not an error of this one; accepted (such steps "
-                   "are accepted without a word from here on and counted at the end)"
-                << std::endl;
-        return true;
-      }
-    std::ostringstream why;
-    why << "the error estimate exceeds ";
-    if (displacement_rule && difference > time_stepping.displacement_tolerance)
-      why << "'Time stepping/Displacement tolerance' (a point's motion differs from the last "
-             "step's by "
-          << difference << ")";
-    else
-      why << "'Time stepping/Tolerance' (local error " << local_error << " against "
-          << control->tolerated_local_error(dt) << ")";
-    failure = why.str();
-    return false;
-  }
-
-
-  template <int dim>
-  typename Simulator<dim>::StepOutcome
-  Simulator<dim>::advance()
-  {
-    {
-      dealii::TimerOutput::Scope scope(timer, "grid reset");
-      if (grid_output || mode_output)
-        grid_volume_points = volume_points_per_cell();
-      // A grid reset that changes the classification gives the tangent a new sparsity pattern;
-      // the factorisation of the old one goes first, while the matrix it refers to still
-      // exists. Otherwise it stays, and Newton may start from it (modified Newton).
-      if (scene.system->setup(scene.particles, [this] {
-            linear_solver.new_pattern();
-          }))
-        ++n_new_patterns;
-      if (linear_solver.iterative())
-        linear_solver.set_block_structure(scene.spaces->n_u_dofs(),
-                                          dim,
-                                          scene.spaces->u_dof_greville_points());
-      if (!resumed_tangent.empty())
-        {
-          if (scene.system->restore_tangent(resumed_classification, resumed_tangent))
-            linear_solver.factorize(scene.system->matrix());
-          resumed_tangent.clear();
-          resumed_classification.clear();
-        }
-      // The points and the basis are fixed for the attempts of the step: project mu once, and
-      // only if some coefficient will start from it.
-      bool needed = newton.mu_from_points;
-      for (unsigned int i = 0; i < mu_known.size() && !needed; ++i)
-        needed = !mu_known[i] && scene.spaces->mu().dof_of_control_point(i) !=
-                                   dealii::numbers::invalid_unsigned_int;
-      mu_projection           = needed ? scene.system->mu_from_points() : std::vector<double>();
-      displacement_projection = (newton.extrapolate_displacement && last_dt > 0.)
-                                  ? scene.system->displacement_from_points(1.)
-                                  : std::vector<double>();
-    }
-    dealii::Vector<double> solution;
-    for (unsigned int attempt = 1;; ++attempt)
-      {
-        // On several ranks a signal reaches them at different moments: they stop together, at
-        // the first attempt where any of them has it.
-        if (dealii::Utilities::MPI::max(stop_signal(), scene.communicator) != 0)
-          return StepOutcome::interrupted;
-        const double t_begin = control->time();
-        const double step_dt = control->attempt();
-        scene.system->set_boundary_values(t_begin + step_dt, t_begin);
-        initial_guess(solution, step_dt);
-        NewtonReport report = solve_newton(*scene.system,
-                                           solution,
-                                           step_dt * tau_d,
-                                           newton,
-                                           linear_solver,
-                                           scale_u,
-                                           scale_mu,
-                                           timer);
-        n_newton_iterations += report.iterations;
-        n_factorizations += report.factorizations;
-        if (report.converged && time_stepping.largest_increment > 0.)
-          {
-            const double moved = scene.system->largest_displacement_increment(solution);
-            if (moved > time_stepping.largest_increment * scene.spaces->h_u())
-              {
-                report.converged = false;
-                std::ostringstream why;
-                why << "a material point moves " << moved / scene.spaces->h_u()
-                    << " cells, more than 'Time stepping/Largest increment' = "
-                    << time_stepping.largest_increment;
-                report.failure = why.str();
-              }
-          }
-        if (report.converged && !error_acceptable(solution, step_dt, report.failure))
-          {
-            pcout << "    step " << control->step() + 1 << " at t = " << t_begin
-                  << " with dt = " << step_dt << " retaken (" << report.failure
-                  << "); retrying with dt = " << control->proposed_step() << std::endl;
-            announced_bracketing = false;
-            continue;
-          }
-        if (!report.converged)
-          {
-            pcout << "    step " << control->step() + 1 << " at t = " << t_begin
-                  << " with dt = " << step_dt << " failed (" << report.failure << ")";
-            if (newton.log_failures)
-              {
-                pcout << "\n      Newton: scaled |R_u|, |R_mu| at the start of each iteration, "
-                         "damping taken:";
-                for (const auto &h : report.history)
-                  pcout << "\n        " << h[0] << "  " << h[1] << "  " << h[2];
-                pcout << "\n     ";
-              }
-            if (control->bracketing())
-              pcout << "; bracketing of the loss of stability abandoned";
-            announced_bracketing = false;
-            if (!control->cut_step())
-              {
-                pcout << "; the step would fall below 'Time stepping/Minimum step' = "
-                      << time_stepping.minimum_step << std::endl;
-                return StepOutcome::failed;
-              }
-            pcout << "; retrying with dt = " << control->proposed_step() << std::endl;
-            continue;
-          }
-
-        bool            perturb = false;
-        StabilityReport result;
-        if (stability.enabled())
-          {
-            {
-              dealii::TimerOutput::Scope scope(timer, "stability");
-              if (!report.tangent_at_solution)
-                scene.system->assemble(solution, step_dt * tau_d, true);
-              // The Newton solver's LDL^T of the converged tangent gives the signature, and is
-              // the factorisation the next step's modified Newton starts from.
-              const SymmetricFactorization *factorization = nullptr;
-              if ((stability.inertia || stability.n_eigenvalues > 0) && linear_solver.uses_ldlt())
-                {
-                  linear_solver.factorize(scene.system->matrix());
-                  ++n_factorizations;
-                  factorization = linear_solver.symmetric_factorization();
-                }
-              result = analyse_stability(
-                scene.system->matrix(),
-                scene.spaces->n_u_dofs(),
-                stability,
-                [this]() {
-                  return scene.system->mu_mass_matrix();
-                },
-                factorization);
-            }
-            const auto verdict = judge_signature(result);
-            if (verdict == StepControl::Verdict::retake || verdict == StepControl::Verdict::shorten)
-              continue;
-            record_stability(result);
-            if (mode_output && result.mode.size() == scene.spaces->n_u_dofs())
-              record_mode(result.mode);
-            // Leave the unstable branch at the bracketed critical time (doc/method.md).
-            ended_at_onset = verdict == StepControl::Verdict::onset && stability.end_at_onset;
-            perturb        = verdict == StepControl::Verdict::onset && !ended_at_onset &&
-                      stability.perturbation_amplitude > 0. &&
-                      result.mode.size() == scene.spaces->n_u_dofs();
-          }
-        // The piece's terms at the converged state, before a kick moves it.
-        std::vector<typename MixedSystem<dim>::PieceBalance> balances;
-        if (balance.enabled())
-          balances = scene.system->boundary_balances(solution, step_dt * tau_d);
-        if (perturb)
-          perturb_along_mode(result.drained_mode.size() == scene.spaces->n_u_dofs()
-                               ? result.drained_mode
-                               : result.mode,
-                             solution);
-        {
-          dealii::TimerOutput::Scope scope(timer, "update");
-          const auto                 n_before = scene.particles.n_global_particles();
-          try
-            {
-              scene.system->update_particles(solution);
-            }
-          catch (const std::runtime_error &e)
-            {
-              std::ostringstream when;
-              when << "at t/tau_d = " << t_begin + step_dt << ", " << e.what();
-              throw std::runtime_error(when.str());
-            }
-          sort_into_cells(scene.particles, scene.grid, *scene.triangulation);
-          // The body moves and changes the points per rank: partition the grid anew when the
-          // most loaded rank holds much more than its share (its time sets the step's).
-          // The partition cannot split a cell: where whole cells leave an imbalance, the run
-          // waits until the imbalance has grown beyond what the last partition left.
-          const double imbalance = scene.imbalance();
-          if (imbalance > std::max(largest_imbalance, 1.05 * imbalance_after_partition))
-            {
-              scene.balance_partition();
-              imbalance_after_partition = scene.imbalance();
-              ++n_repartitions;
-            }
-          if (scene.particles.n_global_particles() != n_before)
-            throw std::runtime_error(
-              std::to_string(n_before - scene.particles.n_global_particles()) +
-              " material point(s) left the background grid at t = " +
-              std::to_string(t_begin + step_dt) +
-              " tau_d; enlarge the grid ('Background grid/Upper corner')");
-          store_mu_coefficients(solution);
-          if (grid_output)
-            grid_output->record(scene.spaces->u(),
-                                scene.spaces->mu(),
-                                grid_volume_points,
-                                solution);
-        }
-        control->accept(report.iterations);
-        note_inexact_extrapolation(t_begin);
-        // The kick is no motion to continue: the next step starts without a predictor.
-        last_dt = perturb ? 0. : step_dt;
-        time    = control->time();
-        step    = control->step();
-        progress->step_accepted(time, step_dt);
-        statistics.set("dt", step_dt);
-        balance.record_step(balances, step_dt * tau_d, scene.particles, scene.regions, statistics);
-        record_statistics(report, attempt, &solution);
-        print_step_line(report, step_dt);
-
-        const bool interval_due =
-          (output_settings.interval_steps > 0 && step % output_settings.interval_steps == 0) ||
-          (output_settings.interval_time > 0. &&
-           time >= next_output_time * (1. - relative_time_tolerance));
-        // The next multiple of the interval after this time, in one step: a loop that adds the
-        // interval would run for ever when it is tiny against the time.
-        if (output_settings.interval_time > 0. &&
-            next_output_time <= time * (1. + relative_time_tolerance))
-          next_output_time =
-            (std::floor(time * (1. + relative_time_tolerance) / output_settings.interval_time) +
-             1.) *
-            output_settings.interval_time;
-        if (control->at_stop_time() || interval_due || control->finished() || ended_at_onset)
-          write_output();
-        return StepOutcome::accepted;
-      }
   }
 
 
@@ -1083,22 +613,22 @@ namespace GelMPM
   void
   Simulator<dim>::print_step_line(const NewtonReport &report, const double step_dt) const
   {
-    pcout << "  step " << std::setw(5) << step << "  t/tau_d = " << std::setw(11)
-          << std::setprecision(5) << time << "  dt = " << std::setw(10) << step_dt << "  Newton "
-          << std::setw(2) << report.iterations;
+    pcout << "  step " << std::setw(5) << current_step() << "  t/tau_d = " << std::setw(11)
+          << std::setprecision(5) << current_time() << "  dt = " << std::setw(10) << step_dt
+          << "  Newton " << std::setw(2) << report.iterations;
     if (report.damped_iterations > 0)
       pcout << " (" << report.damped_iterations << " damped)";
     pcout << "  |R_u| " << std::setprecision(2) << report.residual_u << "  |R_mu| "
           << report.residual_mu;
-    if (newton.log_failures && !report.history.empty())
+    if (loop->newton().log_failures && !report.history.empty())
       pcout << "  (first: " << report.history[0][0] << ", " << report.history[0][1] << ")";
     // Wall times differ from run to run: not in test mode, whose log is compared.
     if (!output_settings.test_mode)
       {
         pcout << "  wall " << format_duration(progress->elapsed()) << " (" << std::setprecision(3)
-              << 100. * time / time_stepping.end_time << "%";
+              << 100. * current_time() / time_stepping.end_time << "%";
         const double remaining = progress->remaining();
-        if (remaining >= 0. && !control->finished())
+        if (remaining >= 0. && !loop->control().finished())
           pcout << ", end in ~" << format_duration(remaining);
         pcout << ")";
       }
@@ -1111,47 +641,91 @@ namespace GelMPM
   Simulator<dim>::advance_to_end()
   {
     progress->begin_stepping();
-    while (!control->finished())
+    switch (loop->run())
       {
-        // On several ranks a signal reaches them at different moments: they stop together,
-        // at the first step boundary where any of them has it.
-        if (const int signal = dealii::Utilities::MPI::max(stop_signal(), scene.communicator))
-          return stop_on_signal(signal);
-        if (control->out_of_steps())
+        case TimeLoop::Outcome::finished:
+          return 0;
+        case TimeLoop::Outcome::ended_early:
+          pcout << "gelmpm: ended at the bracketed loss of stability ('Stability/End at onset')"
+                << std::endl;
+          return 0;
+        case TimeLoop::Outcome::interrupted:
+          return stop_on_signal(loop->signal());
+        case TimeLoop::Outcome::interrupted_within_step:
+          return stop_on_signal(loop->signal(), false);
+        case TimeLoop::Outcome::out_of_steps:
           {
             std::ostringstream message;
             message << "gelmpm: stopped after 'Time stepping/Maximum steps' = "
-                    << time_stepping.maximum_steps << " steps at t/tau_d = " << time;
+                    << time_stepping.maximum_steps << " steps at t/tau_d = " << current_time();
             pcout << message.str() << std::endl;
             pcerr << message.str() << std::endl;
             return 1;
           }
-        const StepOutcome outcome = advance();
-        if (outcome == StepOutcome::interrupted)
-          return stop_on_signal(dealii::Utilities::MPI::max(stop_signal(), scene.communicator),
-                                false);
-        if (outcome == StepOutcome::failed)
+        case TimeLoop::Outcome::failed:
           {
             // In the log and on stderr, where a failed run's message is looked for.
             std::ostringstream message;
-            message << "gelmpm: the run cannot converge beyond t/tau_d = " << time
+            message << "gelmpm: the run cannot converge beyond t/tau_d = " << current_time()
                     << "; results up to there are in " << output_settings.directory;
             pcout << message.str() << std::endl;
             pcerr << message.str() << std::endl;
             write_output();
             return 1;
           }
-        if (ended_at_onset)
-          {
-            pcout << "gelmpm: ended at the bracketed loss of stability ('Stability/End at "
-                     "onset')"
-                  << std::endl;
-            return 0;
-          }
-        if (checkpoint_due())
-          write_checkpoint();
       }
-    return 0;
+    return 1;
+  }
+
+
+  template <int dim>
+  void
+  Simulator<dim>::step_begins()
+  {
+    if (grid_output || mode_output)
+      grid_volume_points = volume_points_per_cell();
+  }
+
+
+  template <int dim>
+  bool
+  Simulator<dim>::before_update(dealii::Vector<double> &solution, const double dt)
+  {
+    // The pieces' terms at the converged state, before a kick moves it.
+    balances.clear();
+    if (balance.enabled())
+      balances = scene.system->boundary_balances(solution, dt * scales.tau_d);
+    return false;
+  }
+
+
+  template <int dim>
+  void
+  Simulator<dim>::accepted(const AcceptedStep &step, const dealii::Vector<double> &solution)
+  {
+    if (grid_output)
+      grid_output->record(scene.spaces->u(), scene.spaces->mu(), grid_volume_points, solution);
+    note_inexact_extrapolation(step.t_begin);
+    progress->step_accepted(step.time, step.dt);
+    statistics.set("dt", step.dt);
+    balance.record_step(balances,
+                        step.dt * scales.tau_d,
+                        scene.particles,
+                        scene.regions,
+                        statistics);
+    record_statistics(step.report, step.attempts, &solution);
+    print_step_line(step.report, step.dt);
+    if (step.output_due || (monitor && monitor->end_requested()))
+      write_output();
+  }
+
+
+  template <int dim>
+  void
+  Simulator<dim>::between_steps()
+  {
+    if (checkpoint_due())
+      write_checkpoint();
   }
 
 
@@ -1159,6 +733,7 @@ namespace GelMPM
   bool
   Simulator<dim>::checkpoint_due() const
   {
+    const unsigned int step = current_step();
     if (!checkpoint_settings.enabled() || checkpoint_step == step)
       return false;
     const std::chrono::duration<double, std::ratio<60>> since =
@@ -1167,7 +742,7 @@ namespace GelMPM
             step % checkpoint_settings.interval_steps == 0) ||
            (checkpoint_settings.interval_minutes > 0. &&
             since.count() >= checkpoint_settings.interval_minutes) ||
-           control->finished();
+           loop->control().finished();
   }
 
 
@@ -1176,11 +751,10 @@ namespace GelMPM
   void
   Simulator<dim>::serialize_run_state(Archive &ar)
   {
-    ar &time &step &output_step &next_output_time                          &last_dt;
-    ar &mu_coefficients                                                    &mu_known;
-    ar &announced_bracketing &inexact_extrapolation_noted &last_eigenvalue &mode_recorded;
-    ar &last_stable_inertia.n_positive &last_stable_inertia.n_negative &last_stable_inertia.n_zero;
-    ar &*control &observables &balance                                &*particle_output;
+    ar &*loop &*model &output_step &inexact_extrapolation_noted &mode_recorded;
+    if (monitor)
+      ar &*monitor;
+    ar &observables &balance &*particle_output;
     if (grid_output)
       ar &*grid_output;
     if (mode_output)
@@ -1201,8 +775,8 @@ namespace GelMPM
     const auto                 begin = std::chrono::steady_clock::now();
     CheckpointHeader           header;
     header.parameters = checkpoint_parameters(parameters_as_used);
-    header.step       = step;
-    header.time       = time;
+    header.step       = current_step();
+    header.time       = current_time();
     // The rows up to here must be on the disk when the checkpoint that counts them is.
     for (const auto &[file, name] : {std::make_pair(&statistics, "statistics.csv"),
                                      std::make_pair(&stability_file, "stability.csv"),
@@ -1266,8 +840,8 @@ namespace GelMPM
     resumed_classification.clear();
     resumed_tangent.clear();
     last_checkpoint = std::chrono::steady_clock::now();
-    checkpoint_step = step;
-    pcout << "  checkpoint at step " << step;
+    checkpoint_step = current_step();
+    pcout << "  checkpoint at step " << checkpoint_step;
     if (!output_settings.test_mode)
       pcout << " (" << std::setprecision(3) << size / 1e6 << " MB in "
             << std::chrono::duration<double>(last_checkpoint - begin).count() << " s)"
@@ -1294,6 +868,9 @@ namespace GelMPM
     // The saved points may sit elsewhere than the initial ones the grid was partitioned for.
     scene.balance_partition();
     serialize_run_state(ar);
+    model->restore_factorization(resumed_classification, resumed_tangent);
+    resumed_classification.clear();
+    resumed_tangent.clear();
     open_statistics();
     if (output_settings.write_particles)
       particle_output->restore_files();
@@ -1304,12 +881,12 @@ namespace GelMPM
     std::error_code ignored;
     std::filesystem::remove(checkpoint_path(output_settings.directory) + ".tmp", ignored);
     // From the first accepted step on the run accepts inexact extrapolations (advance()).
-    if (step > 0)
+    if (current_step() > 0)
       scene.spaces->tolerate_inexact_extrapolation();
     resume_from.reset();
-    checkpoint_step = step;
-    pcout << "  resumed from the checkpoint at step " << step << ", t/tau_d = " << time
-          << std::endl;
+    checkpoint_step = current_step();
+    pcout << "  resumed from the checkpoint at step " << checkpoint_step
+          << ", t/tau_d = " << current_time() << std::endl;
   }
 
 
@@ -1330,8 +907,11 @@ namespace GelMPM
     particle_output = std::make_unique<ParticleOutput<dim>>(output_settings.directory,
                                                             scene.regions,
                                                             scene.communicator);
-    mu_coefficients.assign(scene.spaces->mu_space().n_functions(), scene.material.mu_0());
-    mu_known.assign(scene.spaces->mu_space().n_functions(), true);
+    model           = std::make_unique<MaterialPointModel<dim>>(scene,
+                                                      linear_solver,
+                                                      newton,
+                                                      time_stepping.characteristic_length,
+                                                      timer);
     if (output_settings.write_grid)
       {
         grid_output =
@@ -1342,15 +922,46 @@ namespace GelMPM
     if (stability.write_mode)
       mode_output =
         std::make_unique<GridOutput<dim>>(output_settings.directory, *scene.triangulation, "mode");
-    control         = std::make_unique<StepControl>(time_stepping,
-                                            stability.bisection_tolerance,
-                                            stability.unstable_step,
-                                            stability.signature_control);
+    loop = std::make_unique<TimeLoop>(*model,
+                                      time_stepping,
+                                      newton,
+                                      linear_solver,
+                                      scales,
+                                      pcout,
+                                      timer,
+                                      stability.bisection_tolerance,
+                                      stability.unstable_step,
+                                      stability.signature_control,
+                                      output_settings.interval_steps,
+                                      output_settings.interval_time);
+    // Registered first: the pieces' balances are taken before the monitor's kick moves the state.
+    loop->add_observer(*this);
+    if (stability.enabled())
+      {
+        std::function<void(const dealii::Vector<double> &)> keep_mode;
+        if (mode_output)
+          keep_mode = [this](const dealii::Vector<double> &mode) {
+            record_mode(mode);
+          };
+        monitor = std::make_unique<StabilityMonitor<dim>>(
+          stability,
+          scene,
+          linear_solver,
+          *loop,
+          statistics,
+          stability_file,
+          pcout,
+          timer,
+          [this](const std::string &name, const double t_over_tau_d) {
+            write_event(name, t_over_tau_d, 0);
+          },
+          keep_mode);
+        loop->add_observer(*monitor);
+      }
     last_checkpoint = std::chrono::steady_clock::now();
     if (resume_from)
       return restore_checkpoint();
     open_statistics();
-    next_output_time = output_settings.interval_time;
 
     statistics.set("dt", 0.);
     balance.record_initial(scene.particles, scene.regions, statistics);
@@ -1365,13 +976,14 @@ namespace GelMPM
   {
     // Before the last output, which the uninterrupted run would not write: the resumed run
     // drops it from the series.
-    if (checkpoint_settings.enabled() && checkpoint_step != step)
+    if (checkpoint_settings.enabled() && checkpoint_step != current_step())
       write_checkpoint(between_steps);
-    if (output_step != step)
+    if (output_step != current_step())
       write_output();
-    pcerr << "gelmpm: " << signal_name(signal) << " received: stopped after step " << step
-          << " at t/tau_d = " << time << " with a complete last output; the results are in "
-          << output_settings.directory << std::endl;
+    pcerr << "gelmpm: " << signal_name(signal) << " received: stopped after step " << current_step()
+          << " at t/tau_d = " << current_time()
+          << " with a complete last output; the results are in " << output_settings.directory
+          << std::endl;
     return 128 + signal;
   }
 
@@ -1394,7 +1006,7 @@ namespace GelMPM
     catch (const std::runtime_error &e)
       {
         pcerr << "gelmpm: the run stopped: " << e.what()
-              << "; what was written up to t/tau_d = " << time << " is kept in "
+              << "; what was written up to t/tau_d = " << current_time() << " is kept in "
               << output_settings.directory << std::endl;
         status = 1;
       }
@@ -1411,26 +1023,27 @@ namespace GelMPM
         MPI_Abort(MPI_COMM_WORLD, 1);
       }
     if (status == 0)
-      pcout << "gelmpm: reached t/tau_d = " << time << " in " << step << " steps" << std::endl;
-    if (n_uncontrolled_errors > 0)
-      pcout << "gelmpm: " << n_uncontrolled_errors
+      pcout << "gelmpm: reached t/tau_d = " << current_time() << " in " << current_step()
+            << " steps" << std::endl;
+    if (loop && loop->uncontrolled_errors() > 0)
+      pcout << "gelmpm: " << loop->uncontrolled_errors()
             << " step(s) accepted with an error estimate above its tolerance whatever the step "
                "(a perturbation's jump or the points' integration noise)"
             << std::endl;
-    if (!output_settings.test_mode)
-      pcout << "gelmpm: " << n_newton_iterations << " Newton iterations, " << n_factorizations
-            << " factorisations (" << linear_solver.name() << "), " << n_new_patterns
-            << " sparsity patterns";
-    if (!output_settings.test_mode && Collective::is_parallel(scene.communicator))
+    if (!output_settings.test_mode && loop)
+      pcout << "gelmpm: " << loop->newton_iterations() << " Newton iterations, "
+            << loop->factorizations() << " factorisations (" << linear_solver.name() << "), "
+            << model->new_patterns() << " sparsity patterns";
+    if (!output_settings.test_mode && loop && Collective::is_parallel(scene.communicator))
       pcout << ", " << dealii::Utilities::MPI::n_mpi_processes(scene.communicator)
-            << " ranks, partitioned anew " << n_repartitions << " times";
+            << " ranks, partitioned anew " << model->repartitions() << " times";
     if (!output_settings.test_mode && linear_solver.iterative())
       {
         const auto [iterations, solves] = linear_solver.krylov_iterations();
         pcout << ", " << iterations << " Krylov iterations in " << solves << " solves ("
               << (solves > 0 ? double(iterations) / solves : 0.) << " per solve)";
       }
-    if (!output_settings.test_mode)
+    if (!output_settings.test_mode && loop)
       pcout << std::endl;
     if (!output_settings.test_mode)
       {
@@ -1471,6 +1084,22 @@ namespace GelMPM
     read_scene_file(prm, scene_file, overrides);
     Simulator<dim> simulator(prm, structure, scene_file);
     return simulator.run();
+  }
+
+
+  template <int dim>
+  double
+  Simulator<dim>::current_time() const
+  {
+    return loop ? loop->time() : 0.;
+  }
+
+
+  template <int dim>
+  unsigned int
+  Simulator<dim>::current_step() const
+  {
+    return loop ? loop->step() : 0;
   }
 
 

@@ -1,4 +1,5 @@
 #include <gelmpm/core/input_error.h>
+#include <gelmpm/core/non_physical_state.h>
 #include <gelmpm/solvers/newton.h>
 
 #include <cmath>
@@ -102,5 +103,144 @@ namespace GelMPM
             "Newton/Tolerance",
             "must lie strictly between 0 and 1",
             "use e.g. 1e-10");
+  }
+
+  NewtonReport
+  solve_newton(NewtonSystem           &system,
+               dealii::Vector<double> &solution,
+               const double            dt,
+               const NewtonSettings   &settings,
+               const LinearSolver     &linear_solver,
+               const double            scale_u,
+               const double            scale_mu,
+               dealii::TimerOutput    &timer)
+  {
+    NewtonReport report;
+    const bool   reuse = settings.reuse_contraction > 0.;
+    // Assemble at x; false (with the reason in report.failure) if x is not physical.
+    const auto assemble_at = [&](const dealii::Vector<double> &x, const bool with_matrix) {
+      try
+        {
+          dealii::TimerOutput::Scope scope(timer, "assembly");
+          system.assemble(x, dt, with_matrix);
+        }
+      catch (const NonPhysicalState &e)
+        {
+          report.failure = e.what();
+          return false;
+        }
+      report.tangent_at_solution = with_matrix;
+      report.residual_u          = system.residual_norm_u() / scale_u;
+      report.residual_mu         = system.residual_norm_mu() / scale_mu;
+      return true;
+    };
+    const auto merit = [&]() {
+      return report.residual_u * report.residual_u + report.residual_mu * report.residual_mu;
+    };
+
+    // Whether the next iteration factorises the tangent at its iterate. Without reuse every
+    // assembly includes the tangent, which the next iteration then factorises.
+    bool fresh = !reuse || !linear_solver.has_factorization();
+    if (!assemble_at(solution, fresh))
+      return report;
+    dealii::Vector<double> increment(solution.size()), trial(solution.size());
+    for (unsigned int k = 0;; ++k)
+      {
+        if (!std::isfinite(report.residual_u) || !std::isfinite(report.residual_mu))
+          {
+            report.failure = "the residual is not finite";
+            return report;
+          }
+        if (k >= settings.minimum_iterations && report.residual_u <= settings.tolerance &&
+            report.residual_mu <= settings.tolerance)
+          {
+            report.converged = true;
+            report.failure.clear();
+            return report;
+          }
+        if (k == settings.maximum_iterations)
+          {
+            report.failure = "no convergence in " + std::to_string(k) + " Newton iterations";
+            return report;
+          }
+        // The state was physical when its residual was assembled: so is its tangent.
+        if (fresh && !report.tangent_at_solution && !assemble_at(solution, true))
+          return report;
+        try
+          {
+            dealii::TimerOutput::Scope scope(timer, "solve");
+            if (fresh)
+              {
+                linear_solver.factorize(system.matrix());
+                ++report.factorizations;
+              }
+            linear_solver.solve(increment, system.residual());
+          }
+        catch (const std::exception &e)
+          {
+            report.failure = e.what();
+            return report;
+          }
+        report.iterations = k + 1;
+
+        const double merit_0 = merit();
+        const double r_u_0 = report.residual_u, r_mu_0 = report.residual_mu;
+        double       alpha     = 1.;
+        bool         discarded = false;
+        for (;;)
+          {
+            trial = solution;
+            trial.add(-alpha, increment);
+            const bool physical = assemble_at(trial, !reuse);
+            // Near the solution round-off decides whether the residual still decreases: there
+            // any physical update is taken.
+            const bool near_solution =
+              std::max(report.residual_u, report.residual_mu) <= 1e3 * settings.tolerance;
+            if (!fresh)
+              {
+                // An old tangent that leads astray is replaced, not damped.
+                discarded = !physical || (!near_solution && merit() > (1. - 1e-4) * merit_0);
+                break;
+              }
+            if (settings.line_search == NewtonSettings::LineSearch::none)
+              {
+                if (!physical)
+                  {
+                    report.failure =
+                      "Newton iteration " + std::to_string(k + 1) + ": " + report.failure;
+                    return report;
+                  }
+                break;
+              }
+            if (physical && (settings.line_search == NewtonSettings::LineSearch::physical ||
+                             near_solution || merit() <= (1. - 1e-4 * alpha) * merit_0))
+              break;
+            const std::string why = physical ? "the residual does not decrease" : report.failure;
+            alpha *= 0.5;
+            if (alpha < settings.smallest_damping)
+              {
+                report.failure = "Newton iteration " + std::to_string(k + 1) +
+                                 ": no damped update down to 'Newton/Smallest damping' = " +
+                                 std::to_string(settings.smallest_damping) + " is acceptable (" +
+                                 why + ")";
+                return report;
+              }
+          }
+        report.history.push_back({{r_u_0, r_mu_0, discarded ? 0. : alpha}});
+        if (discarded)
+          {
+            // Back to the iterate, whose residual and (physical) tangent the next iteration
+            // needs.
+            fresh = true;
+            if (!assemble_at(solution, true))
+              return report;
+            continue;
+          }
+        if (alpha < 1.)
+          ++report.damped_iterations;
+        solution.swap(trial);
+        fresh =
+          !reuse || merit() > settings.reuse_contraction * settings.reuse_contraction * merit_0;
+      }
   }
 } // namespace GelMPM

@@ -18,20 +18,19 @@
 namespace
 {
   /** R(x) = log(x - 1) on one unknown, with the interface solve_newton() needs. */
-  struct LogarithmSystem
+  class LogarithmSystem : public GelMPM::NewtonSystem
   {
-    dealii::TrilinosWrappers::SparseMatrix matrix_;
-    dealii::Vector<double>                 residual_{1};
-
+  public:
     LogarithmSystem()
     {
       dealii::DynamicSparsityPattern pattern(1, 1);
       pattern.add(0, 0);
       matrix_.reinit(pattern);
+      residual_.reinit(1);
     }
 
     void
-    assemble(const dealii::Vector<double> &x, const double, const bool with_matrix)
+    assemble(const dealii::Vector<double> &x, const double, const bool with_matrix) override
     {
       if (!(x(0) > 1.))
         throw GelMPM::NonPhysicalState("the state x = " + std::to_string(x(0)) +
@@ -41,25 +40,12 @@ namespace
         matrix_.set(0, 0, 1. / (x(0) - 1.));
       matrix_.compress(dealii::VectorOperation::insert);
     }
-    const dealii::TrilinosWrappers::SparseMatrix &
-    matrix() const
+
+    /** The one unknown is a "displacement": |R_u| = |R|, |R_mu| = 0. */
+    unsigned int
+    n_u_dofs() const override
     {
-      return matrix_;
-    }
-    const dealii::Vector<double> &
-    residual() const
-    {
-      return residual_;
-    }
-    double
-    residual_norm_u() const
-    {
-      return std::abs(residual_(0));
-    }
-    double
-    residual_norm_mu() const
-    {
-      return 0.;
+      return 1;
     }
   };
 

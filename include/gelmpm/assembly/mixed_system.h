@@ -4,6 +4,7 @@
 #include <gelmpm/assembly/contact_settings.h>
 #include <gelmpm/assembly/discretisation.h>
 #include <gelmpm/assembly/nitsche_settings.h>
+#include <gelmpm/core/newton_system.h>
 #include <gelmpm/core/sparse_entries.h>
 #include <gelmpm/material/flory_rehner_gel.h>
 #include <gelmpm/particles/property_layout.h>
@@ -67,7 +68,7 @@ namespace GelMPM
    * reduced over the ranks, and every function that may fail on one rank's points fails on all.
    */
   template <int dim>
-  class MixedSystem
+  class MixedSystem : public NewtonSystem
   {
   public:
     MixedSystem(const MaterialRegions<dim> &materials,
@@ -106,11 +107,13 @@ namespace GelMPM
      * state leaves the physical range (J <= 1).
      */
     void
-    assemble(const dealii::Vector<double> &solution, const double dt, const bool with_matrix);
+    assemble(const dealii::Vector<double> &solution,
+             const double                  dt,
+             const bool                    with_matrix) override;
 
-    /** The tangent assembled last. */
-    const dealii::TrilinosWrappers::SparseMatrix &
-    matrix() const;
+    /** The displacement unknowns of the step's spaces, which come first. */
+    unsigned int
+    n_u_dofs() const override;
 
     /** The classification (cells with volume points) the sparsity pattern was built for. */
     const std::vector<bool> &
@@ -124,18 +127,6 @@ namespace GelMPM
      */
     bool
     restore_tangent(const std::vector<bool> &classification, const SparseEntries &entries);
-
-    /** The residual assembled last. */
-    const dealii::Vector<double> &
-    residual() const;
-
-    /** Euclidean norm of the displacement block of the residual. */
-    double
-    residual_norm_u() const;
-
-    /** Euclidean norm of the chemical-potential block of the residual. */
-    double
-    residual_norm_mu() const;
 
     /**
      * After convergence: move every material point by du, and update F_n F_0, V_n, N_n A_n
@@ -465,8 +456,6 @@ namespace GelMPM
     // On several ranks: the cells of this rank's blocks when the pattern was built.
     std::vector<unsigned int> pattern_block_cells;
 
-    dealii::TrilinosWrappers::SparseMatrix matrix_;
-    dealii::Vector<double>                 residual_;
     // Whether add_to_matrix() may write into the rows directly (one rank, sorted columns).
     bool rows_are_local_and_sorted = false;
     // The sparsity of the mass matrices of project_point_values() (mu, displacement), built on

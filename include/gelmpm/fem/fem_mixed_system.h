@@ -1,6 +1,7 @@
 #ifndef gelmpm_fem_fem_mixed_system_h
 #define gelmpm_fem_fem_mixed_system_h
 
+#include <gelmpm/core/newton_system.h>
 #include <gelmpm/material/flory_rehner_gel.h>
 
 #include <deal.II/base/point.h>
@@ -61,7 +62,7 @@ namespace GelMPM
    * carry a diagonal entry, so Newton keeps the constrained values of the initial guess.
    */
   template <int dim>
-  class FemMixedSystem
+  class FemMixedSystem : public NewtonSystem
   {
   public:
     /** Which of the two equivalent forms of the residual is assembled (see the class text). */
@@ -154,23 +155,9 @@ namespace GelMPM
      * physical range (J <= 1).
      */
     void
-    assemble(const dealii::Vector<double> &solution, const double dt, const bool with_matrix);
-
-    /** The tangent assembled last. */
-    const dealii::TrilinosWrappers::SparseMatrix &
-    matrix() const;
-
-    /** The residual assembled last (zero in constrained rows). */
-    const dealii::Vector<double> &
-    residual() const;
-
-    /** Euclidean norm of the displacement block of the residual. */
-    double
-    residual_norm_u() const;
-
-    /** Euclidean norm of the chemical-potential block of the residual. */
-    double
-    residual_norm_mu() const;
+    assemble(const dealii::Vector<double> &solution,
+             const double                  dt,
+             const bool                    with_matrix) override;
 
     /** After convergence: u_n += du, mu_n = mu. */
     void
@@ -232,7 +219,7 @@ namespace GelMPM
     unsigned int
     n_dofs() const;
     unsigned int
-    n_u_dofs() const;
+    n_u_dofs() const override;
     unsigned int
     n_mu_dofs() const;
 
@@ -276,9 +263,7 @@ namespace GelMPM
 
     unsigned int n_u_dofs_ = 0;
 
-    dealii::Vector<double>                 state_;
-    dealii::TrilinosWrappers::SparseMatrix matrix_;
-    dealii::Vector<double>                 residual_;
+    dealii::Vector<double> state_;
     /** The residual assembled last without the constraints (for boundary_force()). */
     dealii::Vector<double> unconstrained_residual_;
 

@@ -10,13 +10,16 @@
 #include <gelmpm/io/particle_output.h>
 #include <gelmpm/io/statistics_file.h>
 #include <gelmpm/simulator/boundary_balance.h>
+#include <gelmpm/simulator/material_point_model.h>
 #include <gelmpm/simulator/observables.h>
 #include <gelmpm/simulator/scene.h>
 #include <gelmpm/simulator/scene_structure.h>
+#include <gelmpm/simulator/stability_monitor.h>
 #include <gelmpm/solvers/linear_solver.h>
 #include <gelmpm/solvers/newton.h>
 #include <gelmpm/solvers/run_progress.h>
 #include <gelmpm/solvers/step_control.h>
+#include <gelmpm/solvers/time_loop.h>
 #include <gelmpm/solvers/time_stepping.h>
 #include <gelmpm/stability/stability_analysis.h>
 
@@ -35,9 +38,12 @@ namespace GelMPM
   /**
    * @brief A GelMPM run: reads a scene's parameters, checks them, and carries the scene out.
    *
-   * The scene itself (gel, grid, body, boundary, points, spaces, system) is a Scene; the
-   * simulator adds what a run needs around it: time stepping, Newton, output, statistics and the
-   * stability analysis.
+   * The scene itself (gel, grid, body, boundary, points, spaces, system) is a Scene; the steps
+   * are the TimeLoop's, which drives the MaterialPointModel of the scene and tells its observers
+   * (this simulator and the StabilityMonitor) what happens. The simulator keeps the
+   * configuration, the files, the output and the checkpoints: as a StepObserver it records each
+   * accepted step (statistics.csv, the log, ParaView output when due) and writes checkpoints
+   * between steps.
    *
    * Construction parses and validates every parameter and throws InputError on bad input, so
    * that nothing is written before the whole scene is known to be consistent. run() creates the
@@ -50,7 +56,7 @@ namespace GelMPM
    * @tparam dim Space dimension (2: plane strain; 3).
    */
   template <int dim>
-  class Simulator
+  class Simulator : private StepObserver
   {
   public:
     /** Declare every section a scene may contain, for the given structure. */
@@ -100,14 +106,6 @@ namespace GelMPM
     write_event(const std::string &name, const double t_over_tau_d, const int pore);
 
   private:
-    /** How advance() ended. */
-    enum class StepOutcome
-    {
-      accepted,   ///< a converged step was taken
-      failed,     ///< the step size fell below the minimum
-      interrupted ///< a stop signal arrived before an attempt; the last accepted state stands
-    };
-
     void
     print_header();
 
@@ -183,12 +181,24 @@ namespace GelMPM
      */
     int
     advance_to_end();
-    /**
-     * Take one converged step. A stop signal is looked for before every attempt, so that a step
-     * whose attempts keep failing can be stopped within one attempt.
-     */
-    StepOutcome
-    advance();
+    /** The time (tau_d) and the number of the last accepted step (0 before the loop exists). */
+    double
+    current_time() const;
+    unsigned int
+    current_step() const;
+
+    /** StepObserver: the points per cell for the grid output, before the step's attempts. */
+    void
+    step_begins() override;
+    /** StepObserver: the boundary pieces' forces and fluxes at the converged state. */
+    bool
+    before_update(dealii::Vector<double> &solution, const double dt) override;
+    /** StepObserver: statistics, log line and output of an accepted step. */
+    void
+    accepted(const AcceptedStep &step, const dealii::Vector<double> &solution) override;
+    /** StepObserver: a checkpoint when one is due. */
+    void
+    between_steps() override;
     /** The step line of the log for the step just accepted. */
     void
     print_step_line(const NewtonReport &report, const double step_dt) const;
@@ -197,24 +207,6 @@ namespace GelMPM
     record_statistics(const NewtonReport           &report,
                       const unsigned int            attempts,
                       const dealii::Vector<double> *solution);
-    /** The stability columns of statistics.csv for a converged step. */
-    void
-    record_stability(const StabilityReport &result);
-    /**
-     * Hand the signature of a converged attempt to the step control (bracketing of a loss of
-     * stability, steps while unstable) and log what it decided.
-     */
-    StepControl::Verdict
-    judge_signature(const StabilityReport &result);
-    /** A bracketed loss of stability: to the log and to stability.csv. */
-    void
-    report_onset(const StabilityReport &result);
-    /**
-     * Add 'Stability/Perturbation amplitude' times the critical @p mode (displacement unknowns,
-     * scaled and signed by 'Perturbation direction') to the converged @p solution.
-     */
-    void
-    perturb_along_mode(const dealii::Vector<double> &mode, dealii::Vector<double> &solution) const;
     /** Keep the critical @p mode of the converged step for the next output (mode.pvd). */
     void
     record_mode(const dealii::Vector<double> &mode);
@@ -223,24 +215,6 @@ namespace GelMPM
     /** Record the initial grid for GridOutput: cells classified from the points, du = 0, mu_0. */
     void
     record_initial_grid();
-    /** Chemical-potential coefficients of every control point of the mu grid, from a solution. */
-    void
-    store_mu_coefficients(const dealii::Vector<double> &solution);
-    /**
-     * Initial guess for a step of @p dt: du = 0, or with 'Newton/Initial displacement =
-     * extrapolated' the last step's motion scaled to @p dt; mu from the points or from the last
-     * converged coefficients ('Newton/Initial chemical potential').
-     */
-    void
-    initial_guess(dealii::Vector<double> &solution, const double dt = 0.) const;
-    /**
-     * With 'Time stepping/Displacement tolerance': whether the converged @p solution of a step of
-     * @p dt may be accepted by the error control (else the step was cut, and @p failure says
-     * why).
-     */
-    bool
-    error_acceptable(const dealii::Vector<double> &solution, const double dt, std::string &failure);
-
     // First, so that the wall time of a run counts its set-up.
     RunProgress::Clock::time_point run_start = RunProgress::Clock::now();
     SceneStructure                 structure;
@@ -260,36 +234,21 @@ namespace GelMPM
     dealii::ConditionalOStream pcerr;
     dealii::TimerOutput        timer;
 
-    std::unique_ptr<ParticleOutput<dim>> particle_output;
-    std::unique_ptr<GridOutput<dim>>     grid_output;
-    std::unique_ptr<GridOutput<dim>>     mode_output;           // with Stability/Write mode
-    bool                                 mode_recorded = false; // with Output/Write grid
-    std::vector<unsigned int>            grid_volume_points;    // per cell, start of the step
-    StatisticsFile                       statistics;
-    StatisticsFile                       stability_file; // stability.csv, with the inertia
-    StatisticsFile                       events_file;    // events.csv (inertia or pores)
-    std::unique_ptr<StepControl>         control;
-    std::unique_ptr<RunProgress>         progress;
-    bool                                 announced_bracketing        = false;
-    bool                                 inexact_extrapolation_noted = false;
-    bool                                 ended_at_onset              = false; // End at onset
-    Inertia                              last_stable_inertia;
-    double                               last_eigenvalue = 0.;
-    std::vector<double>                  mu_coefficients; // per mu control point
-    // Over all attempts of the run, for the summary at its end.
-    unsigned long n_newton_iterations = 0, n_factorizations = 0, n_new_patterns = 0;
-    unsigned long n_repartitions = 0;
-    // Steps accepted although their error estimate exceeds its tolerance whatever the step: said
-    // once when it first happens, counted in the summary.
-    unsigned long n_uncontrolled_errors = 0;
-    // On several ranks: the ratio of the largest number of points on a rank to the mean above
-    // which the grid is partitioned anew (a repartition costs about one grid reset).
-    static constexpr double largest_imbalance         = 1.1;
-    double                  imbalance_after_partition = 1.;
-    std::vector<bool>       mu_known;                // coefficient holds a current value
-    std::vector<double>     mu_projection;           // points' mu on the step's basis
-    std::vector<double>     displacement_projection; // last step's motion on the step's basis
-    double                  last_dt = 0.;            // the last accepted step (0 before the first)
+    std::unique_ptr<ParticleOutput<dim>>     particle_output;
+    std::unique_ptr<GridOutput<dim>>         grid_output;
+    std::unique_ptr<GridOutput<dim>>         mode_output;           // with Stability/Write mode
+    bool                                     mode_recorded = false; // with Output/Write grid
+    std::vector<unsigned int>                grid_volume_points;    // per cell, start of the step
+    StatisticsFile                           statistics;
+    StatisticsFile                           stability_file; // stability.csv, with the inertia
+    StatisticsFile                           events_file;    // events.csv (inertia or pores)
+    std::unique_ptr<MaterialPointModel<dim>> model;
+    std::unique_ptr<TimeLoop>                loop;
+    std::unique_ptr<StabilityMonitor<dim>>   monitor; // with the stability analysis
+    std::unique_ptr<RunProgress>             progress;
+    bool                                     inexact_extrapolation_noted = false;
+    // The pieces' terms of the step being accepted, taken before a kick moves its state.
+    std::vector<typename MixedSystem<dim>::PieceBalance> balances;
 
     // Held by rank 0 from the preparation of the output directory to the end of the run.
     std::unique_ptr<DirectoryLock> output_lock;
@@ -306,13 +265,9 @@ namespace GelMPM
     unsigned int n_volume_points  = 0;
     unsigned int n_surface_points = 0;
     double       body_volume      = 0.;
-    double       time             = 0.; // in tau_d
-    unsigned int step             = 0;
-    unsigned int output_step      = dealii::numbers::invalid_unsigned_int; // of the last output
-    double       tau_d            = 1.; // L^2 / D, physical time of one tau_d
-    double       scale_u          = 1.;
-    double       scale_mu         = 1.;
-    double       next_output_time = 0.;
+    // tau_d and Newton's residual scales, from the gel and the initial body (handed to the loop).
+    RunScales    scales;
+    unsigned int output_step = dealii::numbers::invalid_unsigned_int; // of the last output
   };
 
 

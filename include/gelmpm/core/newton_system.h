@@ -1,0 +1,67 @@
+#ifndef gelmpm_core_newton_system_h
+#define gelmpm_core_newton_system_h
+
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+namespace GelMPM
+{
+  /**
+   * @brief What Newton's method needs of one discretised time step of the mixed u–mu problem:
+   * the interface that solve_newton() and TimeLoop drive.
+   *
+   * The unknowns are ordered displacement block first (n_u_dofs() of them), then chemical
+   * potential; the residual norms are those of the two blocks, which the Newton convergence
+   * test scales separately (NewtonSettings). The material point system (MixedSystem) and the
+   * body-fitted peer (FemMixedSystem) implement it, so that one Newton and one time loop serve
+   * both, and comparisons between them measure the discretisations alone.
+   *
+   * It lives in `core` because the systems (assembly, fem) and the solvers that drive them depend
+   * on core, not on each other.
+   */
+  class NewtonSystem
+  {
+  public:
+    virtual ~NewtonSystem() = default;
+
+    /**
+     * Assemble the residual (and, if @p with_matrix, the tangent) at the unknowns @p solution
+     * for the physical time step @p dt. Throws NonPhysicalState when the state leaves the
+     * physical range; without the matrix it assembles the residual alone.
+     */
+    virtual void
+    assemble(const dealii::Vector<double> &solution, const double dt, const bool with_matrix) = 0;
+
+    /** The number of displacement unknowns, which come first. */
+    virtual unsigned int
+    n_u_dofs() const = 0;
+
+    /** The tangent assembled last. */
+    const dealii::TrilinosWrappers::SparseMatrix &
+    matrix() const
+    {
+      return matrix_;
+    }
+
+    /** The residual assembled last. */
+    const dealii::Vector<double> &
+    residual() const
+    {
+      return residual_;
+    }
+
+    /** Euclidean norm of the displacement block of the residual. */
+    double
+    residual_norm_u() const;
+
+    /** Euclidean norm of the chemical-potential block of the residual. */
+    double
+    residual_norm_mu() const;
+
+  protected:
+    dealii::TrilinosWrappers::SparseMatrix matrix_;
+    dealii::Vector<double>                 residual_;
+  };
+} // namespace GelMPM
+
+#endif

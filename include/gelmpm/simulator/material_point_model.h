@@ -1,0 +1,149 @@
+#ifndef gelmpm_simulator_material_point_model_h
+#define gelmpm_simulator_material_point_model_h
+
+#include <gelmpm/core/sparse_entries.h>
+#include <gelmpm/simulator/scene.h>
+#include <gelmpm/solvers/linear_solver.h>
+#include <gelmpm/solvers/newton.h>
+#include <gelmpm/solvers/time_loop.h>
+#include <gelmpm/solvers/time_stepping.h>
+
+#include <deal.II/base/timer.h>
+#include <deal.II/lac/vector.h>
+
+#include <vector>
+
+namespace GelMPM
+{
+  /**
+   * @brief The material point method as a SteppedModel of the TimeLoop: the grid reset of every
+   * step (paper §3.2, Fig. 2b), the first Newton iterate, the error estimates of the points'
+   * motion, and the update of the points after an accepted step.
+   *
+   * It keeps the state that carries over from one step to the next besides the points
+   * themselves: the chemical-potential coefficients of the last step (the first iterate of mu
+   * where a control point keeps its support) and, per step, the projections of the points' mu
+   * and of their last motion onto the step's basis (the predictor of 'Newton/Initial
+   * displacement = extrapolated'). The Simulator holds one, beside the scene it works on.
+   */
+  template <int dim>
+  class MaterialPointModel : public SteppedModel
+  {
+  public:
+    /**
+     * The model of @p scene (after Scene::create_system()), solved with @p linear_solver, whose
+     * factorisation it drops when a grid reset changes the sparsity pattern; the displacement
+     * error is measured in @p characteristic_length ('Time stepping/Characteristic length').
+     */
+    MaterialPointModel(Scene<dim>           &scene,
+                       LinearSolver         &linear_solver,
+                       const NewtonSettings &newton,
+                       const double          characteristic_length,
+                       dealii::TimerOutput  &timer);
+
+    NewtonSystem &
+    system() override;
+
+    /**
+     * The grid reset: cells classified from the points, extended bases, per-point cache and
+     * (when the classification changed) the sparsity pattern; the projections the attempts'
+     * first iterates start from.
+     */
+    void
+    begin_step(const double last_dt) override;
+
+    /** The step's boundary data, and the first iterate (initial_guess()). */
+    void
+    prepare_attempt(const double            t_begin,
+                    const double            dt,
+                    const double            last_dt,
+                    dealii::Vector<double> &solution) override;
+
+    bool
+    estimates_errors() const override;
+
+    double
+    largest_motion_in_cells(const dealii::Vector<double> &solution) const override;
+
+    double
+    increment_deviation(const dealii::Vector<double> &solution, const double ratio) const override;
+
+    double
+    local_error(const dealii::Vector<double> &solution,
+                const double                  ratio,
+                const bool                    largest) const override;
+
+    /**
+     * Move the points by the accepted @p solution and update their state, put them into their
+     * new cells (partitioning the grid anew on several ranks when the load has become uneven),
+     * and keep the step's mu coefficients. Throws std::runtime_error when points left the grid.
+     */
+    void
+    update(const dealii::Vector<double> &solution, const double t_end) override;
+
+    /** A stop signal on any rank (all ranks stop together). */
+    int
+    stop_signal() const override;
+
+    /**
+     * The first Newton iterate of a step of @p dt after a step of @p last_dt: du = 0, or with
+     * 'Newton/Initial displacement = extrapolated' the last step's motion scaled to @p dt; mu
+     * from the points or from the last converged coefficients ('Newton/Initial chemical
+     * potential'). Also the initial state of the grid output.
+     */
+    void
+    initial_guess(dealii::Vector<double> &solution,
+                  const double            dt      = 0.,
+                  const double            last_dt = 0.) const;
+
+    /**
+     * A resumed run: refactorise @p tangent (all rows of the checkpoint's factorisation) at the
+     * first grid reset if it gives @p classification again, so that the next Newton iteration
+     * solves with what the interrupted run would have.
+     */
+    void
+    restore_factorization(const std::vector<bool> &classification, const SparseEntries &tangent);
+
+    /** Grid resets that gave a new sparsity pattern, and repartitions of the grid. */
+    unsigned long
+    new_patterns() const;
+    unsigned long
+    repartitions() const;
+
+    /** Boost serialization: the mu coefficients and which of them hold a value. */
+    template <class Archive>
+    void
+    serialize(Archive &ar, const unsigned int)
+    {
+      ar &mu_coefficients &mu_known;
+    }
+
+  private:
+    /** Chemical-potential coefficients of every control point of the mu grid, from a solution. */
+    void
+    store_mu_coefficients(const dealii::Vector<double> &solution);
+
+    Scene<dim>          &scene;
+    LinearSolver        &linear_solver;
+    NewtonSettings       newton;
+    double               characteristic_length;
+    dealii::TimerOutput &timer;
+
+    std::vector<double> mu_coefficients;         // per mu control point
+    std::vector<bool>   mu_known;                // coefficient holds a current value
+    std::vector<double> mu_projection;           // points' mu on the step's basis
+    std::vector<double> displacement_projection; // last step's motion on the step's basis
+
+    std::vector<bool> resumed_classification;
+    SparseEntries     resumed_tangent;
+
+    // On several ranks: the ratio of the largest number of points on a rank to the mean above
+    // which the grid is partitioned anew (a repartition costs about one grid reset).
+    static constexpr double largest_imbalance         = 1.1;
+    double                  imbalance_after_partition = 1.;
+    unsigned long           n_new_patterns            = 0;
+    unsigned long           n_repartitions            = 0;
+  };
+} // namespace GelMPM
+
+#endif

@@ -1,0 +1,251 @@
+#include <gelmpm/core/stop_request.h>
+#include <gelmpm/particles/point_location.h>
+#include <gelmpm/simulator/material_point_model.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <algorithm>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace GelMPM
+{
+  template <int dim>
+  MaterialPointModel<dim>::MaterialPointModel(Scene<dim>           &scene,
+                                              LinearSolver         &linear_solver,
+                                              const NewtonSettings &newton,
+                                              const double          characteristic_length,
+                                              dealii::TimerOutput  &timer)
+    : scene(scene)
+    , linear_solver(linear_solver)
+    , newton(newton)
+    , characteristic_length(characteristic_length)
+    , timer(timer)
+    , mu_coefficients(scene.spaces->mu_space().n_functions(), scene.material.mu_0())
+    , mu_known(scene.spaces->mu_space().n_functions(), true)
+  {}
+
+
+  template <int dim>
+  NewtonSystem &
+  MaterialPointModel<dim>::system()
+  {
+    return *scene.system;
+  }
+
+
+  template <int dim>
+  void
+  MaterialPointModel<dim>::begin_step(const double last_dt)
+  {
+    dealii::TimerOutput::Scope scope(timer, "grid reset");
+    // A grid reset that changes the classification gives the tangent a new sparsity pattern;
+    // the factorisation of the old one goes first, while the matrix it refers to still exists.
+    // Otherwise it stays, and Newton may start from it (modified Newton).
+    if (scene.system->setup(scene.particles, [this] {
+          linear_solver.new_pattern();
+        }))
+      ++n_new_patterns;
+    if (linear_solver.iterative())
+      linear_solver.set_block_structure(scene.spaces->n_u_dofs(),
+                                        dim,
+                                        scene.spaces->u_dof_greville_points());
+    if (!resumed_tangent.empty())
+      {
+        if (scene.system->restore_tangent(resumed_classification, resumed_tangent))
+          linear_solver.factorize(scene.system->matrix());
+        resumed_tangent.clear();
+        resumed_classification.clear();
+      }
+    // The points and the basis are fixed for the attempts of the step: project mu once, and only
+    // if some coefficient will start from it.
+    bool needed = newton.mu_from_points;
+    for (unsigned int i = 0; i < mu_known.size() && !needed; ++i)
+      needed = !mu_known[i] &&
+               scene.spaces->mu().dof_of_control_point(i) != dealii::numbers::invalid_unsigned_int;
+    mu_projection           = needed ? scene.system->mu_from_points() : std::vector<double>();
+    displacement_projection = (newton.extrapolate_displacement && last_dt > 0.) ?
+                                scene.system->displacement_from_points(1.) :
+                                std::vector<double>();
+  }
+
+
+  template <int dim>
+  void
+  MaterialPointModel<dim>::prepare_attempt(const double            t_begin,
+                                           const double            dt,
+                                           const double            last_dt,
+                                           dealii::Vector<double> &solution)
+  {
+    scene.system->set_boundary_values(t_begin + dt, t_begin);
+    initial_guess(solution, dt, last_dt);
+  }
+
+
+  template <int dim>
+  void
+  MaterialPointModel<dim>::initial_guess(dealii::Vector<double> &solution,
+                                         const double            dt,
+                                         const double            last_dt) const
+  {
+    solution.reinit(scene.spaces->n_dofs());
+    if (!displacement_projection.empty() && last_dt > 0.)
+      for (unsigned int i = 0; i < displacement_projection.size(); ++i)
+        solution(i) = dt / last_dt * displacement_projection[i];
+    const auto        &mu  = scene.spaces->mu();
+    const unsigned int n_u = scene.spaces->n_u_dofs();
+    // With 'Newton/Initial chemical potential = points' every coefficient starts from the
+    // projection of the points' mu; otherwise only those that held no value in the last step
+    // (newly covered by material), where a stale coefficient would put a stress jump into the
+    // first residual that short (undrained) steps cannot absorb.
+    const std::vector<double> &from_points     = mu_projection;
+    const bool                 all_from_points = newton.mu_from_points && !from_points.empty();
+    for (unsigned int i = 0; i < mu_coefficients.size(); ++i)
+      {
+        const unsigned int dof = mu.dof_of_control_point(i);
+        if (dof != dealii::numbers::invalid_unsigned_int)
+          solution(n_u + dof) = (all_from_points || (!mu_known[i] && !from_points.empty())) ?
+                                  from_points[dof] :
+                                  mu_coefficients[i];
+      }
+  }
+
+
+  template <int dim>
+  bool
+  MaterialPointModel<dim>::estimates_errors() const
+  {
+    return true;
+  }
+
+
+  template <int dim>
+  double
+  MaterialPointModel<dim>::largest_motion_in_cells(const dealii::Vector<double> &solution) const
+  {
+    return scene.system->largest_displacement_increment(solution) / scene.spaces->h_u();
+  }
+
+
+  template <int dim>
+  double
+  MaterialPointModel<dim>::increment_deviation(const dealii::Vector<double> &solution,
+                                               const double                  ratio) const
+  {
+    return scene.system->largest_increment_deviation(solution, ratio);
+  }
+
+
+  template <int dim>
+  double
+  MaterialPointModel<dim>::local_error(const dealii::Vector<double> &solution,
+                                       const double                  ratio,
+                                       const bool                    largest) const
+  {
+    const auto error = scene.system->local_error_estimate(solution, ratio, largest);
+    return std::max(error.displacement / characteristic_length, error.chemical_potential);
+  }
+
+
+  template <int dim>
+  void
+  MaterialPointModel<dim>::update(const dealii::Vector<double> &solution, const double t_end)
+  {
+    dealii::TimerOutput::Scope scope(timer, "update");
+    const auto                 n_before = scene.particles.n_global_particles();
+    try
+      {
+        scene.system->update_particles(solution);
+      }
+    catch (const std::runtime_error &e)
+      {
+        std::ostringstream when;
+        when << "at t/tau_d = " << t_end << ", " << e.what();
+        throw std::runtime_error(when.str());
+      }
+    sort_into_cells(scene.particles, scene.grid, *scene.triangulation);
+    // The body moves and changes the points per rank: partition the grid anew when the most
+    // loaded rank holds much more than its share (its time sets the step's). The partition cannot
+    // split a cell: where whole cells leave an imbalance, the run waits until the imbalance has
+    // grown beyond what the last partition left.
+    const double imbalance = scene.imbalance();
+    if (imbalance > std::max(largest_imbalance, 1.05 * imbalance_after_partition))
+      {
+        scene.balance_partition();
+        imbalance_after_partition = scene.imbalance();
+        ++n_repartitions;
+      }
+    if (scene.particles.n_global_particles() != n_before)
+      throw std::runtime_error(
+        std::to_string(n_before - scene.particles.n_global_particles()) +
+        " material point(s) left the background grid at t = " + std::to_string(t_end) +
+        " tau_d; enlarge the grid ('Background grid/Upper corner')");
+    store_mu_coefficients(solution);
+  }
+
+
+  template <int dim>
+  void
+  MaterialPointModel<dim>::store_mu_coefficients(const dealii::Vector<double> &solution)
+  {
+    const auto        &mu  = scene.spaces->mu();
+    const unsigned int n_u = scene.spaces->n_u_dofs();
+    for (unsigned int i = 0; i < mu_coefficients.size(); ++i)
+      {
+        const unsigned int dof = mu.dof_of_control_point(i);
+        mu_known[i]            = true;
+        if (dof != dealii::numbers::invalid_unsigned_int)
+          mu_coefficients[i] = solution(n_u + dof);
+        else if (mu.control_point_kind(i) == ControlPointKind::boundary)
+          {
+            double value = 0.;
+            for (const auto &[interior, weight] : mu.extrapolation_weights(i))
+              value += weight * solution(n_u + mu.dof_of_control_point(interior));
+            mu_coefficients[i] = value;
+          }
+        else
+          mu_known[i] = false;
+      }
+  }
+
+
+  template <int dim>
+  int
+  MaterialPointModel<dim>::stop_signal() const
+  {
+    // A signal reaches the ranks at different moments: they stop together, at the first point
+    // where any of them has it.
+    return dealii::Utilities::MPI::max(GelMPM::stop_signal(), scene.communicator);
+  }
+
+
+  template <int dim>
+  void
+  MaterialPointModel<dim>::restore_factorization(const std::vector<bool> &classification,
+                                                 const SparseEntries     &tangent)
+  {
+    resumed_classification = classification;
+    resumed_tangent        = tangent;
+  }
+
+
+  template <int dim>
+  unsigned long
+  MaterialPointModel<dim>::new_patterns() const
+  {
+    return n_new_patterns;
+  }
+
+
+  template <int dim>
+  unsigned long
+  MaterialPointModel<dim>::repartitions() const
+  {
+    return n_repartitions;
+  }
+
+
+  template class MaterialPointModel<2>;
+  template class MaterialPointModel<3>;
+} // namespace GelMPM

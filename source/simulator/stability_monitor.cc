@@ -1,0 +1,258 @@
+#include <gelmpm/simulator/stability_monitor.h>
+
+#include <cmath>
+
+namespace GelMPM
+{
+  template <int dim>
+  StabilityMonitor<dim>::StabilityMonitor(
+    const StabilitySettings                                   &settings,
+    Scene<dim>                                                &scene,
+    const LinearSolver                                        &linear_solver,
+    TimeLoop                                                  &loop,
+    StatisticsFile                                            &statistics,
+    StatisticsFile                                            &stability_file,
+    dealii::ConditionalOStream                                &log,
+    dealii::TimerOutput                                       &timer,
+    const std::function<void(const std::string &, double)>    &write_event,
+    const std::function<void(const dealii::Vector<double> &)> &record_mode)
+    : settings(settings)
+    , scene(scene)
+    , linear_solver(linear_solver)
+    , loop(loop)
+    , statistics(statistics)
+    , stability_file(stability_file)
+    , log(log)
+    , timer(timer)
+    , write_event(write_event)
+    , record_mode(record_mode)
+  {}
+
+
+  template <int dim>
+  StepControl::Verdict
+  StabilityMonitor<dim>::judge_attempt(const dealii::Vector<double> &solution,
+                                       const double                  dt,
+                                       const NewtonReport           &report)
+  {
+    perturb = false;
+    if (!settings.enabled())
+      return StepControl::Verdict::accept;
+    {
+      dealii::TimerOutput::Scope scope(timer, "stability");
+      if (!report.tangent_at_solution)
+        scene.system->assemble(solution, dt * loop.scales().tau_d, true);
+      // The Newton solver's LDL^T of the converged tangent gives the signature, and is the
+      // factorisation the next step's modified Newton starts from.
+      const SymmetricFactorization *factorization = nullptr;
+      if ((settings.inertia || settings.n_eigenvalues > 0) && linear_solver.uses_ldlt())
+        {
+          linear_solver.factorize(scene.system->matrix());
+          loop.count_factorization();
+          factorization = linear_solver.symmetric_factorization();
+        }
+      last_result = analyse_stability(
+        scene.system->matrix(),
+        scene.spaces->n_u_dofs(),
+        settings,
+        [this]() {
+          return scene.system->mu_mass_matrix();
+        },
+        factorization);
+    }
+    const auto verdict = judge_signature(last_result);
+    if (verdict == StepControl::Verdict::retake || verdict == StepControl::Verdict::shorten)
+      return verdict;
+    record_columns(last_result);
+    if (record_mode && last_result.mode.size() == scene.spaces->n_u_dofs())
+      record_mode(last_result.mode);
+    // Leave the unstable branch at the bracketed critical time (doc/method.md).
+    ended_at_onset = verdict == StepControl::Verdict::onset && settings.end_at_onset;
+    perturb        = verdict == StepControl::Verdict::onset && !ended_at_onset &&
+              settings.perturbation_amplitude > 0. &&
+              last_result.mode.size() == scene.spaces->n_u_dofs();
+    return verdict;
+  }
+
+
+  template <int dim>
+  void
+  StabilityMonitor<dim>::attempt_rejected()
+  {
+    announced_bracketing = false;
+  }
+
+
+  template <int dim>
+  bool
+  StabilityMonitor<dim>::before_update(dealii::Vector<double> &solution, const double)
+  {
+    if (!perturb)
+      return false;
+    perturb_along_mode(last_result.drained_mode.size() == scene.spaces->n_u_dofs() ?
+                         last_result.drained_mode :
+                         last_result.mode,
+                       solution);
+    perturb = false;
+    return true;
+  }
+
+
+  template <int dim>
+  bool
+  StabilityMonitor<dim>::end_requested() const
+  {
+    return ended_at_onset;
+  }
+
+
+  template <int dim>
+  void
+  StabilityMonitor<dim>::record_columns(const StabilityReport &result)
+  {
+    if (settings.inertia)
+      {
+        statistics.set("n_pos", result.inertia.n_positive);
+        statistics.set("n_neg", result.inertia.n_negative);
+        statistics.set("n_zero", result.inertia.n_zero);
+        if (settings.drained_onset)
+          statistics.set("n_neg_uu", result.drained_inertia.n_negative);
+      }
+    for (unsigned int k = 0; k < result.eigenvalues.size(); ++k)
+      statistics.set("eig_" + std::to_string(k + 1), result.eigenvalues[k]);
+    if (settings.inf_sup)
+      statistics.set("inf_sup", result.inf_sup);
+    if (settings.condition)
+      statistics.set("condition_number", result.condition_number);
+  }
+
+
+  template <int dim>
+  StepControl::Verdict
+  StabilityMonitor<dim>::judge_signature(const StabilityReport &result)
+  {
+    if (!settings.inertia)
+      return StepControl::Verdict::accept;
+    const bool tangent_stable = result.inertia.n_positive == scene.spaces->n_u_dofs() &&
+                                result.inertia.n_negative == scene.spaces->n_mu_dofs() &&
+                                result.inertia.n_zero == 0;
+    // Until the first onset the drained criterion (K_uu positive definite: no mode grows) brackets
+    // it independently of the step; from then on the tangent's signature (no mode grows faster
+    // than 1/dt) controls the steps.
+    const bool use_drained = settings.drained_onset && !loop.control().onset_seen();
+    const bool stable =
+      use_drained ? (result.drained_inertia.n_negative == 0 && result.drained_inertia.n_zero == 0)
+                  : tangent_stable;
+    const double t_end   = loop.control().time() + loop.control().attempt_size();
+    const auto   verdict = loop.control().judge_signature(stable);
+    switch (verdict)
+      {
+        case StepControl::Verdict::retake:
+          if (!announced_bracketing)
+            log << "    the state loses stability ("
+                  << (use_drained ? "K_uu indefinite" : "signature not (n_u, n_mu, 0)")
+                  << ") between t = " << loop.control().time() << " and " << t_end
+                  << "; bisecting to 'Stability/Bisection tolerance' = "
+                  << settings.bisection_tolerance << std::endl;
+          announced_bracketing = true;
+          return verdict;
+        case StepControl::Verdict::shorten:
+          log << "    the signature at t = " << t_end << " with dt = " << loop.control().attempt_size()
+                << " is (" << result.inertia.n_positive << ", " << result.inertia.n_negative << ", "
+                << result.inertia.n_zero << "): a mode grows faster than 1/dt; retrying "
+                << "with dt = " << loop.control().proposed_step() << std::endl;
+          return verdict;
+        case StepControl::Verdict::step_dependent:
+          log << "    with shorter steps the state at t = " << t_end
+                << " is stable: the loss of stability depends on the step size; bracketing ended"
+                << std::endl;
+          break;
+        case StepControl::Verdict::regained:
+          log << "    the signature is (n_u, n_mu, 0) again at t/tau_d = " << t_end << ": stable"
+                << std::endl;
+          break;
+        case StepControl::Verdict::onset:
+          report_onset(result);
+          break;
+        case StepControl::Verdict::accept:
+          break;
+      }
+    announced_bracketing = loop.control().bracketing();
+    if (tangent_stable)
+      {
+        last_stable_inertia = result.inertia;
+        last_eigenvalue     = result.eigenvalues.empty() ? 0. : result.eigenvalues[0];
+      }
+    return verdict;
+  }
+
+
+  template <int dim>
+  void
+  StabilityMonitor<dim>::report_onset(const StabilityReport &result)
+  {
+    const auto &bracket = loop.control().bracket();
+    log << "    loss of stability between t/tau_d = " << bracket.t_stable << " (stable) and "
+          << bracket.t_unstable << ": signature (" << result.inertia.n_positive << ", "
+          << result.inertia.n_negative << ", " << result.inertia.n_zero << "), expected ("
+          << scene.spaces->n_u_dofs() << ", " << scene.spaces->n_mu_dofs() << ", 0)";
+    if (settings.drained_onset)
+      log << "; K_uu has " << result.drained_inertia.n_negative
+            << " negative eigenvalue(s) (drained criterion)";
+    log << std::endl;
+    stability_file.set("t_stable", bracket.t_stable);
+    stability_file.set("t_unstable", bracket.t_unstable);
+    stability_file.set("n_neg_stable", last_stable_inertia.n_negative);
+    stability_file.set("n_neg_unstable", result.inertia.n_negative);
+    stability_file.set("n_zero_unstable", result.inertia.n_zero);
+    stability_file.set("n_dofs_u", scene.spaces->n_u_dofs());
+    stability_file.set("n_dofs_mu", scene.spaces->n_mu_dofs());
+    if (!result.eigenvalues.empty())
+      {
+        stability_file.set("eig_1_stable", last_eigenvalue);
+        stability_file.set("eig_1_unstable", result.eigenvalues[0]);
+      }
+    stability_file.write_row();
+
+    // Written as the event happens. The points still hold the state of the bracket's stable end
+    // (the converged attempt is applied after the stability analysis): mu_boundary is taken there,
+    // at most 'Bisection tolerance' earlier.
+    write_event("bifurcation", bracket.t_unstable);
+  }
+
+
+  template <int dim>
+  void
+  StabilityMonitor<dim>::perturb_along_mode(const dealii::Vector<double> &mode,
+                                     dealii::Vector<double>       &solution) const
+  {
+    // The eigenvector's sign and size are arbitrary: scale it to a largest control-point
+    // displacement of 'Perturbation amplitude', signed so that the control point that moves
+    // most along 'Perturbation direction' moves forwards.
+    double      largest = 0., along = 0.;
+    const auto &d = settings.perturbation_direction;
+    for (unsigned int i = 0; i + dim <= mode.size(); i += dim)
+      {
+        double norm2 = 0., projection = 0.;
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            norm2 += mode(i + c) * mode(i + c);
+            projection += mode(i + c) * d[c];
+          }
+        largest = std::max(largest, std::sqrt(norm2));
+        if (std::abs(projection) > std::abs(along))
+          along = projection;
+      }
+    if (!(largest > 0.))
+      return;
+    const double scale = settings.perturbation_amplitude / largest * (along < 0. ? -1. : 1.);
+    for (unsigned int i = 0; i < mode.size(); ++i)
+      solution(i) += scale * mode(i);
+    log << "    perturbed along the critical mode: largest control-point displacement "
+          << settings.perturbation_amplitude << std::endl;
+  }
+
+
+  template class StabilityMonitor<2>;
+  template class StabilityMonitor<3>;
+} // namespace GelMPM

@@ -1,0 +1,450 @@
+#include <gelmpm/core/input_error.h>
+#include <gelmpm/solvers/time_loop.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace GelMPM
+{
+  RunScales
+  RunScales::of(const unsigned int dim,
+                const double       length,
+                const double       diffusivity,
+                const double       shear_modulus,
+                const double       kT_over_nu,
+                const double       volume)
+  {
+    RunScales scales;
+    scales.tau_d    = length * length / diffusivity;
+    scales.scale_u  = shear_modulus * std::pow(volume, (dim - 1.) / dim);
+    scales.scale_mu = kT_over_nu * volume;
+    return scales;
+  }
+
+
+  void
+  SteppedModel::begin_step(const double)
+  {}
+
+
+  bool
+  SteppedModel::estimates_errors() const
+  {
+    return false;
+  }
+
+
+  double
+  SteppedModel::largest_motion_in_cells(const dealii::Vector<double> &) const
+  {
+    return 0.;
+  }
+
+
+  double
+  SteppedModel::increment_deviation(const dealii::Vector<double> &, const double) const
+  {
+    return 0.;
+  }
+
+
+  double
+  SteppedModel::local_error(const dealii::Vector<double> &, const double, const bool) const
+  {
+    return 0.;
+  }
+
+
+  int
+  SteppedModel::stop_signal() const
+  {
+    return 0;
+  }
+
+
+  void
+  StepObserver::step_begins()
+  {}
+
+
+  StepControl::Verdict
+  StepObserver::judge_attempt(const dealii::Vector<double> &, const double, const NewtonReport &)
+  {
+    return StepControl::Verdict::accept;
+  }
+
+
+  void
+  StepObserver::attempt_rejected()
+  {}
+
+
+  bool
+  StepObserver::before_update(dealii::Vector<double> &, const double)
+  {
+    return false;
+  }
+
+
+  void
+  StepObserver::accepted(const AcceptedStep &, const dealii::Vector<double> &)
+  {}
+
+
+  bool
+  StepObserver::end_requested() const
+  {
+    return false;
+  }
+
+
+  void
+  StepObserver::between_steps()
+  {}
+
+
+  TimeLoop::TimeLoop(SteppedModel               &model,
+                     const TimeStepping         &time_stepping,
+                     const NewtonSettings       &newton,
+                     const LinearSolver         &linear_solver,
+                     const RunScales            &scales,
+                     dealii::ConditionalOStream &log,
+                     dealii::TimerOutput        &timer,
+                     const double                bisection_tolerance,
+                     const double                unstable_step,
+                     const bool                  signature_control,
+                     const unsigned int          output_interval_steps,
+                     const double                output_interval_time)
+    : model(model)
+    , time_stepping(time_stepping)
+    , newton_settings(newton)
+    , linear_solver(linear_solver)
+    , run_scales(scales)
+    , log(log)
+    , timer(timer)
+    , control_(time_stepping, bisection_tolerance, unstable_step, signature_control)
+    , output_interval_steps(output_interval_steps)
+    , output_interval_time(output_interval_time)
+    , next_output_time(output_interval_time)
+  {
+    for (const auto &[value, entry] :
+         {std::make_pair(time_stepping.largest_increment, "Time stepping/Largest increment"),
+          std::make_pair(time_stepping.displacement_tolerance,
+                         "Time stepping/Displacement tolerance"),
+          std::make_pair(time_stepping.tolerance, "Time stepping/Tolerance")})
+      if (value > 0. && !model.estimates_errors())
+        throw InputError(entry,
+                         "asks for an estimate of the step's motion or error, which this model "
+                         "does not make",
+                         "set it to 0 (its default)");
+    // The tolerance rule compares the solution with the predictor, the first iterate: a step so
+    // short that the predictor already meets Newton's tolerance would otherwise leave the
+    // predictor as the solution, and the estimate would measure nothing.
+    if (time_stepping.tolerance > 0.)
+      newton_settings.minimum_iterations = std::max(newton_settings.minimum_iterations, 1u);
+  }
+
+
+  void
+  TimeLoop::add_observer(StepObserver &observer)
+  {
+    observers.push_back(&observer);
+  }
+
+
+  TimeLoop::Outcome
+  TimeLoop::run()
+  {
+    while (!control_.finished())
+      {
+        if ((signal_ = model.stop_signal()) != 0)
+          return Outcome::interrupted;
+        if (control_.out_of_steps())
+          return Outcome::out_of_steps;
+        switch (advance())
+          {
+            case StepOutcome::interrupted:
+              return Outcome::interrupted_within_step;
+            case StepOutcome::failed:
+              return Outcome::failed;
+            case StepOutcome::accepted:
+              break;
+          }
+        for (const auto *observer : observers)
+          if (observer->end_requested())
+            return Outcome::ended_early;
+        for (auto *observer : observers)
+          observer->between_steps();
+      }
+    return Outcome::finished;
+  }
+
+
+  TimeLoop::StepOutcome
+  TimeLoop::advance()
+  {
+    model.begin_step(last_dt);
+    for (auto *observer : observers)
+      observer->step_begins();
+    dealii::Vector<double> solution;
+    for (unsigned int attempt = 1;; ++attempt)
+      {
+        // A step whose attempts keep failing can be stopped within one attempt.
+        if ((signal_ = model.stop_signal()) != 0)
+          return StepOutcome::interrupted;
+        const double t_begin = control_.time();
+        const double step_dt = control_.attempt();
+        model.prepare_attempt(t_begin, step_dt, last_dt, solution);
+        NewtonReport report = solve_newton(model.system(),
+                                           solution,
+                                           step_dt * run_scales.tau_d,
+                                           newton_settings,
+                                           linear_solver,
+                                           run_scales.scale_u,
+                                           run_scales.scale_mu,
+                                           timer);
+        n_newton_iterations += report.iterations;
+        n_factorizations += report.factorizations;
+        if (report.converged && time_stepping.largest_increment > 0.)
+          {
+            const double moved = model.largest_motion_in_cells(solution);
+            if (moved > time_stepping.largest_increment)
+              {
+                report.converged = false;
+                std::ostringstream why;
+                why << "a material point moves " << moved
+                    << " cells, more than 'Time stepping/Largest increment' = "
+                    << time_stepping.largest_increment;
+                report.failure = why.str();
+              }
+          }
+        if (report.converged && !error_acceptable(solution, step_dt, report.failure))
+          {
+            log << "    step " << control_.step() + 1 << " at t = " << t_begin
+                << " with dt = " << step_dt << " retaken (" << report.failure
+                << "); retrying with dt = " << control_.proposed_step() << std::endl;
+            for (auto *observer : observers)
+              observer->attempt_rejected();
+            continue;
+          }
+        if (!report.converged)
+          {
+            if (!attempt_failed(report, t_begin, step_dt))
+              return StepOutcome::failed;
+            continue;
+          }
+
+        bool retake = false;
+        for (auto *observer : observers)
+          {
+            const auto verdict = observer->judge_attempt(solution, step_dt, report);
+            retake = verdict == StepControl::Verdict::retake ||
+                     verdict == StepControl::Verdict::shorten;
+            if (retake)
+              break;
+          }
+        if (retake)
+          continue;
+
+        bool perturbed = false;
+        for (auto *observer : observers)
+          perturbed = observer->before_update(solution, step_dt) || perturbed;
+        model.update(solution, t_begin + step_dt);
+        control_.accept(report.iterations);
+        // A perturbation is no motion to continue: the next step starts without a predictor.
+        last_dt = perturbed ? 0. : step_dt;
+
+        AcceptedStep accepted;
+        accepted.number     = control_.step();
+        accepted.t_begin    = t_begin;
+        accepted.time       = control_.time();
+        accepted.dt         = step_dt;
+        accepted.attempts   = attempt;
+        accepted.report     = report;
+        accepted.output_due = output_due();
+        for (auto *observer : observers)
+          observer->accepted(accepted, solution);
+        return StepOutcome::accepted;
+      }
+  }
+
+
+  bool
+  TimeLoop::attempt_failed(const NewtonReport &report, const double t_begin, const double step_dt)
+  {
+    log << "    step " << control_.step() + 1 << " at t = " << t_begin << " with dt = " << step_dt
+        << " failed (" << report.failure << ")";
+    if (newton_settings.log_failures)
+      {
+        log << "\n      Newton: scaled |R_u|, |R_mu| at the start of each iteration, "
+               "damping taken:";
+        for (const auto &h : report.history)
+          log << "\n        " << h[0] << "  " << h[1] << "  " << h[2];
+        log << "\n     ";
+      }
+    if (control_.bracketing())
+      log << "; bracketing of the loss of stability abandoned";
+    for (auto *observer : observers)
+      observer->attempt_rejected();
+    if (!control_.cut_step())
+      {
+        log << "; the step would fall below 'Time stepping/Minimum step' = "
+            << time_stepping.minimum_step << std::endl;
+        std::ostringstream why;
+        why << "the step at t/tau_d = " << t_begin << " failed (" << report.failure
+            << ") and would fall below 'Time stepping/Minimum step' = "
+            << time_stepping.minimum_step;
+        failure_ = why.str();
+        return false;
+      }
+    log << "; retrying with dt = " << control_.proposed_step() << std::endl;
+    return true;
+  }
+
+
+  bool
+  TimeLoop::error_acceptable(const dealii::Vector<double> &solution,
+                             const double                  dt,
+                             std::string                  &failure)
+  {
+    // The first step has no predictor: its estimate would be the whole motion.
+    const bool displacement_rule = time_stepping.displacement_tolerance > 0.;
+    // A step far longer than the last (after a landing on a stop time) would amplify the last
+    // step's noise into its predictor: no estimate of the tolerance rule for it.
+    const bool tolerance_rule =
+      time_stepping.tolerance > 0. &&
+      (time_stepping.tolerance_until_onset ? !control_.onset_seen() :
+                                             (time_stepping.tolerance_until == 0. ||
+                                              control_.time() < time_stepping.tolerance_until)) &&
+      StepControl::estimate_applies(dt, last_dt);
+    if (!(displacement_rule || tolerance_rule) || !(last_dt > 0.))
+      return true;
+    const double difference =
+      displacement_rule ? model.increment_deviation(solution, dt / last_dt) : 0.;
+    const double local_error =
+      tolerance_rule ? model.local_error(solution, dt / last_dt, time_stepping.error_largest) : 0.;
+    const auto excess = control_.error_excess(difference, local_error, dt);
+    if (control_.judge_error(excess))
+      {
+        if (control_.error_uncontrolled() && n_uncontrolled_errors++ == 0)
+          log << "    the step's error estimate exceeds its tolerance " << excess.factor
+              << " times whatever the step: a jump in the last step (a perturbation) or the "
+                 "points' integration noise, not an error of this one; accepted (such steps "
+                 "are accepted without a word from here on and counted at the end)"
+              << std::endl;
+        return true;
+      }
+    std::ostringstream why;
+    why << "the error estimate exceeds ";
+    if (displacement_rule && difference > time_stepping.displacement_tolerance)
+      why << "'Time stepping/Displacement tolerance' (a point's motion differs from the last "
+             "step's by "
+          << difference << ")";
+    else
+      why << "'Time stepping/Tolerance' (local error " << local_error << " against "
+          << control_.tolerated_local_error(dt) << ")";
+    failure = why.str();
+    return false;
+  }
+
+
+  bool
+  TimeLoop::output_due()
+  {
+    const double time = control_.time();
+    const bool   interval_due =
+      (output_interval_steps > 0 && control_.step() % output_interval_steps == 0) ||
+      (output_interval_time > 0. && time >= next_output_time * (1. - relative_time_tolerance));
+    // The next multiple of the interval after this time, in one step: a loop that adds the
+    // interval would run for ever when it is tiny against the time.
+    if (output_interval_time > 0. && next_output_time <= time * (1. + relative_time_tolerance))
+      next_output_time =
+        (std::floor(time * (1. + relative_time_tolerance) / output_interval_time) + 1.) *
+        output_interval_time;
+    return interval_due || control_.at_stop_time() || control_.finished();
+  }
+
+
+  const StepControl &
+  TimeLoop::control() const
+  {
+    return control_;
+  }
+
+
+  StepControl &
+  TimeLoop::control()
+  {
+    return control_;
+  }
+
+
+  double
+  TimeLoop::time() const
+  {
+    return control_.time();
+  }
+
+
+  unsigned int
+  TimeLoop::step() const
+  {
+    return control_.step();
+  }
+
+
+  const RunScales &
+  TimeLoop::scales() const
+  {
+    return run_scales;
+  }
+
+
+  const NewtonSettings &
+  TimeLoop::newton() const
+  {
+    return newton_settings;
+  }
+
+
+  const std::string &
+  TimeLoop::failure() const
+  {
+    return failure_;
+  }
+
+
+  int
+  TimeLoop::signal() const
+  {
+    return signal_;
+  }
+
+
+  unsigned long
+  TimeLoop::newton_iterations() const
+  {
+    return n_newton_iterations;
+  }
+
+
+  unsigned long
+  TimeLoop::factorizations() const
+  {
+    return n_factorizations;
+  }
+
+
+  unsigned long
+  TimeLoop::uncontrolled_errors() const
+  {
+    return n_uncontrolled_errors;
+  }
+
+
+  void
+  TimeLoop::count_factorization()
+  {
+    ++n_factorizations;
+  }
+} // namespace GelMPM
