@@ -55,8 +55,10 @@ def run(gelmpm, chi, cells, directory):
 
 
 def run_peer(fem_bilayer, chi, cells, directory):
-    args = [fem_bilayer, "--cells", str(cells), "--chi-passive", str(chi), "--bath", str(MU_B),
-            "--quiet", "--output", directory]
+    args = [fem_bilayer, os.path.join(TOP, "prm", "bilayer_actuator.prm"),
+            "--set", f"Material/passive/Flory-Huggins chi={chi}",
+            "--set", f"FE peer/Cells={cells}", "--set", f"FE peer/Bath={MU_B}",
+            "--set", f"FE peer/Output directory={directory}", "--quiet"]
     start = time.time()
     subprocess.run(args, check=True, stdout=subprocess.DEVNULL)
     d = np.genfromtxt(os.path.join(directory, "statistics.csv"), delimiter=",", names=True)

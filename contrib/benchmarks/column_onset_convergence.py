@@ -5,7 +5,7 @@ the MPM and the body-fitted FE peer (gelmpm-fem-column), with Richardson estimat
 The onset (the time at which K_uu first has a negative eigenvalue; doc/method.md) depends on the
 history of mu before it, so it carries two errors: the grid's and the steps'. Every run here takes
 uniform steps dt from t = 0 (MPM: 'Initial step' = dt, a cap of dt, 'Growth factor' = 1, no
-stop times and no error control; FE: --initial-step = --step-cap = dt), to 0.3 tau_d, and
+stop times and no error control; FE: the same scene with 'Initial step' = the cap = dt), to 0.3 tau_d, and
 brackets the onset to --bisection (default 1e-4 tau_d); the onset is the bracket's midpoint.
 
   /usr/bin/python3 contrib/benchmarks/column_onset_convergence.py [--model mpm|fem|both]
@@ -32,6 +32,7 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 TOP = os.path.dirname(os.path.dirname(HERE))
+SCENE = os.path.join(TOP, "prm", "column_buckling.prm")
 # Differences below this (tau_d) are at the resolution of the brackets (1e-4 wide by default).
 RESOLUTION = 2e-4
 FIELDS = ["model", "h", "points", "dt", "unknowns", "t_stable", "t_unstable", "wall"]
@@ -61,9 +62,16 @@ def mpm_run(build, h, points, dt, bisection, directory):
 
 
 def fem_run(build, cells, dt, bisection):
-    return [os.path.join(build, "gelmpm-fem-column"), "--cells", str(cells), "--end-time", "0.3",
-            "--initial-step", str(dt), "--step-cap", str(dt), "--bisection-tolerance",
-            str(bisection), "--onset-criterion", "drained"]
+    # The scene's gel, Newton and stability sections; uniform steps of dt without error control.
+    return [os.path.join(build, "gelmpm-fem-column"), SCENE,
+            "--set", f"FE peer/Cells={cells}",
+            "--set", "Time stepping/End time=0.3",
+            "--set", f"Time stepping/Initial step={dt}",
+            "--set", f"Time stepping/Step caps=0.3: {dt}",
+            "--set", "Time stepping/Stop at times=",
+            "--set", "Time stepping/Tolerance=0",
+            "--set", f"Stability/Bisection tolerance={bisection}",
+            "--set", "Stability/Onset criterion=drained"]
 
 
 def run_one(a, model, h, points, dt):

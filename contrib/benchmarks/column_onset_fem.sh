@@ -34,8 +34,12 @@ echo "cells,unknowns,t_stable,t_unstable,wall_seconds" > "${csv}"
 for n in "${levels[@]}"; do
   log="${dir}/cells-${n}.log"
   start=$(date +%s.%N)
-  if ! "${tool}" --cells "${n}" --end-time 0.4 --step-cap 0.02 --bisection-tolerance 1e-3 \
-    > "${log}" 2>&1; then
+  # The scene's gel and Newton; steps of 0.02 tau_d, the tangent's signature brackets the onset.
+  if ! "${tool}" "${top}/prm/column_buckling.prm" --set "FE peer/Cells=${n}" \
+    --set "Time stepping/End time=0.4" --set "Time stepping/Initial step=0.02" \
+    --set "Time stepping/Step caps=0.4: 0.02" --set "Time stepping/Stop at times=" \
+    --set "Time stepping/Tolerance=0" --set "Stability/Onset criterion=tangent" \
+    --set "Stability/Bisection tolerance=1e-3" > "${log}" 2>&1; then
     echo "n = ${n}: the run failed, see ${log} (not in the table)"
     continue
   fi

@@ -37,10 +37,10 @@ STOPS = "0.001197,0.008589,0.1281,0.4531,1.953,4.453,16.06,1713"
 
 # (label, directory name, options of gelmpm-fem-swelling)
 FEM_RUNS = [
-    ("1 x 8", "1x8", ["--cells-x", "1", "--cells-y", "8"]),
-    ("1 x 16", "1x16", ["--cells-x", "1", "--cells-y", "16"]),
-    ("1 x 32", "1x32", ["--cells-x", "1", "--cells-y", "32"]),
-    ("1 x 16, graded (g = 2)", "1x16g2", ["--cells-x", "1", "--cells-y", "16", "--grading", "2"]),
+    ("1 x 8", "1x8", ["--set", "FE peer/Cells=1, 8"]),
+    ("1 x 16", "1x16", ["--set", "FE peer/Cells=1, 16"]),
+    ("1 x 32", "1x32", ["--set", "FE peer/Cells=1, 32"]),
+    ("1 x 16, graded (g = 2)", "1x16g2", ["--set", "FE peer/Cells=1, 16", "--set", "FE peer/Grading=2"]),
 ]
 # (label, --set overrides); the body is 0.2 x 1 h_0, the layer swells to 2.73 h_0.
 MPM_RUNS = [
@@ -106,8 +106,10 @@ def main():
     rows = []
     for label, name, options in FEM_RUNS:
         directory = os.path.join(out, "fem_" + name)
-        command = [os.path.join(build, "gelmpm-fem-swelling")] + options + [
-            "--stop-times", STOPS, "--quiet", "--output", directory]
+        command = [os.path.join(build, "gelmpm-fem-swelling"),
+                   os.path.join(ROOT, "prm", "constrained_swelling.prm")] + options + [
+            "--set", "Time stepping/Stop at times=" + STOPS, "--quiet",
+            "--set", "FE peer/Output directory=" + directory]
         times = [timed(command, directory + f".log{k}") for k in range(args.repeats)]
         walls, cpus = [w for w, _ in times], [c for _, c in times]
         row = {"method": "FE Q2-Q1", "resolution": label, "load": load(),

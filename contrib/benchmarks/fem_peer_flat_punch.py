@@ -140,8 +140,9 @@ def accuracy(args, build, out):
     fem = [(n, "fem_%d" % n) for n in sorted(set(FEM_CELLS + [reference_cells]))]
     for n, name in fem:
         directory = os.path.join(out, name)
-        command = [os.path.join(build, "gelmpm-fem-flat-punch"), "--cells", str(n),
-                   "--depth", repr(args.depth), "--quiet", "--output", directory]
+        command = [os.path.join(build, "gelmpm-fem-flat-punch"), SCENE,
+                   "--set", "FE peer/Cells=%d" % n, "--set", "FE peer/Depth=%r" % args.depth,
+                   "--set", "FE peer/Output directory=" + directory, "--quiet"]
         repeats = args.repeats if n != reference_cells else 1
         times = [timed(command, directory + ".log%d" % k) for k in range(repeats)]
         statistics = read_csv(os.path.join(directory, "statistics.csv"))
@@ -246,10 +247,14 @@ def depth_sweep(args, build, out):
                                  depth)
             directory = os.path.join(out, "depth", name.replace("(", "").replace(")", ""))
             if kind == "fem":
-                command = [os.path.join(build, "gelmpm-fem-flat-punch"), "--cells", str(setting),
-                           "--depth", repr(depth), "--ramp-time", repr(ramp),
-                           "--stop-times", "%r, 0.1" % ramp, "--end-time", repr(args.depth_end_time),
-                           "--quiet", "--output", directory]
+                command = [os.path.join(build, "gelmpm-fem-flat-punch"), SCENE,
+                           "--set", "FE peer/Cells=%d" % setting,
+                           "--set", "FE peer/Depth=%r" % depth,
+                           "--set", "FE peer/Ramp time=%r" % ramp,
+                           "--set", "Time stepping/Step caps=%r: 3.125e-7" % ramp,
+                           "--set", "Time stepping/Stop at times=%r, 0.1" % ramp,
+                           "--set", "Time stepping/End time=%r" % args.depth_end_time,
+                           "--set", "FE peer/Output directory=" + directory, "--quiet"]
             else:
                 command = [os.path.join(build, "gelmpm"), "--set", "Output/Directory=" + directory,
                            "--set", "Output/Write particles=false",

@@ -86,8 +86,9 @@ def main():
     for n in sorted(set(equal + cells)):
         d = os.path.join(args.output, f"fem-{n}")
         name = f"FE {n} x {n}, h = {1 / n:.4g} H"
-        walls[name] = run([os.path.join(args.build, "gelmpm-fem-flat-punch"), "--cells", str(n),
-                           "--depth", str(args.depth), "--quiet", "--output", d], d + ".log")
+        walls[name] = run([os.path.join(args.build, "gelmpm-fem-flat-punch"), SCENE,
+                           "--set", f"FE peer/Cells={n}", "--set", f"FE peer/Depth={args.depth}",
+                           "--set", f"FE peer/Output directory={d}", "--quiet"], d + ".log")
         s = read(os.path.join(d, "statistics.csv"))
         histories[name] = (s["t_over_tau_d"][1:], s["punch_force_y"][1:])
         fe[n] = name

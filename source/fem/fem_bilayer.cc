@@ -28,9 +28,18 @@ namespace GelMPM
 
 
   FemBilayer::FemBilayer(const Parameters &parameters)
+    : FemBilayer(parameters, layer_materials(parameters.chi_passive))
+  {}
+
+
+  FemBilayer::FemBilayer(const Parameters                     &parameters,
+                         const std::vector<FloryRehnerGel<2>> &materials)
     : parameters(parameters)
-    , materials_(layer_materials(parameters.chi_passive))
+    , materials_(materials)
   {
+    if (materials_.size() != 2)
+      throw std::invalid_argument("a bilayer needs the gels of two layers, not " +
+                                  std::to_string(materials_.size()));
     if (!(parameters.length > 0.) || !(parameters.thickness > 0.))
       throw std::invalid_argument("the strip's length and thickness must be positive");
     if (parameters.cells < 2 || parameters.cells % 2 != 0)

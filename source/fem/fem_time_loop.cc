@@ -5,6 +5,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <sstream>
@@ -38,16 +39,27 @@ namespace GelMPM
     /**
      * The body-fitted peer as a SteppedModel: its boundary data come from the scene's
      * callback, its first iterate is the last state with the prescribed values, and its update
-     * keeps the converged state. It makes no error estimates (TimeLoop refuses the rules that
-     * need them).
+     * keeps the converged state.
+     *
+     * Its error estimates are those of the material points (MixedSystem::local_error_estimate:
+     * Milne's device on the linear predictor) taken at the unknowns instead of the points: the
+     * difference of a step's increments (du, and the change of mu) from the last step's scaled
+     * by dt / dt_last, per displacement unknown (a component at a node: the largest component
+     * bounds a node's motion within a factor sqrt(dim)) and per mu unknown, as a root mean
+     * square over the unknowns (not weighted by volume; the peer's meshes are uniform or nearly
+     * so) or as their largest value. 'Largest increment' is in cells of the material point
+     * grid, which the peer has not: refused.
      */
     template <int dim>
     class FemModel : public SteppedModel
     {
     public:
-      FemModel(FemMixedSystem<dim> &system, const std::function<void(double, double)> &prescribe)
+      FemModel(FemMixedSystem<dim>                       &system,
+               const std::function<void(double, double)> &prescribe,
+               const double                               characteristic_length)
         : fem_system(system)
         , prescribe(prescribe)
+        , characteristic_length(characteristic_length)
       {}
 
       NewtonSystem &
@@ -67,15 +79,77 @@ namespace GelMPM
         fem_system.initial_guess(solution);
       }
 
+      bool
+      estimates_errors() const override
+      {
+        return true;
+      }
+
+      bool
+      measures_motion_in_cells() const override
+      {
+        return false;
+      }
+
+      double
+      increment_deviation(const dealii::Vector<double> &solution, const double ratio) const override
+      {
+        double largest = 0.;
+        for (unsigned int i = 0; i < fem_system.n_u_dofs() && i < last_increment.size(); ++i)
+          largest = std::max(largest, std::abs(solution(i) - ratio * last_increment(i)));
+        return largest;
+      }
+
+      double
+      local_error(const dealii::Vector<double> &solution,
+                  const double                  ratio,
+                  const bool                    largest) const override
+      {
+        if (last_increment.size() != solution.size())
+          return 0.;
+        const unsigned int n_u    = fem_system.n_u_dofs();
+        const double       weight = ratio / (2. * ratio + 1.);
+        const auto        &state  = fem_system.state();
+        double             u_sum = 0., mu_sum = 0., u_max = 0., mu_max = 0.;
+        for (unsigned int i = 0; i < solution.size(); ++i)
+          {
+            const double change     = i < n_u ? solution(i) : solution(i) - state(i);
+            const double difference = change - ratio * last_increment(i);
+            const double square     = difference * difference;
+            if (i < n_u)
+              {
+                u_sum += square;
+                u_max = std::max(u_max, square);
+              }
+            else
+              {
+                mu_sum += square;
+                mu_max = std::max(mu_max, square);
+              }
+          }
+        const unsigned int n_mu = solution.size() - n_u;
+        const double       u_error =
+          weight * std::sqrt(largest ? u_max : dim * u_sum / std::max(n_u, 1u));
+        const double mu_error = weight * std::sqrt(largest ? mu_max : mu_sum / std::max(n_mu, 1u));
+        return std::max(u_error / characteristic_length, mu_error);
+      }
+
       void
       update(const dealii::Vector<double> &solution, const double) override
       {
+        // The step's increments, the next step's predictor: du as solved, mu as changed.
+        const auto &state = fem_system.state();
+        last_increment    = solution;
+        for (unsigned int i = fem_system.n_u_dofs(); i < solution.size(); ++i)
+          last_increment(i) = solution(i) - state(i);
         fem_system.update(solution);
       }
 
     private:
       FemMixedSystem<dim>                       &fem_system;
       const std::function<void(double, double)> &prescribe;
+      double                                     characteristic_length;
+      dealii::Vector<double>                     last_increment;
     };
 
 
@@ -175,7 +249,7 @@ namespace GelMPM
     dealii::ConditionalOStream silent(std::cout, false);
 
     FemRunResult     result;
-    FemModel<dim>    model(system, prescribe);
+    FemModel<dim>    model(system, prescribe, time_stepping.characteristic_length);
     TimeLoop         loop(model,
                   time_stepping,
                   newton,

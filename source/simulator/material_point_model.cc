@@ -65,9 +65,9 @@ namespace GelMPM
       needed = !mu_known[i] &&
                scene.spaces->mu().dof_of_control_point(i) != dealii::numbers::invalid_unsigned_int;
     mu_projection           = needed ? scene.system->mu_from_points() : std::vector<double>();
-    displacement_projection = (newton.extrapolate_displacement && last_dt > 0.) ?
-                                scene.system->displacement_from_points(1.) :
-                                std::vector<double>();
+    displacement_projection = (newton.extrapolate_displacement && last_dt > 0.)
+                                ? scene.system->displacement_from_points(1.)
+                                : std::vector<double>();
   }
 
 
@@ -105,9 +105,9 @@ namespace GelMPM
       {
         const unsigned int dof = mu.dof_of_control_point(i);
         if (dof != dealii::numbers::invalid_unsigned_int)
-          solution(n_u + dof) = (all_from_points || (!mu_known[i] && !from_points.empty())) ?
-                                  from_points[dof] :
-                                  mu_coefficients[i];
+          solution(n_u + dof) = (all_from_points || (!mu_known[i] && !from_points.empty()))
+                                  ? from_points[dof]
+                                  : mu_coefficients[i];
       }
   }
 

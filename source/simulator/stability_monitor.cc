@@ -89,9 +89,9 @@ namespace GelMPM
   {
     if (!perturb)
       return false;
-    perturb_along_mode(last_result.drained_mode.size() == scene.spaces->n_u_dofs() ?
-                         last_result.drained_mode :
-                         last_result.mode,
+    perturb_along_mode(last_result.drained_mode.size() == scene.spaces->n_u_dofs()
+                         ? last_result.drained_mode
+                         : last_result.mode,
                        solution);
     perturb = false;
     return true;
@@ -150,26 +150,27 @@ namespace GelMPM
         case StepControl::Verdict::retake:
           if (!announced_bracketing)
             log << "    the state loses stability ("
-                  << (use_drained ? "K_uu indefinite" : "signature not (n_u, n_mu, 0)")
-                  << ") between t = " << loop.control().time() << " and " << t_end
-                  << "; bisecting to 'Stability/Bisection tolerance' = "
-                  << settings.bisection_tolerance << std::endl;
+                << (use_drained ? "K_uu indefinite" : "signature not (n_u, n_mu, 0)")
+                << ") between t = " << loop.control().time() << " and " << t_end
+                << "; bisecting to 'Stability/Bisection tolerance' = "
+                << settings.bisection_tolerance << std::endl;
           announced_bracketing = true;
           return verdict;
         case StepControl::Verdict::shorten:
-          log << "    the signature at t = " << t_end << " with dt = " << loop.control().attempt_size()
-                << " is (" << result.inertia.n_positive << ", " << result.inertia.n_negative << ", "
-                << result.inertia.n_zero << "): a mode grows faster than 1/dt; retrying "
-                << "with dt = " << loop.control().proposed_step() << std::endl;
+          log << "    the signature at t = " << t_end
+              << " with dt = " << loop.control().attempt_size() << " is ("
+              << result.inertia.n_positive << ", " << result.inertia.n_negative << ", "
+              << result.inertia.n_zero << "): a mode grows faster than 1/dt; retrying "
+              << "with dt = " << loop.control().proposed_step() << std::endl;
           return verdict;
         case StepControl::Verdict::step_dependent:
           log << "    with shorter steps the state at t = " << t_end
-                << " is stable: the loss of stability depends on the step size; bracketing ended"
-                << std::endl;
+              << " is stable: the loss of stability depends on the step size; bracketing ended"
+              << std::endl;
           break;
         case StepControl::Verdict::regained:
           log << "    the signature is (n_u, n_mu, 0) again at t/tau_d = " << t_end << ": stable"
-                << std::endl;
+              << std::endl;
           break;
         case StepControl::Verdict::onset:
           report_onset(result);
@@ -193,12 +194,12 @@ namespace GelMPM
   {
     const auto &bracket = loop.control().bracket();
     log << "    loss of stability between t/tau_d = " << bracket.t_stable << " (stable) and "
-          << bracket.t_unstable << ": signature (" << result.inertia.n_positive << ", "
-          << result.inertia.n_negative << ", " << result.inertia.n_zero << "), expected ("
-          << scene.spaces->n_u_dofs() << ", " << scene.spaces->n_mu_dofs() << ", 0)";
+        << bracket.t_unstable << ": signature (" << result.inertia.n_positive << ", "
+        << result.inertia.n_negative << ", " << result.inertia.n_zero << "), expected ("
+        << scene.spaces->n_u_dofs() << ", " << scene.spaces->n_mu_dofs() << ", 0)";
     if (settings.drained_onset)
       log << "; K_uu has " << result.drained_inertia.n_negative
-            << " negative eigenvalue(s) (drained criterion)";
+          << " negative eigenvalue(s) (drained criterion)";
     log << std::endl;
     stability_file.set("t_stable", bracket.t_stable);
     stability_file.set("t_unstable", bracket.t_unstable);
@@ -224,7 +225,7 @@ namespace GelMPM
   template <int dim>
   void
   StabilityMonitor<dim>::perturb_along_mode(const dealii::Vector<double> &mode,
-                                     dealii::Vector<double>       &solution) const
+                                            dealii::Vector<double>       &solution) const
   {
     // The eigenvector's sign and size are arbitrary: scale it to a largest control-point
     // displacement of 'Perturbation amplitude', signed so that the control point that moves
@@ -249,7 +250,7 @@ namespace GelMPM
     for (unsigned int i = 0; i < mode.size(); ++i)
       solution(i) += scale * mode(i);
     log << "    perturbed along the critical mode: largest control-point displacement "
-          << settings.perturbation_amplitude << std::endl;
+        << settings.perturbation_amplitude << std::endl;
   }
 
 

@@ -34,6 +34,13 @@ namespace GelMPM
   }
 
 
+  bool
+  SteppedModel::measures_motion_in_cells() const
+  {
+    return estimates_errors();
+  }
+
+
   double
   SteppedModel::largest_motion_in_cells(const dealii::Vector<double> &) const
   {
@@ -127,9 +134,12 @@ namespace GelMPM
     , output_interval_time(output_interval_time)
     , next_output_time(output_interval_time)
   {
+    require(!(time_stepping.largest_increment > 0.) || model.measures_motion_in_cells(),
+            "Time stepping/Largest increment",
+            "bounds a step's motion in cells of the background grid, which this model has not",
+            "set it to 0 (its default)");
     for (const auto &[value, entry] :
-         {std::make_pair(time_stepping.largest_increment, "Time stepping/Largest increment"),
-          std::make_pair(time_stepping.displacement_tolerance,
+         {std::make_pair(time_stepping.displacement_tolerance,
                          "Time stepping/Displacement tolerance"),
           std::make_pair(time_stepping.tolerance, "Time stepping/Tolerance")})
       if (value > 0. && !model.estimates_errors())
@@ -238,8 +248,8 @@ namespace GelMPM
         for (auto *observer : observers)
           {
             const auto verdict = observer->judge_attempt(solution, step_dt, report);
-            retake = verdict == StepControl::Verdict::retake ||
-                     verdict == StepControl::Verdict::shorten;
+            retake =
+              verdict == StepControl::Verdict::retake || verdict == StepControl::Verdict::shorten;
             if (retake)
               break;
           }
@@ -313,8 +323,8 @@ namespace GelMPM
     // step's noise into its predictor: no estimate of the tolerance rule for it.
     const bool tolerance_rule =
       time_stepping.tolerance > 0. &&
-      (time_stepping.tolerance_until_onset ? !control_.onset_seen() :
-                                             (time_stepping.tolerance_until == 0. ||
+      (time_stepping.tolerance_until_onset ? !control_.onset_seen()
+                                           : (time_stepping.tolerance_until == 0. ||
                                               control_.time() < time_stepping.tolerance_until)) &&
       StepControl::estimate_applies(dt, last_dt);
     if (!(displacement_rule || tolerance_rule) || !(last_dt > 0.))

@@ -3,14 +3,21 @@
 // conforming mesh of the initial configuration, same equations, materials, Newton test and time
 // stepping; doc/fem_peer.md). Writes statistics.csv (one row per converged step, with the
 // curvature of the lower surface) and the lower surface at the end (surface_bottom.csv).
+//
+//   gelmpm-fem-bilayer [--set "Section/Entry=value"]... [--quiet] prm/bilayer_actuator.prm
+//
+// The gels (the scene's and its one region), the time stepping and Newton are the scene's
+// (PeerInput); the mesh and the bath are the entries of 'FE peer'.
+#include <gelmpm/core/input_error.h>
 #include <gelmpm/core/parameters.h>
 #include <gelmpm/fem/fem_bilayer.h>
 #include <gelmpm/io/statistics_file.h>
+#include <gelmpm/simulator/peer_input.h>
 
 #include <deal.II/base/mpi.h>
 
-#include <boost/program_options.hpp>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -18,70 +25,72 @@
 int
 main(int argc, char **argv)
 {
-  namespace po = boost::program_options;
-  GelMPM::FemBilayer::Parameters parameters;
-  double                         end_time, tolerance;
-  unsigned int                   max_iterations;
-  std::string                    directory;
-  bool                           quiet = false;
-  po::options_description        options(
-    "gelmpm-fem-bilayer: the bilayer actuator of prm/bilayer_actuator.prm (a bonded two-layer "
-           "strip in a bath that bends) with the body-fitted Taylor-Hood finite-element peer of the "
-           "MPM.\nHalf strip 0 < x < 2, 0 < y < 0.2 of the initial configuration; the upper layer is "
-           "the Table 1 gel, the lower one (y < 0.1) has chi = --chi-passive; both start at the "
-           "Table 1 mu_0, each at its own lambda_0 (eq. (22)). Times in tau_d = 0.2^2/D.\nOptions");
-  // clang-format off
-  options.add_options()
-    ("help", "this text")
-    ("cells", po::value(&parameters.cells)->default_value(8),
-     "square cells through the thickness (even; 10 times as many along the half strip)")
-    ("degree", po::value(&parameters.u_degree)->default_value(2),
-     "displacement degree k (mu: k - 1, Taylor-Hood)")
-    ("chi-passive", po::value(&parameters.chi_passive)->default_value(0.3),
-     "Flory-Huggins chi of the lower (passive) layer")
-    ("bath", po::value(&parameters.mu_bath)->default_value(-0.04),
-     "mu/k_BT of the bath after the ramp")
-    ("start", po::value(&parameters.mu_start)->default_value(-0.1459745),
-     "mu/k_BT of the bath at t = 0 (the scene's, about the Table 1 mu_0)")
-    ("ramp-time", po::value(&parameters.ramp_time)->default_value(1.),
-     "the bath goes linearly from --start to --bath over this time (tau_d)")
-    ("end-time", po::value(&end_time)->default_value(10.), "end of the run (tau_d)")
-    ("tolerance", po::value(&tolerance)->default_value(1e-10),
-     "Newton tolerance (as 'Newton/Tolerance' of gelmpm)")
-    ("max-iterations", po::value(&max_iterations)->default_value(15),
-     "Newton iterations before a step is cut")
-    ("quiet", po::bool_switch(&quiet), "no line per step")
-    ("output", po::value(&directory)->default_value("output/fem_bilayer"), "output directory");
-  // clang-format on
-
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   try
     {
-      po::variables_map vm;
-      po::store(po::parse_command_line(argc, argv, options), vm);
-      if (vm.count("help"))
+      GelMPM::PeerInput input(argc, argv, "gelmpm-fem-bilayer", [](dealii::ParameterHandler &prm) {
+        prm.declare_entry("Cells",
+                          "8",
+                          dealii::Patterns::Integer(2),
+                          "Square cells through the thickness (even; 10 times as many along the "
+                          "half strip 0 < x < 2, 0 < y < 0.2 of the initial configuration).");
+        GelMPM::PeerInput::declare_degree(prm);
+        prm.declare_entry("Bath",
+                          "-0.04",
+                          dealii::Patterns::Double(),
+                          "mu/k_BT of the bath after the ramp (the scene's boundary function).");
+        prm.declare_entry("Start",
+                          "-0.1459745",
+                          dealii::Patterns::Double(),
+                          "mu/k_BT of the bath at t = 0 (the scene's boundary function).");
+        prm.declare_entry("Ramp time",
+                          "1",
+                          dealii::Patterns::Double(0.),
+                          "The bath goes linearly from 'Start' to 'Bath' over this time (tau_d).");
+        GelMPM::PeerInput::declare_output_directory(prm,
+                                                    "output/fem_bilayer",
+                                                    "statistics.csv and surface_bottom.csv");
+      });
+      if (input.help)
         {
-          std::cout << options << std::endl;
+          std::cout << input.usage(
+            "The bilayer actuator (a bonded two-layer strip in a bath that bends) with the "
+            "body-fitted Taylor-Hood finite-element peer of the MPM, for the scene "
+            "prm/bilayer_actuator.prm: the upper layer is the scene's gel, the lower one its "
+            "region (Material/Regions, one region).");
           return 0;
         }
-      po::notify(vm);
-
-      dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-
-      // The scene's stepping: steps of at most 0.05 tau_d during the ramp, 0.5 after it.
-      const std::string ramp     = GelMPM::entry_value(parameters.ramp_time);
-      const auto        settings = GelMPM::fem_run_settings(
-        {{"Characteristic length", GelMPM::entry_value(parameters.thickness)},
-                {"Initial step", "1e-3"},
-                {"End time", GelMPM::entry_value(end_time)},
-                {"Step caps",
-                 ramp + ": 0.05, " + GelMPM::entry_value(std::max(end_time, parameters.ramp_time)) +
-                   ": 0.5"}},
-        {{"Tolerance", GelMPM::entry_value(tolerance)},
-                {"Maximum iterations", std::to_string(max_iterations)}});
-      const GelMPM::LinearSolver linear_solver;
+      GelMPM::FemBilayer::Parameters parameters;
+      std::string                    directory;
+      {
+        auto &prm            = input.peer_section();
+        parameters.cells     = prm.get_integer("Cells");
+        parameters.u_degree  = prm.get_integer("Degree");
+        parameters.mu_bath   = prm.get_double("Bath");
+        parameters.mu_start  = prm.get_double("Start");
+        parameters.ramp_time = prm.get_double("Ramp time");
+        directory            = prm.get("Output directory");
+        input.leave_peer_section();
+      }
+      GelMPM::require(input.regions.size() == 2,
+                      "Material/Regions",
+                      "names " + std::to_string(input.regions.size() - 1) +
+                        " region(s), but the bilayer has two layers: the scene's gel above and "
+                        "one region below",
+                      "give the scene of the bilayer (prm/bilayer_actuator.prm)");
+      GelMPM::require(std::abs(input.time_stepping.characteristic_length - parameters.thickness) <=
+                        1e-12,
+                      "Time stepping/Characteristic length",
+                      "is " + GelMPM::entry_value(input.time_stepping.characteristic_length) +
+                        ", but the peer's strip is " + GelMPM::entry_value(parameters.thickness) +
+                        " thick, the length of tau_d in the scene",
+                      "give the scene of the bilayer (prm/bilayer_actuator.prm)");
+      const auto &linear_solver = input.linear_solver;
+      const auto &quiet         = input.quiet;
+      const auto  end_time      = input.time_stepping.end_time;
 
       const auto         start = std::chrono::steady_clock::now();
-      GelMPM::FemBilayer bilayer(parameters);
+      GelMPM::FemBilayer bilayer(parameters, {input.regions[0], input.regions[1]});
       const auto        &system    = bilayer.system();
       const auto        &materials = bilayer.materials();
       std::cout << "gelmpm-fem-bilayer: " << 10 * parameters.cells << " x " << parameters.cells
@@ -115,8 +124,8 @@ main(int argc, char **argv)
       unsigned int n_steps   = 0;
       double       last_time = 0., curvature = 0.;
       const auto   result =
-        bilayer.run(settings.time_stepping,
-                    settings.newton,
+        bilayer.run(input.time_stepping,
+                    input.newton,
                     linear_solver,
                     [&](const GelMPM::FemBilayer::Step &s) {
                       n_steps   = s.number;
@@ -178,10 +187,15 @@ main(int argc, char **argv)
                 << "  results: " << directory << "/statistics.csv, " << directory
                 << "/surface_bottom.csv" << std::endl;
     }
-  catch (const std::exception &e)
+  catch (const GelMPM::InputError &e)
     {
       std::cerr << "gelmpm-fem-bilayer: " << e.what() << std::endl;
       return 2;
+    }
+  catch (const std::exception &e)
+    {
+      std::cerr << "gelmpm-fem-bilayer: " << e.what() << std::endl;
+      return 1;
     }
   return 0;
 }

@@ -4,12 +4,18 @@
 // Newton test and step control; doc/fem_peer.md). Prints per converged step the time, the step,
 // the Newton iterations and the signature of the tangent against the signature of a stable state,
 // and at the end the bracket(s) of the loss of stability found by retaking steps (StepControl).
+//
+//   gelmpm-fem-column [--set "Section/Entry=value"]... [--quiet] prm/column_buckling.prm
+//
+// The gel, the time stepping, Newton and the stability rules are the scene's (PeerInput); the
+// mesh is 'FE peer/Cells' and 'Degree'.
+#include <gelmpm/core/input_error.h>
 #include <gelmpm/core/parameters.h>
 #include <gelmpm/fem/fem_column.h>
+#include <gelmpm/simulator/peer_input.h>
 
 #include <deal.II/base/mpi.h>
 
-#include <boost/program_options.hpp>
 #include <chrono>
 #include <iomanip>
 #include <iostream>
@@ -32,85 +38,54 @@ namespace
 int
 main(int argc, char **argv)
 {
-  namespace po = boost::program_options;
-  GelMPM::FemColumn::Parameters parameters;
-  double       end_time, step_cap, initial_step, bisection_tolerance, unstable_step, tolerance;
-  unsigned int max_iterations;
-  bool         quiet = false;
-  std::string  criterion;
-  po::options_description options(
-    "gelmpm-fem-column: the onset of swell-induced buckling of a gel column (paper §4.3) with "
-    "the body-fitted Taylor-Hood finite-element peer of the MPM.\nThe column is [0, 1] x [0, 8] "
-    "(lengths in H) of the pre-swollen initial state (Table 1 material, lambda_0 = 1.2801), "
-    "times in tau_d = (H/2)^2/D.\nOptions");
-  // clang-format off
-  options.add_options()
-    ("help", "this text")
-    ("cells", po::value(&parameters.cells)->default_value(4),
-     "cells across the width (n x 8n square cells)")
-    ("degree", po::value(&parameters.u_degree)->default_value(2),
-     "displacement degree k (mu: k - 1, Taylor-Hood)")
-    ("ramp-time", po::value(&parameters.ramp_time)->default_value(0.75),
-     "t_inc: mu on the sides rises linearly from mu_0 to 0 over this time (tau_d)")
-    ("end-time", po::value(&end_time)->default_value(0.4), "end of the run (tau_d)")
-    ("initial-step", po::value(&initial_step)->default_value(0.02), "first step (tau_d)")
-    ("step-cap", po::value(&step_cap)->default_value(0.02),
-     "largest step over the whole run (tau_d; 0: none)")
-    ("bisection-tolerance", po::value(&bisection_tolerance)->default_value(1e-3),
-     "width to which a loss of stability is bracketed (tau_d; 0: not bracketed)")
-    ("unstable-step", po::value(&unstable_step)->default_value(0.),
-     "largest step while the state is unstable (tau_d; 0: no cap)")
-    ("tolerance", po::value(&tolerance)->default_value(1e-10),
-     "Newton tolerance (as 'Newton/Tolerance' of gelmpm)")
-    ("max-iterations", po::value(&max_iterations)->default_value(15),
-     "Newton iterations before a step is cut")
-    ("onset-criterion", po::value(&criterion)->default_value("tangent"),
-     "what brackets the onset: 'tangent' (the signature of the tangent leaves (n_u, n_mu, 0)) "
-     "or 'drained' (K_uu becomes indefinite, independent of the step; doc/method.md)")
-    ("quiet", po::bool_switch(&quiet), "no line per step");
-  // clang-format on
-
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   try
     {
-      po::variables_map vm;
-      po::store(po::parse_command_line(argc, argv, options), vm);
-      if (vm.count("help"))
+      GelMPM::PeerInput input(argc, argv, "gelmpm-fem-column", [](dealii::ParameterHandler &prm) {
+        prm.declare_entry("Cells",
+                          "4",
+                          dealii::Patterns::Integer(1),
+                          "Cells across the width of the column [0, 1] x [0, 8] (lengths in H): "
+                          "n x 8n square cells.");
+        GelMPM::PeerInput::declare_degree(prm);
+        prm.declare_entry("Ramp time",
+                          "0.75",
+                          dealii::Patterns::Double(0.),
+                          "t_inc (tau_d): mu on the sides rises linearly from mu_0 to 0 over this "
+                          "time, as the scene's boundary function does.");
+      });
+      if (input.help)
         {
-          std::cout << options << std::endl;
+          std::cout << input.usage(
+            "The onset of swell-induced buckling of a gel column (paper §4.3) with the body-fitted "
+            "Taylor-Hood finite-element peer of the MPM, for the scene prm/column_buckling.prm.");
           return 0;
         }
-      po::notify(vm);
-      if (criterion != "tangent" && criterion != "drained")
-        throw std::invalid_argument("--onset-criterion must be 'tangent' or 'drained', not '" +
-                                    criterion + "'");
-      parameters.drained_onset = criterion == "drained";
-      if (!(end_time > 0.))
-        throw std::invalid_argument("--end-time must be positive");
-      if (step_cap < 0. || bisection_tolerance < 0. || unstable_step < 0.)
-        throw std::invalid_argument(
-          "--step-cap, --bisection-tolerance and --unstable-step must not be negative");
+      GelMPM::FemColumn::Parameters parameters;
+      {
+        auto &prm            = input.peer_section();
+        parameters.cells     = prm.get_integer("Cells");
+        parameters.u_degree  = prm.get_integer("Degree");
+        parameters.ramp_time = prm.get_double("Ramp time");
+        input.leave_peer_section();
+      }
+      parameters.drained_onset = input.stability.drained_onset;
+      const auto &quiet        = input.quiet;
+      const auto  end_time     = input.time_stepping.end_time;
 
-      dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-
-      const auto                      start = std::chrono::steady_clock::now();
-      const GelMPM::FloryRehnerGel<2> material; // Table 1
-      GelMPM::FemColumn               column(material, parameters);
-      const auto                     &system = column.system();
-
-      // Land on the end of the ramp, where the boundary data has a kink.
-      const std::string stops =
-        parameters.ramp_time < end_time ? GelMPM::entry_value(parameters.ramp_time) : "";
-      const std::string caps =
-        step_cap > 0. ? GelMPM::entry_value(end_time) + ": " + GelMPM::entry_value(step_cap) : "";
-      const auto settings =
-        GelMPM::fem_run_settings({{"Characteristic length",
-                                   GelMPM::entry_value(column.characteristic_length())},
-                                  {"Initial step", GelMPM::entry_value(initial_step)},
-                                  {"End time", GelMPM::entry_value(end_time)},
-                                  {"Step caps", caps},
-                                  {"Stop at times", stops}},
-                                 {{"Tolerance", GelMPM::entry_value(tolerance)},
-                                  {"Maximum iterations", std::to_string(max_iterations)}});
+      const auto                       start    = std::chrono::steady_clock::now();
+      const GelMPM::FloryRehnerGel<2> &material = input.material;
+      GelMPM::FemColumn                column(material, parameters);
+      const auto                      &system = column.system();
+      GelMPM::require(std::abs(input.time_stepping.characteristic_length -
+                               column.characteristic_length()) <=
+                        1e-12 * column.characteristic_length(),
+                      "Time stepping/Characteristic length",
+                      "is " + GelMPM::entry_value(input.time_stepping.characteristic_length) +
+                        ", but the peer's column has half-width " +
+                        GelMPM::entry_value(column.characteristic_length()) +
+                        ", the length of tau_d in the scene",
+                      "give the scene of the column (prm/column_buckling.prm)");
 
       std::cout << "gelmpm-fem-column: " << parameters.cells << " x " << 8 * parameters.cells
                 << " cells, Q" << parameters.u_degree << "-Q" << parameters.u_degree - 1 << ", "
@@ -135,11 +110,11 @@ main(int argc, char **argv)
                     << (s.signature.drained_stable() ? "" : "  INDEFINITE");
         std::cout << std::endl;
       };
-      const auto   result = column.run(settings.time_stepping,
-                                     settings.newton,
-                                     GelMPM::LinearSolver(),
-                                     bisection_tolerance,
-                                     unstable_step,
+      const auto   result = column.run(input.time_stepping,
+                                     input.newton,
+                                     input.linear_solver,
+                                     input.stability.bisection_tolerance,
+                                     input.stability.unstable_step,
                                      print_step);
       const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -161,10 +136,15 @@ main(int argc, char **argv)
                 << " Newton iterations; wall time " << std::setprecision(4) << wall << " s"
                 << std::endl;
     }
-  catch (const std::exception &e)
+  catch (const GelMPM::InputError &e)
     {
       std::cerr << "gelmpm-fem-column: " << e.what() << std::endl;
       return 2;
+    }
+  catch (const std::exception &e)
+    {
+      std::cerr << "gelmpm-fem-column: " << e.what() << std::endl;
+      return 1;
     }
   return 0;
 }

@@ -4,13 +4,20 @@
 // doc/fem_peer.md). Writes statistics.csv (one row per converged step, with the punch force and
 // the mesh distortion) and the top surface (top_profile-NN.csv) at the stop times and at the end of
 // the run.
+//
+//   gelmpm-fem-flat-punch [--set "Section/Entry=value"]... [--quiet] prm/flat_punch.prm
+//
+// The gel, the time stepping and Newton are the scene's (PeerInput); the mesh and the punch are
+// the entries of 'FE peer'.
+#include <gelmpm/core/input_error.h>
 #include <gelmpm/core/parameters.h>
 #include <gelmpm/fem/fem_flat_punch.h>
 #include <gelmpm/io/statistics_file.h>
+#include <gelmpm/simulator/peer_input.h>
 
 #include <deal.II/base/mpi.h>
 
-#include <boost/program_options.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -41,77 +48,60 @@ namespace
 int
 main(int argc, char **argv)
 {
-  namespace po = boost::program_options;
-  GelMPM::FemFlatPunch::Parameters parameters;
-  double                           ramp_step, end_time, tolerance;
-  unsigned int                     max_iterations;
-  std::string                      stops, directory;
-  bool                             quiet = false;
-  po::options_description          options(
-    "gelmpm-fem-flat-punch: flat punch indentation of a swollen gel (paper §4.2) with the "
-             "body-fitted Taylor-Hood finite-element peer of the MPM.\nThe gel is [0, 1] x [0, 1] "
-             "(lengths in H) of the swollen initial state (mu_0 = 0, Table 1 material otherwise), "
-             "times in tau_d = H^2/D.\nOptions");
-  // clang-format off
-  options.add_options()
-    ("help", "this text")
-    ("cells", po::value(&parameters.cells)->default_value(20), "cells per direction (n x n)")
-    ("degree", po::value(&parameters.u_degree)->default_value(2),
-     "displacement degree k (mu: k - 1, Taylor-Hood)")
-    ("punch-width", po::value(&parameters.punch_width)->default_value(0.25),
-     "width of the punch from the left edge")
-    ("depth", po::value(&parameters.depth)->default_value(0.09),
-     "final punch displacement into the gel")
-    ("ramp-time", po::value(&parameters.ramp_time)->default_value(3.125e-6),
-     "the punch moves linearly over this time (tau_d)")
-    ("ramp-step", po::value(&ramp_step)->default_value(3.125e-7),
-     "the fixed time step during the ramp (tau_d); adaptive afterwards")
-    ("stop-times", po::value(&stops)->default_value(""),
-     "comma-separated times (tau_d) the stepping lands on; the top surface is written there "
-     "(default: the end of the ramp and 0.1, as the scene)")
-    ("end-time", po::value(&end_time)->default_value(2300.), "end of the run (tau_d)")
-    ("tolerance", po::value(&tolerance)->default_value(1e-10),
-     "Newton tolerance (as 'Newton/Tolerance' of gelmpm)")
-    ("max-iterations", po::value(&max_iterations)->default_value(15),
-     "Newton iterations before a step is cut")
-    ("quiet", po::bool_switch(&quiet), "no line per step")
-    ("output", po::value(&directory)->default_value("output/fem_flat_punch"), "output directory");
-  // clang-format on
-
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   try
     {
-      po::variables_map vm;
-      po::store(po::parse_command_line(argc, argv, options), vm);
-      if (vm.count("help"))
+      GelMPM::PeerInput
+        input(argc, argv, "gelmpm-fem-flat-punch", [](dealii::ParameterHandler &prm) {
+          prm.declare_entry("Cells",
+                            "20",
+                            dealii::Patterns::Integer(1),
+                            "Cells per direction of the gel [0, 1] x [0, 1] (lengths in H).");
+          GelMPM::PeerInput::declare_degree(prm);
+          prm.declare_entry("Punch width",
+                            "0.25",
+                            dealii::Patterns::Double(0.),
+                            "Width of the punch from the left edge (the scene's punch piece).");
+          prm.declare_entry("Depth",
+                            "0.09",
+                            dealii::Patterns::Double(0.),
+                            "Final punch displacement into the gel (H).");
+          prm.declare_entry("Ramp time",
+                            "3.125e-6",
+                            dealii::Patterns::Double(0.),
+                            "The punch moves linearly over this time (tau_d), as the scene's "
+                            "boundary function does.");
+          GelMPM::PeerInput::declare_output_directory(prm,
+                                                      "output/fem_flat_punch",
+                                                      "statistics.csv and the top profiles");
+        });
+      if (input.help)
         {
-          std::cout << options << std::endl;
+          std::cout << input.usage(
+            "Flat punch indentation of a swollen gel (paper §4.2) with the body-fitted "
+            "Taylor-Hood finite-element peer of the MPM, for the scene prm/flat_punch.prm.");
           return 0;
         }
-      po::notify(vm);
-      if (!(ramp_step > 0.))
-        throw std::invalid_argument("--ramp-step must be positive");
-
-      dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-
-      // Like the scene, land on the end of the ramp (whatever --ramp-time is) and on 0.1 tau_d.
-      if (!vm.count("stop-times") || vm["stop-times"].defaulted())
-        stops = GelMPM::entry_value(parameters.ramp_time) + ", 0.1";
-      // The scene's 'Step caps = t_inc: dt_ramp': a fixed step during the ramp.
-      const auto settings =
-        GelMPM::fem_run_settings({{"Initial step", GelMPM::entry_value(ramp_step)},
-                                  {"End time", GelMPM::entry_value(end_time)},
-                                  {"Step caps",
-                                   GelMPM::entry_value(parameters.ramp_time) + ": " +
-                                     GelMPM::entry_value(ramp_step)},
-                                  {"Stop at times", stops}},
-                                 {{"Tolerance", GelMPM::entry_value(tolerance)},
-                                  {"Maximum iterations", std::to_string(max_iterations)}});
-      const auto                &time_stepping = settings.time_stepping;
-      const auto                &newton        = settings.newton;
-      const GelMPM::LinearSolver linear_solver;
+      GelMPM::FemFlatPunch::Parameters parameters;
+      std::string                      directory;
+      {
+        auto &prm              = input.peer_section();
+        parameters.cells       = prm.get_integer("Cells");
+        parameters.u_degree    = prm.get_integer("Degree");
+        parameters.punch_width = prm.get_double("Punch width");
+        parameters.depth       = prm.get_double("Depth");
+        parameters.ramp_time   = prm.get_double("Ramp time");
+        directory              = prm.get("Output directory");
+        input.leave_peer_section();
+      }
+      const auto &time_stepping = input.time_stepping;
+      const auto &newton        = input.newton;
+      const auto &linear_solver = input.linear_solver;
+      const auto &quiet         = input.quiet;
+      const auto  end_time      = time_stepping.end_time;
 
       const auto           start    = std::chrono::steady_clock::now();
-      const auto           material = GelMPM::FemFlatPunch::scene_material();
+      const auto          &material = input.material;
       GelMPM::FemFlatPunch punch(material, parameters);
       const auto          &system = punch.system();
       std::cout << "gelmpm-fem-flat-punch: " << parameters.cells << " x " << parameters.cells
@@ -214,10 +204,15 @@ main(int argc, char **argv)
                 << "  results: " << directory << "/statistics.csv, " << directory
                 << "/top_profile-*.csv (times in profiles.csv)" << std::endl;
     }
-  catch (const std::exception &e)
+  catch (const GelMPM::InputError &e)
     {
       std::cerr << "gelmpm-fem-flat-punch: " << e.what() << std::endl;
       return 2;
+    }
+  catch (const std::exception &e)
+    {
+      std::cerr << "gelmpm-fem-flat-punch: " << e.what() << std::endl;
+      return 1;
     }
   return 0;
 }

@@ -2,13 +2,18 @@
 // finite-element peer of the MPM (FemMixedSystem: Taylor-Hood on a conforming mesh of the initial
 // configuration, same equations, material, Newton test and time stepping; doc/fem_peer.md).
 // Writes statistics.csv (one row per converged step) and prints the wall time.
+//
+//   gelmpm-fem-swelling [--set "Section/Entry=value"]... [--quiet] prm/constrained_swelling.prm
+//
+// The gel, the time stepping and Newton are the scene's (PeerInput); the mesh is 'FE peer'.
+#include <gelmpm/core/input_error.h>
 #include <gelmpm/core/parameters.h>
 #include <gelmpm/fem/fem_constrained_swelling.h>
 #include <gelmpm/io/statistics_file.h>
+#include <gelmpm/simulator/peer_input.h>
 
 #include <deal.II/base/mpi.h>
 
-#include <boost/program_options.hpp>
 #include <chrono>
 #include <filesystem>
 #include <iomanip>
@@ -17,90 +22,65 @@
 int
 main(int argc, char **argv)
 {
-  namespace po = boost::program_options;
-  GelMPM::FemConstrainedSwelling::Parameters parameters;
-  double                                     initial_step, end_time, tolerance;
-  unsigned int                               max_iterations;
-  std::string                                caps, stops, directory, formulation;
-  bool                                       quiet = false;
-  po::options_description                    options(
-    "gelmpm-fem-swelling: constrained swelling (paper §4.1) with the body-fitted Taylor-Hood "
-                       "finite-element peer of the MPM.\nLengths in h_0 (initial thickness), times in "
-                       "tau_d = h_0^2/D, Table 1 material.\nOptions");
-  options.add_options()("help", "this text")("cells-y",
-                                             po::value(&parameters.cells_y)->default_value(20),
-                                             "cells across the thickness (y)")(
-    "cells-x",
-    po::value(&parameters.cells_x)->default_value(2),
-    "cells across the width (x)")("width",
-                                  po::value(&parameters.width)->default_value(0.2),
-                                  "width of the layer")(
-    "grading",
-    po::value(&parameters.grading)->default_value(1.),
-    "mesh grading towards the top, y_i = 1 - (1 - i/n)^g (1: uniform)")(
-    "degree",
-    po::value(&parameters.u_degree)->default_value(2),
-    "displacement degree k (mu: k - 1, Taylor-Hood)")(
-    "formulation",
-    po::value(&formulation)->default_value("previously-converged"),
-    "'previously-converged' (paper eq. (26), (31) on Omega_n) or 'total' (on Omega_0)")(
-    "initial-step",
-    po::value(&initial_step)->default_value(8.75e-5),
-    "first time step (tau_d)")("caps",
-                               po::value(&caps)->default_value(
-                                 "5: 0.0125, 20: 0.0625, 40: 0.125, 100: 0.625"),
-                               "step caps 'until: cap, ...' (tau_d; default paper eq. (64))")(
-    "stop-times",
-    po::value(&stops)->default_value(""),
-    "comma-separated times (tau_d) the stepping lands on")(
-    "end-time",
-    po::value(&end_time)->default_value(1713.),
-    "end of the run (tau_d)")("tolerance",
-                              po::value(&tolerance)->default_value(1e-10),
-                              "Newton tolerance (as 'Newton/Tolerance' of gelmpm)")(
-    "max-iterations",
-    po::value(&max_iterations)->default_value(15),
-    "Newton iterations before a step is cut")("quiet", po::bool_switch(&quiet), "no line per step")(
-    "output",
-    po::value(&directory)->default_value("output/fem_swelling"),
-    "output directory");
-
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   try
     {
-      po::variables_map vm;
-      po::store(po::parse_command_line(argc, argv, options), vm);
-      if (vm.count("help"))
+      GelMPM::PeerInput input(argc, argv, "gelmpm-fem-swelling", [](dealii::ParameterHandler &prm) {
+        prm.declare_entry("Cells",
+                          "2, 20",
+                          dealii::Patterns::List(dealii::Patterns::Integer(1), 2, 2),
+                          "Cells across the width (x) and the thickness (y) of the layer.");
+        prm.declare_entry("Width",
+                          "0.2",
+                          dealii::Patterns::Double(0.),
+                          "Width of the layer (lengths in the initial thickness h_0).");
+        prm.declare_entry("Grading",
+                          "1",
+                          dealii::Patterns::Double(0.),
+                          "Mesh grading towards the top, y_i = 1 - (1 - i/n)^g (1: uniform).");
+        GelMPM::PeerInput::declare_degree(prm);
+        prm.declare_entry("Formulation",
+                          "previously-converged",
+                          dealii::Patterns::Selection("previously-converged|total"),
+                          "'previously-converged' (paper eq. (26), (31) on Omega_n) or 'total' "
+                          "(on Omega_0).");
+        GelMPM::PeerInput::declare_output_directory(prm, "output/fem_swelling", "statistics.csv");
+      });
+      if (input.help)
         {
-          std::cout << options << std::endl;
+          std::cout << input.usage(
+            "Constrained swelling (paper §4.1) with the body-fitted Taylor-Hood finite-element "
+            "peer of the MPM, for the scene prm/constrained_swelling.prm.");
           return 0;
         }
-      po::notify(vm);
-      if (formulation == "previously-converged")
-        parameters.formulation =
-          GelMPM::FemMixedSystem<2>::Formulation::previously_converged_lagrangian;
-      else if (formulation == "total")
-        parameters.formulation = GelMPM::FemMixedSystem<2>::Formulation::total_lagrangian;
-      else
-        throw std::invalid_argument("--formulation: '" + formulation +
-                                    "' is neither 'previously-converged' nor 'total'");
+      GelMPM::FemConstrainedSwelling::Parameters parameters;
+      std::string                                directory, formulation;
+      {
+        auto      &prm      = input.peer_section();
+        const auto cells    = GelMPM::get_double_list(prm, "Cells", "FE peer/Cells", 2);
+        parameters.cells_x  = static_cast<unsigned int>(cells[0]);
+        parameters.cells_y  = static_cast<unsigned int>(cells[1]);
+        parameters.width    = prm.get_double("Width");
+        parameters.grading  = prm.get_double("Grading");
+        parameters.u_degree = prm.get_integer("Degree");
+        formulation         = prm.get("Formulation");
+        directory           = prm.get("Output directory");
+        input.leave_peer_section();
+      }
+      parameters.formulation =
+        formulation == "total"
+          ? GelMPM::FemMixedSystem<2>::Formulation::total_lagrangian
+          : GelMPM::FemMixedSystem<2>::Formulation::previously_converged_lagrangian;
+      const auto &time_stepping = input.time_stepping;
+      const auto &newton        = input.newton;
+      const auto &linear_solver = input.linear_solver;
+      const auto &quiet         = input.quiet;
+      const auto  end_time      = time_stepping.end_time;
 
-      dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-
-      const auto settings =
-        GelMPM::fem_run_settings({{"Initial step", GelMPM::entry_value(initial_step)},
-                                  {"End time", GelMPM::entry_value(end_time)},
-                                  {"Step caps", caps},
-                                  {"Stop at times", stops}},
-                                 {{"Tolerance", GelMPM::entry_value(tolerance)},
-                                  {"Maximum iterations", std::to_string(max_iterations)}});
-      const auto                &time_stepping = settings.time_stepping;
-      const auto                &newton        = settings.newton;
-      const GelMPM::LinearSolver linear_solver;
-
-      const auto                      start = std::chrono::steady_clock::now();
-      const GelMPM::FloryRehnerGel<2> material;
-      GelMPM::FemConstrainedSwelling  swelling(material, parameters);
-      const auto                     &system = swelling.system();
+      const auto                     start    = std::chrono::steady_clock::now();
+      const auto                    &material = input.material;
+      GelMPM::FemConstrainedSwelling swelling(material, parameters);
+      const auto                    &system = swelling.system();
       std::cout << "gelmpm-fem-swelling: " << parameters.cells_x << " x " << parameters.cells_y
                 << " cells, Q" << parameters.u_degree << "-Q" << parameters.u_degree - 1 << ", "
                 << system.n_dofs() << " DoFs (" << system.n_u_dofs() << " u, " << system.n_mu_dofs()
@@ -167,10 +147,15 @@ main(int argc, char **argv)
                 << "  wall time " << std::setprecision(4) << wall << " s\n"
                 << "  results: " << directory << "/statistics.csv" << std::endl;
     }
-  catch (const std::exception &e)
+  catch (const GelMPM::InputError &e)
     {
       std::cerr << "gelmpm-fem-swelling: " << e.what() << std::endl;
       return 2;
+    }
+  catch (const std::exception &e)
+    {
+      std::cerr << "gelmpm-fem-swelling: " << e.what() << std::endl;
+      return 1;
     }
   return 0;
 }

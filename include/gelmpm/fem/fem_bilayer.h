@@ -67,8 +67,17 @@ namespace GelMPM
     static std::vector<FloryRehnerGel<2>>
     layer_materials(const double chi_passive);
 
-    /** Builds the mesh and the system; throws std::invalid_argument on invalid parameters. */
+    /**
+     * Builds the mesh and the system with the layers of layer_materials(chi_passive); throws
+     * std::invalid_argument on invalid parameters.
+     */
     explicit FemBilayer(const Parameters &parameters);
+
+    /**
+     * The same with the gels @p materials of the layers, indexed by material_id (the active
+     * upper layer first), e.g. a scene's 'Material/Regions'; Parameters::chi_passive is not used.
+     */
+    FemBilayer(const Parameters &parameters, const std::vector<FloryRehnerGel<2>> &materials);
 
     /** Run to time_stepping.end_time, calling @p on_step after every converged step. */
     FemRunResult

@@ -39,15 +39,15 @@ namespace GelMPM
      * (name, t/tau_d); @p record_mode keeps the critical mode of an accepted step for output
      * (empty: no mode output).
      */
-    StabilityMonitor(const StabilitySettings                              &settings,
-                     Scene<dim>                                           &scene,
-                     const LinearSolver                                   &linear_solver,
-                     TimeLoop                                             &loop,
-                     StatisticsFile                                       &statistics,
-                     StatisticsFile                                       &stability_file,
-                     dealii::ConditionalOStream                           &log,
-                     dealii::TimerOutput                                  &timer,
-                     const std::function<void(const std::string &, double)> &write_event,
+    StabilityMonitor(const StabilitySettings                                   &settings,
+                     Scene<dim>                                                &scene,
+                     const LinearSolver                                        &linear_solver,
+                     TimeLoop                                                  &loop,
+                     StatisticsFile                                            &statistics,
+                     StatisticsFile                                            &stability_file,
+                     dealii::ConditionalOStream                                &log,
+                     dealii::TimerOutput                                       &timer,
+                     const std::function<void(const std::string &, double)>    &write_event,
                      const std::function<void(const dealii::Vector<double> &)> &record_mode);
 
     /** Analyse the converged attempt's tangent and judge its signature. */
@@ -73,8 +73,8 @@ namespace GelMPM
     serialize(Archive &ar, const unsigned int)
     {
       ar &announced_bracketing &last_eigenvalue;
-      ar &last_stable_inertia.n_positive &last_stable_inertia.n_negative
-        &last_stable_inertia.n_zero;
+      ar &last_stable_inertia.n_positive &last_stable_inertia.n_negative &last_stable_inertia
+        .n_zero;
     }
 
   private:
@@ -94,16 +94,16 @@ namespace GelMPM
     void
     perturb_along_mode(const dealii::Vector<double> &mode, dealii::Vector<double> &solution) const;
 
-    const StabilitySettings                                  &settings;
-    Scene<dim>                                               &scene;
-    const LinearSolver                                       &linear_solver;
-    TimeLoop                                                 &loop;
-    StatisticsFile                                           &statistics;
-    StatisticsFile                                           &stability_file;
-    dealii::ConditionalOStream                               &log;
-    dealii::TimerOutput                                      &timer;
-    std::function<void(const std::string &, double)>         write_event;
-    std::function<void(const dealii::Vector<double> &)>      record_mode;
+    const StabilitySettings                            &settings;
+    Scene<dim>                                         &scene;
+    const LinearSolver                                 &linear_solver;
+    TimeLoop                                           &loop;
+    StatisticsFile                                     &statistics;
+    StatisticsFile                                     &stability_file;
+    dealii::ConditionalOStream                         &log;
+    dealii::TimerOutput                                &timer;
+    std::function<void(const std::string &, double)>    write_event;
+    std::function<void(const dealii::Vector<double> &)> record_mode;
 
     bool            announced_bracketing = false;
     Inertia         last_stable_inertia;

@@ -80,12 +80,19 @@ namespace GelMPM
                     dealii::Vector<double> &solution) = 0;
 
     /**
-     * Whether the model measures its steps' errors: largest_motion_in_cells(),
-     * increment_deviation() and local_error(). A loop refuses 'Time stepping/Largest
-     * increment', 'Displacement tolerance' and 'Tolerance' for a model that does not.
+     * Whether the model measures its steps' errors: increment_deviation() and local_error(). A
+     * loop refuses 'Time stepping/Displacement tolerance' and 'Tolerance' for a model that does
+     * not.
      */
     virtual bool
     estimates_errors() const;
+
+    /**
+     * Whether largest_motion_in_cells() is measured (by default: with the error estimates); a
+     * loop refuses 'Time stepping/Largest increment' for a model that does not.
+     */
+    virtual bool
+    measures_motion_in_cells() const;
 
     /** The largest displacement of the converged @p solution, in cells of the grid. */
     virtual double
@@ -330,13 +337,13 @@ namespace GelMPM
     unsigned int                output_interval_steps;
     double                      output_interval_time;
 
-    double        last_dt          = 0.; // the last accepted step (0 before the first, after a kick)
+    double        last_dt = 0.; // the last accepted step (0 before the first, after a kick)
     double        next_output_time = 0.;
     std::string   failure_;
-    int           signal_                = 0;
-    unsigned long n_newton_iterations    = 0;
-    unsigned long n_factorizations       = 0;
-    unsigned long n_uncontrolled_errors  = 0;
+    int           signal_               = 0;
+    unsigned long n_newton_iterations   = 0;
+    unsigned long n_factorizations      = 0;
+    unsigned long n_uncontrolled_errors = 0;
   };
 } // namespace GelMPM
 

@@ -1,0 +1,105 @@
+#include <gelmpm/core/input_error.h>
+#include <gelmpm/core/parameters.h>
+#include <gelmpm/simulator/peer_input.h>
+#include <gelmpm/simulator/scene_structure.h>
+#include <gelmpm/simulator/simulator.h>
+
+#include <sstream>
+
+namespace GelMPM
+{
+  PeerInput::PeerInput(const int                                              argc,
+                       const char *const                                     *argv,
+                       const std::string                                     &tool,
+                       const std::function<void(dealii::ParameterHandler &)> &declare_peer)
+    : tool(tool)
+  {
+    // gelmpm's own command line, without the peer's one switch.
+    std::vector<const char *> arguments;
+    for (int i = 0; i < argc; ++i)
+      if (std::string(argv[i]) == "--quiet")
+        quiet = true;
+      else
+        arguments.push_back(argv[i]);
+    for (const auto *argument : arguments)
+      for (const char *option : {"--check", "--resume", "--print-parameters"})
+        require(std::string(argument) != option,
+                "",
+                "'" + std::string(option) + "' is an option of gelmpm, not of " + tool,
+                "see '" + tool + " --help'");
+    const auto cl = CommandLine::parse(arguments.size(), arguments.data());
+    help          = cl.help;
+
+    prm.enter_subsection("FE peer");
+    declare_peer(prm);
+    prm.leave_subsection();
+    if (help)
+      return;
+    const auto structure = SceneStructure::read(cl.scene_file, cl.overrides);
+    require(structure.dimension == 2,
+            "Dimension",
+            "is " + std::to_string(structure.dimension) + ", but the body-fitted peer runs in 2D",
+            "give the 2D scene the peer is compared with");
+    Simulator<2>::declare_parameters(prm, structure);
+    read_scene_file(prm, cl.scene_file, cl.overrides);
+    material.parse_parameters(prm);
+    regions.parse_parameters(prm, structure.material_regions, material);
+    time_stepping.parse_parameters(prm);
+    newton.parse_parameters(prm);
+    linear_solver.parse_parameters(prm);
+    stability.parse_parameters(prm);
+  }
+
+
+  std::string
+  PeerInput::usage(const std::string &description) const
+  {
+    std::ostringstream text;
+    text << "Usage: " << tool << " [--set \"Section/Entry=value\"]... [--quiet] scene.prm\n\n"
+         << description << "\n\n"
+         << "The gel, 'Time stepping', 'Newton', 'Linear solver' and 'Stability' are the scene's "
+            "(gelmpm --print-parameters documents them);\nthe peer's own entries are set with "
+            "--set \"FE peer/Entry=value\":\n\n";
+    // With --help only the peer's section is declared: its entries with their documentation.
+    prm.print_parameters(text, dealii::ParameterHandler::Text);
+    text << "\n  --quiet   no line per step\n  --help    this text\n";
+    return text.str();
+  }
+
+
+  void
+  PeerInput::declare_degree(dealii::ParameterHandler &prm)
+  {
+    prm.declare_entry("Degree",
+                      "2",
+                      dealii::Patterns::Integer(2),
+                      "Displacement degree k (mu: k - 1, Taylor-Hood).");
+  }
+
+
+  void
+  PeerInput::declare_output_directory(dealii::ParameterHandler &prm,
+                                      const std::string        &default_directory,
+                                      const std::string        &contents)
+  {
+    prm.declare_entry("Output directory",
+                      default_directory,
+                      dealii::Patterns::Anything(),
+                      "The directory of " + contents + ".");
+  }
+
+
+  dealii::ParameterHandler &
+  PeerInput::peer_section()
+  {
+    prm.enter_subsection("FE peer");
+    return prm;
+  }
+
+
+  void
+  PeerInput::leave_peer_section()
+  {
+    prm.leave_subsection();
+  }
+} // namespace GelMPM
