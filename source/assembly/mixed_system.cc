@@ -460,11 +460,8 @@ namespace GelMPM
     std::vector<unsigned char> outside(points.size(), 0);
     std::vector<Point<dim>>    moved(points.size());
     const auto                 update_point = [&](const unsigned int p) {
-      const PointRecord<dim> &r = cache.points()[p];
-      Tensor<1, dim>          du;
-      Tensor<2, dim>          delta_F;
-      double                  mu;
-      cache.fields_at_point(r, solution, du, delta_F, mu);
+      const PointRecord<dim> &r    = cache.points()[p];
+      const auto [du, delta_F, mu] = cache.fields_at(r, solution);
 
       const Tensor<2, dim> F_p = delta_F * r.F_p;
       // J_n relative to the initial configuration (the out-of-plane stretch stays lambda_0).
@@ -613,12 +610,9 @@ namespace GelMPM
         if (r.kind == PointKind::volume || r.piece < 0 ||
             boundary_conditions.piece(r.piece).displacement_prescribed())
           continue;
-        Tensor<1, dim> du;
-        Tensor<2, dim> delta_F;
-        double         mu;
-        cache.fields_at_point(r, solution, du, delta_F, mu);
-        const auto [is_active, g] = plane_contact.state(r, du, delta_F, mu);
-        penetration               = std::max(penetration, g);
+        const auto [du, delta_F, mu] = cache.fields_at(r, solution);
+        const auto [is_active, g]    = plane_contact.state(r, du, delta_F, mu);
+        penetration                  = std::max(penetration, g);
         active += is_active;
       }
     return {dealii::Utilities::MPI::sum(active, communicator),

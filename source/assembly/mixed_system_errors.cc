@@ -21,10 +21,7 @@ namespace GelMPM
       {
         if (r.kind == PointKind::volume || r.piece < 0)
           continue;
-        Tensor<1, dim> du;
-        Tensor<2, dim> delta_F;
-        double         mu;
-        cache.fields_at_point(r, solution, du, delta_F, mu);
+        const auto [du, delta_F, mu] = cache.fields_at(r, solution);
         if (r.projector.norm_square() > 0.)
           u_error = std::max(u_error, (r.projector * (r.u_n + du - r.u_bar)).norm());
         if (boundary_conditions.piece(r.piece).chemical_potential_prescribed())
@@ -42,11 +39,8 @@ namespace GelMPM
     double largest = 0.;
     for (const auto &r : cache.points())
       {
-        Tensor<1, dim> du;
-        Tensor<2, dim> delta_F;
-        double         mu;
-        cache.fields_at_point(r, solution, du, delta_F, mu);
-        largest = std::max(largest, du.norm());
+        const auto [du, delta_F, mu] = cache.fields_at(r, solution);
+        largest                      = std::max(largest, du.norm());
       }
     return dealii::Utilities::MPI::max(largest, communicator);
   }
@@ -60,11 +54,8 @@ namespace GelMPM
     double largest = 0.;
     for (const auto &r : cache.points())
       {
-        Tensor<1, dim> du;
-        Tensor<2, dim> delta_F;
-        double         mu;
-        cache.fields_at_point(r, solution, du, delta_F, mu);
-        largest = std::max(largest, (du - ratio * r.du_last).norm());
+        const auto [du, delta_F, mu] = cache.fields_at(r, solution);
+        largest                      = std::max(largest, (du - ratio * r.du_last).norm());
       }
     return dealii::Utilities::MPI::max(largest, communicator);
   }
@@ -84,12 +75,9 @@ namespace GelMPM
     for (const auto &r : cache.points())
       if (r.kind == PointKind::volume)
         {
-          Tensor<1, dim> du;
-          Tensor<2, dim> delta_F;
-          double         mu;
-          cache.fields_at_point(r, solution, du, delta_F, mu);
-          const double mu_difference = (mu - r.mu_n) - ratio * r.dmu_last;
-          const double u_square      = (du - ratio * r.du_last).norm_square();
+          const auto [du, delta_F, mu] = cache.fields_at(r, solution);
+          const double mu_difference   = (mu - r.mu_n) - ratio * r.dmu_last;
+          const double u_square        = (du - ratio * r.du_last).norm_square();
           volume += r.measure;
           u_sum += r.measure * u_square;
           mu_sum += r.measure * mu_difference * mu_difference;

@@ -300,13 +300,12 @@ namespace GelMPM
 
 
   template <int dim>
-  void
-  PointCache<dim>::fields_at_point(const PointRecord<dim>       &r,
-                                   const dealii::Vector<double> &solution,
-                                   Tensor<1, dim>               &du,
-                                   Tensor<2, dim>               &delta_F,
-                                   double                       &mu) const
+  typename PointCache<dim>::Fields
+  PointCache<dim>::fields_at(const PointRecord<dim>       &r,
+                             const dealii::Vector<double> &solution) const
   {
+    Fields fields;
+    auto &[du, delta_F, mu]  = fields;
     const PointBlock &b      = blocks_[r.block];
     const auto       &u_dofs = spaces.u().cell_dofs(b.u_cell);
     const auto       &m_dofs = spaces.mu().cell_dofs(b.mu_cell);
@@ -324,6 +323,7 @@ namespace GelMPM
     mu = 0.;
     for (unsigned int j = 0; j < m_dofs.size(); ++j)
       mu += mu_values[r.mu_offset + j] * solution(n_u + m_dofs[j]);
+    return fields;
   }
 
 

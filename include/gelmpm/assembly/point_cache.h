@@ -186,13 +186,19 @@ namespace GelMPM
     unknowns_of_block(const PointBlock                             &block,
                       std::vector<dealii::types::global_dof_index> &dofs) const;
 
-    /** du, Delta F = I + grad_n du and mu at the point @p r for the unknowns @p solution. */
-    void
-    fields_at_point(const PointRecord<dim>       &r,
-                    const dealii::Vector<double> &solution,
-                    dealii::Tensor<1, dim>       &du,
-                    dealii::Tensor<2, dim>       &delta_F,
-                    double                       &mu) const;
+    /** The fields at a point for the unknowns of a Newton iterate. */
+    struct Fields
+    {
+      /** The displacement increment du. */
+      dealii::Tensor<1, dim> du;
+      /** Delta F = I + grad_n du. */
+      dealii::Tensor<2, dim> delta_F;
+      double                 mu;
+    };
+
+    /** du, Delta F and mu at the point @p r for the unknowns @p solution. */
+    Fields
+    fields_at(const PointRecord<dim> &r, const dealii::Vector<double> &solution) const;
 
   private:
     /**
