@@ -69,8 +69,9 @@ namespace GelMPM
    * bases and caches every point's shape-function values and gradients (PointCache): they do not
    * change over the Newton iterations of a step (the grid is reset, points sit at x_n).
    *
-   * The class holds the parts together: the point cache, the sparsity pattern and the global
-   * tangent and residual, the boundary data of a step and the point updates. Each term of the
+   * The class holds the parts together: the point cache, the sparsity pattern of the global
+   * tangent (NewtonSystem's matrix and residual), the boundary data of a step and the point
+   * updates. Each term of the
    * weak form is an assembler of its own (PointAssembler): VolumeTermAssembler at volume points;
    * TractionAssembler, DisplacementNitscheAssembler, PlaneContactAssembler,
    * ChemicalPotentialNitscheAssembler and SolventFluxAssembler, in this order, at the surface
