@@ -83,48 +83,6 @@ namespace GelMPM
                 "enlarge 'Background grid/Lower corner' and 'Upper corner' or move the body");
       }
 
-    // The area of the face of the sampling grid at sample i normal to axis a where phi < 0:
-    // strips along the second in-plane axis, on each the inside length from the sign changes
-    // of phi (bisection).
-    const auto inside_area = [&](const Index &i, const unsigned int a) {
-      const unsigned int       b = (a + 1) % dim, c = (a + 2) % dim;
-      const unsigned int       strips = 8, samples = 8;
-      const dealii::Point<dim> origin = sample(i);
-      double                   area   = 0.;
-      for (unsigned int q = 0; q < strips; ++q)
-        {
-          dealii::Point<dim> x = origin;
-          x[c] += (q + 0.5) * step[c] / strips;
-          const auto at = [&](const double s) {
-            dealii::Point<dim> y = x;
-            y[b] += s * step[b];
-            return y;
-          };
-          double length = 0., s_prev = 0., v_prev = level_set(at(0.));
-          for (unsigned int r = 1; r <= samples; ++r)
-            {
-              const double s = double(r) / samples, v = level_set(at(s));
-              const bool   in_prev = v_prev < 0., in = v < 0.;
-              if (in_prev && in)
-                length += s - s_prev;
-              else if (in_prev != in)
-                {
-                  double lo = s_prev, hi = s; // in_prev at lo
-                  for (unsigned int it = 0; it < 40; ++it)
-                    {
-                      const double m                                 = 0.5 * (lo + hi);
-                      ((level_set(at(m)) < 0.) == in_prev ? lo : hi) = m;
-                    }
-                  length += in_prev ? 0.5 * (lo + hi) - s_prev : s - 0.5 * (lo + hi);
-                }
-              s_prev = s;
-              v_prev = v;
-            }
-          area += length * step[b] * step[c] / strips;
-        }
-      return area;
-    };
-
     std::vector<SurfaceElement> elements;
     const double                max_shift = 2. * *std::max_element(step.begin(), step.end());
     Index                       cube;
@@ -166,7 +124,9 @@ namespace GelMPM
               for (unsigned int d = 0; d < dim; ++d)
                 if (d != a)
                   face_area *= step[d];
-              const double area = face_in == 0 ? 0. : face_in == 4 ? face_area : inside_area(i, a);
+              const double area = face_in == 0   ? 0.
+                                  : face_in == 4 ? face_area
+                                                 : face_inside_area(sample(i), a, step);
               normal_area -= (side ? area : -area) * unit_vector<dim>(a);
             }
         if (!(normal_area.norm() > 0.))
@@ -198,6 +158,52 @@ namespace GelMPM
           elements.push_back(this->element(project_onto_zero_set(mean, max_shift), normal_area));
       }
     return elements;
+  }
+
+
+  template <int dim>
+  double
+  LevelSetBody<dim>::face_inside_area(const dealii::Point<dim>      &origin,
+                                      const unsigned int             a,
+                                      const std::array<double, dim> &step) const
+  {
+    // Strips along the second in-plane axis, on each the inside length from the sign changes of
+    // phi (bisection).
+    const unsigned int b = (a + 1) % dim, c = (a + 2) % dim;
+    const unsigned int strips = 8, samples = 8;
+    double             area = 0.;
+    for (unsigned int q = 0; q < strips; ++q)
+      {
+        dealii::Point<dim> x = origin;
+        x[c] += (q + 0.5) * step[c] / strips;
+        const auto at = [&](const double s) {
+          dealii::Point<dim> y = x;
+          y[b] += s * step[b];
+          return y;
+        };
+        double length = 0., s_prev = 0., v_prev = level_set(at(0.));
+        for (unsigned int r = 1; r <= samples; ++r)
+          {
+            const double s = double(r) / samples, v = level_set(at(s));
+            const bool   in_prev = v_prev < 0., in = v < 0.;
+            if (in_prev && in)
+              length += s - s_prev;
+            else if (in_prev != in)
+              {
+                double lo = s_prev, hi = s; // in_prev at lo
+                for (unsigned int it = 0; it < 40; ++it)
+                  {
+                    const double m                                 = 0.5 * (lo + hi);
+                    ((level_set(at(m)) < 0.) == in_prev ? lo : hi) = m;
+                  }
+                length += in_prev ? 0.5 * (lo + hi) - s_prev : s - 0.5 * (lo + hi);
+              }
+            s_prev = s;
+            v_prev = v;
+          }
+        area += length * step[b] * step[c] / strips;
+      }
+    return area;
   }
 
 
@@ -320,9 +326,12 @@ namespace GelMPM
     double,                                                                                       \
     const dealii::Point<dim> &,                                                                   \
     const dealii::Point<dim> &) const;                                                            \
-  template bool LevelSetBody<dim>::split_at_edge(const std::vector<dealii::Point<dim>> &,         \
-                                                 const dealii::Tensor<1, dim> &,                  \
-                                                 double,                                          \
+  template double LevelSetBody<dim>::face_inside_area(const dealii::Point<dim> &,                 \
+                                                      unsigned int,                               \
+                                                      const std::array<double, dim> &) const;     \
+  template bool   LevelSetBody<dim>::split_at_edge(const std::vector<dealii::Point<dim>> &,       \
+                                                 const dealii::Tensor<1, dim> &,                \
+                                                 double,                                        \
                                                  std::vector<SurfaceElement> &) const;
   GELMPM_INSTANTIATE(2)
   GELMPM_INSTANTIATE(3)

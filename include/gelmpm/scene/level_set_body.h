@@ -5,6 +5,7 @@
 
 #include <deal.II/base/function_parser.h>
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -92,6 +93,15 @@ namespace GelMPM
     surface_elements_3d(const double              spacing,
                         const dealii::Point<dim> &lower,
                         const dealii::Point<dim> &upper) const;
+
+    /**
+     * 3D: the area of the face of a sampling cube at @p origin normal to the axis @p a (edges
+     * @p step) where phi < 0, from the sign changes of phi along 8 strips (bisection).
+     */
+    double
+    face_inside_area(const dealii::Point<dim>      &origin,
+                     const unsigned int             a,
+                     const std::array<double, dim> &step) const;
 
     /**
      * 3D: when the @p crossings of the zero set with a sampling cube's edges fall into two or
