@@ -15,15 +15,6 @@ namespace GelMPM
     // The two-point Gauss rule on [0, 1].
     const double gauss_nodes[2] = {0.5 - 0.5 / std::sqrt(3.), 0.5 + 0.5 / std::sqrt(3.)};
 
-    template <int dim>
-    dealii::Tensor<1, dim>
-    unit_vector(const unsigned int d)
-    {
-      dealii::Tensor<1, dim> e;
-      e[d] = 1.;
-      return e;
-    }
-
     // Distance from p to the surface of the box [lower, upper].
     template <int dim>
     double
@@ -162,12 +153,13 @@ namespace GelMPM
             for (unsigned int ib = 0; ib + 1 < breaks[0].size(); ++ib)
               for (unsigned int ic = 0; ic + 1 < breaks[1].size(); ++ic)
                 {
-                  const double                          b0 = breaks[0][ib], b1 = breaks[0][ib + 1];
-                  const double                          c0 = breaks[1][ic], c1 = breaks[1][ic + 1];
-                  const unsigned int                    mb = pieces(b0, b1), mc = pieces(c0, c1);
-                  const double                          db = (b1 - b0) / mb, dc = (c1 - c0) / mc;
-                  const dealii::Tensor<1, dim>          normal = double(side) * unit_vector<dim>(a);
-                  const typename BoxBody<dim>::PatchMap map    = [&](const double            s,
+                  const double                 b0 = breaks[0][ib], b1 = breaks[0][ib + 1];
+                  const double                 c0 = breaks[1][ic], c1 = breaks[1][ic + 1];
+                  const unsigned int           mb = pieces(b0, b1), mc = pieces(c0, c1);
+                  const double                 db = (b1 - b0) / mb, dc = (c1 - c0) / mc;
+                  const dealii::Tensor<1, dim> normal =
+                    double(side) * dealii::Point<dim>::unit_vector(a);
+                  const typename BoxBody<dim>::PatchMap map = [&](const double            s,
                                                                   const double            t,
                                                                   dealii::Point<dim>     &x,
                                                                   dealii::Tensor<1, dim> &density) {
@@ -207,7 +199,7 @@ namespace GelMPM
                                                               dealii::Point<dim>     &x,
                                                               dealii::Tensor<1, dim> &density) {
                 const double           u = std::tan(alpha), v = std::tan(beta);
-                dealii::Tensor<1, dim> w = double(side) * unit_vector<dim>(a);
+                dealii::Tensor<1, dim> w = double(side) * dealii::Point<dim>::unit_vector(a);
                 w[b]                     = u;
                 w[c]                     = v;
                 const double r2          = 1. + u * u + v * v;

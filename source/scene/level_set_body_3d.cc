@@ -15,19 +15,6 @@
 
 namespace GelMPM
 {
-  namespace
-  {
-    template <int dim>
-    dealii::Tensor<1, dim>
-    unit_vector(const unsigned int d)
-    {
-      dealii::Tensor<1, dim> e;
-      e[d] = 1.;
-      return e;
-    }
-  } // namespace
-
-
   template <int dim>
   std::vector<typename LevelSetBody<dim>::SurfaceElement>
   LevelSetBody<dim>::surface_elements_3d(const double              spacing,
@@ -127,7 +114,7 @@ namespace GelMPM
               const double area = face_in == 0   ? 0.
                                   : face_in == 4 ? face_area
                                                  : face_inside_area(sample(i), a, step);
-              normal_area -= (side ? area : -area) * unit_vector<dim>(a);
+              normal_area -= (side ? area : -area) * dealii::Point<dim>::unit_vector(a);
             }
         if (!(normal_area.norm() > 0.))
           continue;
