@@ -1,3 +1,4 @@
+#include <gelmpm/core/format_point.h>
 #include <gelmpm/core/input_error.h>
 #include <gelmpm/particles/material_point_generator.h>
 #include <gelmpm/particles/point_location.h>
@@ -47,15 +48,6 @@ namespace GelMPM
 
   namespace
   {
-    template <int dim>
-    std::string
-    text(const dealii::Point<dim> &p)
-    {
-      std::ostringstream out;
-      out << "(" << p << ")";
-      return out.str();
-    }
-
     /**
      * Throw InputError if piece @p i selects surface points that an earlier piece takes: a point
      * belongs to the first piece that selects it, so the later one is left without points.
@@ -76,7 +68,8 @@ namespace GelMPM
             boundary_conditions.piece_of(e.centre, normal, e.boundary_id, e.group_name));
           throw InputError("Boundary conditions/" + piece.name + "/Selector",
                            "overlaps the selector of the earlier piece '" + first.name +
-                             "', which takes all its points, e.g. the one at " + text(e.centre) +
+                             "', which takes all its points, e.g. the one at " +
+                             format_point(e.centre) +
                              " (a point belongs to the first piece that selects it)",
                            "make the selectors of '" + first.name + "' and '" + piece.name +
                              "' disjoint");
@@ -262,13 +255,15 @@ namespace GelMPM
         insert(x, region);
       };
 
-    if (geometry.source() == Geometry<dim>::Source::mesh)
-      // At the Gauss points of the mesh cells, as densely as the sub-cells of a box body.
-      for (const auto &e : geometry.mesh_volume_elements(points_per_cell, h_min / points_per_cell))
+    const Body<dim> &body = geometry.body();
+    if (body.has_own_volume_points())
+      // At the body's own points (the Gauss points of mesh cells), as densely as the sub-cells
+      // of a box body.
+      for (const auto &e : body.volume_elements(points_per_cell, h_min / points_per_cell))
         {
           require(grid.contains(e.centre),
                   geometry.entry(),
-                  "puts the body outside the background grid, e.g. at " + text(e.centre),
+                  "puts the body outside the background grid, e.g. at " + format_point(e.centre),
                   "enlarge 'Background grid/Lower corner' and 'Upper corner' or move the body");
           insert_volume_point(e.centre, e.volume, e.group_name);
         }
@@ -299,25 +294,11 @@ namespace GelMPM
                   rest_s /= n;
                   x[d] = grid.lower[d] + (ic + (is + 0.5) / n) * grid.cell_size(d);
                 }
-              in_boxes |= geometry.inside_boxes(x);
-              if (geometry.inside(x))
+              in_boxes |= body.inside_boxes(x);
+              if (body.inside(x))
                 insert_volume_point(x, sub_volume, "");
             }
-        require(next_id > 0 || !in_boxes,
-                "Geometry/Holes",
-                "leaves nothing of the body: the holes remove the whole body (no volume point of "
-                "'Geometry/Boxes' lies outside them)",
-                "make the holes smaller or move them off the body ('Geometry/Boxes')");
-        require(next_id > 0 || geometry.source() != Geometry<dim>::Source::level_set,
-                "Geometry/Level set",
-                "is negative nowhere inside the background grid (at none of the " +
-                  std::to_string(n_cells * n_sub) + " sub-cell centres), so there is no body",
-                "check the sign (the body is where the expression is negative) and the position "
-                "against 'Background grid'");
-        require(next_id > 0,
-                "Geometry/Boxes",
-                "places no volume point inside the background grid",
-                "put the body inside 'Background grid'");
+        body.check_volume_points(next_id, in_boxes, n_cells * n_sub);
       }
 
     regions.check_populated(volume_points_of_region);
@@ -326,13 +307,13 @@ namespace GelMPM
     check_boundary_groups(geometry, boundary_conditions);
     {
       const auto elements =
-        geometry.surface_elements(h_min / surface_points_per_edge, grid.lower, grid.upper);
+        body.surface_elements(h_min / surface_points_per_edge, grid.lower, grid.upper);
       std::vector<unsigned int> count(boundary_conditions.n_pieces(), 0);
       for (const auto &e : elements)
         {
           require(grid.contains(e.centre),
                   geometry.entry(),
-                  "puts the body outside the background grid, e.g. at " + text(e.centre),
+                  "puts the body outside the background grid, e.g. at " + format_point(e.centre),
                   "enlarge 'Background grid/Lower corner' and 'Upper corner' or move the body");
           const double                 area   = e.normal_area.norm();
           const dealii::Tensor<1, dim> normal = e.normal_area / area;

@@ -1,3 +1,4 @@
+#include <gelmpm/core/format_point.h>
 #include <gelmpm/core/input_error.h>
 #include <gelmpm/core/parameters.h>
 #include <gelmpm/scene/boundary_conditions.h>
@@ -31,17 +32,6 @@ namespace GelMPM
         return "NaN";
       std::ostringstream text;
       text << x;
-      return text.str();
-    }
-
-    std::string
-    format_point(const double *x, const unsigned int n)
-    {
-      std::ostringstream text;
-      text << '(';
-      for (unsigned int d = 0; d < n; ++d)
-        text << (d ? ", " : "") << x[d];
-      text << ')';
       return text.str();
     }
 
@@ -221,7 +211,7 @@ namespace GelMPM
     if (!std::isfinite(value))
       throw InputError("Boundary conditions/" + name + "/Selector",
                        "is not a number (" + number(value) + ") at the surface point " +
-                         format_point(&x[0], dim) + " with normal " + format_point(&normal[0], dim),
+                         format_point(x) + " with normal " + format_point(normal),
                        "write a condition that is 0 or 1 everywhere, e.g. 'ny > 0.5'");
     return value != 0.;
   }
@@ -314,7 +304,7 @@ namespace GelMPM
               {
                 functions[f]->vector_value(x, values);
                 std::ostringstream where_when;
-                where_when << " at x = " << format_point(&x[0], dim) << ", t = " << t;
+                where_when << " at x = " << format_point(x) << ", t = " << t;
                 for (const double v : values)
                   require(std::isfinite(v),
                           "Boundary conditions/" + name + "/" + function_names[f],

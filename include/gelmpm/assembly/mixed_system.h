@@ -1,10 +1,19 @@
 #ifndef gelmpm_assembly_mixed_system_h
 #define gelmpm_assembly_mixed_system_h
 
+#include <gelmpm/assembly/chemical_potential_nitsche.h>
 #include <gelmpm/assembly/contact_settings.h>
 #include <gelmpm/assembly/discretisation.h>
+#include <gelmpm/assembly/displacement_nitsche.h>
+#include <gelmpm/assembly/neumann_terms.h>
 #include <gelmpm/assembly/nitsche_settings.h>
+#include <gelmpm/assembly/plane_contact.h>
+#include <gelmpm/assembly/point_assembler.h>
+#include <gelmpm/assembly/point_cache.h>
+#include <gelmpm/assembly/point_projection.h>
+#include <gelmpm/assembly/volume_term.h>
 #include <gelmpm/core/newton_system.h>
+#include <gelmpm/core/non_physical_state.h>
 #include <gelmpm/core/sparse_entries.h>
 #include <gelmpm/material/flory_rehner_gel.h>
 #include <gelmpm/particles/property_layout.h>
@@ -57,8 +66,17 @@ namespace GelMPM
    * the sign printed in eq. (32) the mu block would be skew.
    *
    * Per step, setup() gathers the material points, classifies the cells, builds the extended
-   * bases and caches every point's shape-function values and gradients: they do not change over
-   * the Newton iterations of a step (the grid is reset, points sit at x_n).
+   * bases and caches every point's shape-function values and gradients (PointCache): they do not
+   * change over the Newton iterations of a step (the grid is reset, points sit at x_n).
+   *
+   * The class holds the parts together: the point cache, the sparsity pattern of the global
+   * tangent (NewtonSystem's matrix and residual), the boundary data of a step and the point
+   * updates. Each term of the
+   * weak form is an assembler of its own (PointAssembler): VolumeTermAssembler at volume points;
+   * TractionAssembler, DisplacementNitscheAssembler, PlaneContactAssembler,
+   * ChemicalPotentialNitscheAssembler and SolventFluxAssembler, in this order, at the surface
+   * points of a piece. The projections are PointProjection's; the error norms of a step are in
+   * mixed_system_errors.cc.
    *
    * On several MPI ranks each rank holds the material points of its cells and assembles them;
    * the classification, the spaces and their numbering, the residual and the Newton vectors are
@@ -253,96 +271,9 @@ namespace GelMPM
     spaces() const;
 
   private:
-    /** What a material point contributes, cached for a step. */
-    struct PointRecord
-    {
-      PointKind                  kind;
-      int                        piece;
-      double                     measure;     // V_n or A_n
-      dealii::Tensor<1, dim>     normal;      // unit N_n (surface points)
-      dealii::Point<dim>         x;           // the particle's location: x_n less the edge offset
-      dealii::Tensor<1, dim>     edge_offset; // PropertyLayout::edge_offset
-      dealii::Point<dim>         X0;          // X_0
-      dealii::Tensor<1, dim>     u_n;         // x_n - X_0
-      dealii::Tensor<1, dim>     du_last;     // x_n - x_{n-1}
-      dealii::Tensor<2, dim>     F_p;         // F_n F_0
-      const FloryRehnerGel<dim> *gel;         // the gel of the point's region
-      double                     mobility;    // m_n in the weak form's units
-      double                     mu_n;        // mu at the point, last converged step
-      double                     dmu_last;    // mu_n - mu_{n-1}
-      unsigned int               block;       // index into blocks
-      unsigned int               u_offset;    // into u shape arrays
-      unsigned int               mu_offset;   // into mu shape arrays
-      dealii::Tensor<2, dim>     projector;   // Pi (zero unless u is prescribed)
-      dealii::Tensor<1, dim>     u_bar;
-      // The adjoint Nitsche term's solvent, (g (x) N) : dP/dmu A, at the start of the step.
-      double                 adjoint_solvent_n = 0.;
-      dealii::Tensor<1, dim> traction;
-      double                 mu_bar = 0.;
-      double                 flux   = 0.;
-      bool                   assembled; // volume points and surface points of a piece
-    };
-
-    /** The points of one displacement cell. */
-    struct Block
-    {
-      unsigned int u_cell, mu_cell;
-      unsigned int first, end;
-    };
-
-    struct CopyData;
-    struct ScratchData;
-
-    /** The block's coefficients of @p solution into @p scratch (du, mu, n_u, n_mu). */
-    void
-    gather_block_coefficients(const Block                  &block,
-                              const dealii::Vector<double> &solution,
-                              ScratchData                  &scratch) const;
-
-    /**
-     * The point's shape functions and the fields at it (du, dF, mu, grad mu) from the block's
-     * coefficients in @p scratch.
-     */
-    void
-    evaluate_point_fields(const PointRecord &point, ScratchData &scratch) const;
-
     /** Add a block's local matrix to the tangent (the copier of the assembly). */
     void
-    add_to_matrix(const CopyData &copy);
-
-    /**
-     * The steps of setup(), in order. Classify the cells of the step from the cells that hold
-     * volume points and rebuild the extended spaces; throws std::runtime_error if a point has
-     * left the background grid. Returns whether the classification differs from the one the
-     * sparsity pattern was built for.
-     */
-    bool
-    classify_cells(const dealii::Particles::ParticleHandler<dim> &particle_handler);
-
-    /** The record of @p particle with the state its properties hold (no cell, no offsets yet). */
-    PointRecord
-    unpack_point(const dealii::Particles::ParticleAccessor<dim> &particle) const;
-
-    /**
-     * The displacement cell whose block the point @p r joins; throws std::runtime_error for a
-     * surface point next to no active cell.
-     */
-    unsigned int
-    cell_of_point(const PointRecord &r) const;
-
-    /**
-     * Order the records @p unsorted (of the particles @p its) by their @p cells into the blocks
-     * of assembly, and give each its offsets into the shape arrays (which are sized here).
-     */
-    void
-    group_points(
-      const std::vector<PointRecord> &unsorted,
-      const std::vector<typename dealii::Particles::ParticleHandler<dim>::particle_iterator> &its,
-      const std::vector<unsigned int> &cells);
-
-    /** The values and gradients of the extended shape functions at every point. */
-    void
-    evaluate_shape_functions();
+    add_to_matrix(const AssemblyCopy &copy);
 
     /** The sparsity pattern of the step's tangent, and the matrix and residual on it. */
     void
@@ -355,112 +286,58 @@ namespace GelMPM
     std::pair<dealii::IndexSet, dealii::IndexSet>
     owned_and_relevant_dofs() const;
 
-    /** The unknowns (u interleaved, then mu), sorted, that the points of @p block couple. */
+    /** The block's local residual (and tangent) from the terms at its points. */
     void
-    unknowns_of_block(const Block &block, std::vector<dealii::types::global_dof_index> &dofs) const;
-
-    /**
-     * The L2 projection over the volume points onto the displacement (@p displacement) or the
-     * chemical potential basis of the @p n_components point values @p value(r, component):
-     * per component, the coefficients c of M c = b, M_ij = sum_p V_p N_i N_j,
-     * b_i = sum_p V_p N_i value_p. Returned interleaved (component fastest).
-     */
-    std::vector<double>
-    project_point_values(
-      const bool                                                      displacement,
-      const unsigned int                                              n_components,
-      const std::function<double(const PointRecord &, unsigned int)> &value) const;
-
-    void
-    assemble_block(const Block                  &block,
+    assemble_block(const PointBlock             &block,
                    const dealii::Vector<double> &solution,
                    const double                  dt,
                    const bool                    with_matrix,
-                   ScratchData                  &scratch,
-                   CopyData                     &copy) const;
+                   AssemblyScratch<dim>         &scratch,
+                   AssemblyCopy                 &copy) const;
 
-    /** du, Delta F = I + grad_n du and mu at the point @p r for the unknowns @p solution. */
+    /** The surface terms at a surface point of a piece, in their order (surface_terms). */
     void
-    fields_at_point(const PointRecord            &r,
-                    const dealii::Vector<double> &solution,
-                    dealii::Tensor<1, dim>       &du,
-                    dealii::Tensor<2, dim>       &delta_F,
-                    double                       &mu) const;
+    add_surface_point(const PointRecord<dim> &point,
+                      const double            dt,
+                      const bool              with_matrix,
+                      AssemblyScratch<dim>   &scratch,
+                      AssemblyCopy           &copy) const;
 
     /** The message of a non-physical state at @p point: where, what kind, which piece and cell. */
     std::string
-    describe_failure(const NonPhysicalState &error,
-                     const PointRecord      &point,
-                     const ScratchData      &scratch,
-                     const unsigned int      u_cell) const;
+    describe_failure(const NonPhysicalState     &error,
+                     const PointRecord<dim>     &point,
+                     const AssemblyScratch<dim> &scratch,
+                     const unsigned int          u_cell) const;
 
-    void
-    add_volume_point(const PointRecord &point,
-                     const double       dt,
-                     const bool         with_matrix,
-                     ScratchData       &scratch,
-                     CopyData          &copy) const;
+    const MaterialRegions<dim> &materials;
+    BoundaryConditions<dim>    &boundary_conditions;
+    const NitscheSettings      &nitsche;
+    DiscreteSpaces<dim>        &spaces_;
+    const MPI_Comm              communicator;
 
-    void
-    add_surface_point(const PointRecord &point,
-                      const double       dt,
-                      const bool         with_matrix,
-                      ScratchData       &scratch,
-                      CopyData          &copy) const;
+    PointCache<dim>      cache;
+    PointProjection<dim> projection;
 
-    /**
-     * The symmetric Nitsche terms of a displacement condition Pi (u - ubar) = 0 with the
-     * violation @p g = Pi (u - ubar) and penalty @p beta at a surface point (prescribed pieces
-     * and active contact).
-     */
-    void
-    add_displacement_nitsche(const PointRecord            &point,
-                             const dealii::Tensor<2, dim> &Pi,
-                             const dealii::Tensor<1, dim> &g,
-                             const double                  beta,
-                             const bool                    with_matrix,
-                             ScratchData                  &scratch,
-                             CopyData                     &copy) const;
+    // The terms of the weak form: one at volume points, the others at surface points in the
+    // order of surface_terms.
+    VolumeTermAssembler<dim>                         volume_term;
+    TractionAssembler<dim>                           traction;
+    DisplacementNitscheAssembler<dim>                displacement_nitsche;
+    PlaneContactAssembler<dim>                       plane_contact;
+    ChemicalPotentialNitscheAssembler<dim>           chemical_potential_nitsche;
+    SolventFluxAssembler<dim>                        solvent_flux;
+    const std::array<const PointAssembler<dim> *, 5> surface_terms;
 
-    /** Whether the grid side of direction @p axis, lower (@p sign -1) or upper (+1), is a
-     * contact plane. */
-    bool
-    on_contact_plane(const unsigned int axis, const double sign) const;
-
-    /** The contact terms of a surface point of a free piece (ContactSettings). */
-    void
-    add_plane_contact(const PointRecord &point,
-                      const bool         with_matrix,
-                      ScratchData       &scratch,
-                      CopyData          &copy) const;
-
-    const MaterialRegions<dim>         &materials;
-    BoundaryConditions<dim>            &boundary_conditions;
-    const NitscheSettings              &nitsche;
-    DiscreteSpaces<dim>                &spaces_;
-    const MPI_Comm                      communicator;
-    ContactSettings                     contact;
-    std::vector<ContactSettings::Plane> contact_planes;
-
-    std::vector<PointRecord>                                                         points;
-    std::vector<typename dealii::Particles::ParticleHandler<dim>::particle_iterator> particles;
-    std::vector<Block>                                                               blocks;
-    std::vector<double>                 u_values, mu_values;
-    std::vector<dealii::Tensor<1, dim>> u_gradients, mu_gradients;
-    unsigned int                        n_active_cells_ = 0;
-    // The classification (cells with volume points) of this step, and the one the sparsity
+    // The classification (cells with volume points) and the cells' holders the sparsity
     // pattern was built for.
-    std::vector<bool> classification, pattern_classification;
-    // The rank that holds the volume points of each active cell (invalid for the others).
-    std::vector<unsigned int> cell_holder, pattern_holder;
+    std::vector<bool>         pattern_classification;
+    std::vector<unsigned int> pattern_holder;
     // On several ranks: the cells of this rank's blocks when the pattern was built.
     std::vector<unsigned int> pattern_block_cells;
 
     // Whether add_to_matrix() may write into the rows directly (one rank, sorted columns).
     bool rows_are_local_and_sorted = false;
-    // The sparsity of the mass matrices of project_point_values() (mu, displacement), built on
-    // first use after each new pattern.
-    mutable std::array<std::unique_ptr<dealii::SparsityPattern>, 2> projection_patterns;
   };
 } // namespace GelMPM
 

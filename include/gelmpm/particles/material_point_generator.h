@@ -19,7 +19,7 @@ namespace GelMPM
    * Volume points: n^dim per background cell at the centres of the n^dim sub-cells that lie inside
    * the body (boxes, level set), each with V_0 = the sub-cell volume (area per unit thickness in
    * 2D); for a body from a mesh, the Gauss points of its cells with V_0 = JxW, at least n per
-   * direction and cell and no farther apart than about h/n (Geometry::mesh_volume_elements()).
+   * direction and cell and no farther apart than about h/n (MeshBody::volume_elements()).
    * Surface points: one per boundary element of length at most h/n_s
    * (Geometry::surface_elements()), with N_0 A_0, the boundary piece that selects it, and the
    * kind that follows from that piece's conditions.

@@ -1,0 +1,59 @@
+#ifndef gelmpm_assembly_displacement_nitsche_h
+#define gelmpm_assembly_displacement_nitsche_h
+
+#include <gelmpm/assembly/point_assembler.h>
+
+namespace GelMPM
+{
+  /**
+   * The symmetric Nitsche terms of a displacement condition Pi (u - ubar) = 0 at a surface
+   * point, with the violation @p g = Pi (u - ubar), penalty @p beta and symmetry @p symmetry (s):
+   * the u-lines of the paper's eq. (32) (penalty, symmetry term) with the consistency term
+   * -Pi (P_n N) . w of the boundary integral of eq. (26), and the mu-line's symmetry term
+   * -s (g (x) N) : dP_n/dmu q:
+   *   R_u[w]  += A_s [ beta g . w - Pi(P_n N) . w - s W : A_n : grad_n w ],  W = g (x) N,
+   *   R_mu[q] -= s A_s (W : dP_n/dmu) q.
+   * The exact tangent includes the third derivative of the energy contracted with W (a central
+   * difference of A_n along W), so that it is the Jacobian of the residual. Shared by the
+   * prescribed displacements (DisplacementNitscheAssembler) and the Nitsche variant of plane
+   * contact (PlaneContactAssembler: a roller while active).
+   */
+  template <int dim>
+  void
+  add_displacement_nitsche(const PointRecord<dim>       &point,
+                           const dealii::Tensor<2, dim> &Pi,
+                           const dealii::Tensor<1, dim> &g,
+                           const double                  beta,
+                           const double                  symmetry,
+                           const bool                    with_matrix,
+                           AssemblyScratch<dim>         &scratch,
+                           AssemblyCopy                 &copy);
+
+
+  /**
+   * @brief The Nitsche terms of a prescribed displacement (paper eq. (32), u-lines, and the
+   * mu-line's u symmetry term) at the surface points of a piece whose displacement is given
+   * (fixed, normal or tangential: Pi = I, N_0 (x) N_0 or I - N_0 (x) N_0, PointRecord::projector).
+   *
+   * add_displacement_nitsche() with g = Pi (u_n + du - ubar) and beta_u = gamma_u G / h_u, and
+   * the solvent of the u symmetry term at the start of the step subtracted,
+   *   R_mu[q] += s A_s ((g_n (x) N) : dP_n/dmu)|_(t_n) q   (PointRecord::adjoint_solvent_n),
+   * as the volume points subtract J_n: otherwise the violation g left by every step would add
+   * solvent again at the next (doc/method.md).
+   */
+  template <int dim>
+  class DisplacementNitscheAssembler final : public SurfaceTermAssembler<dim>
+  {
+  public:
+    using SurfaceTermAssembler<dim>::SurfaceTermAssembler;
+
+    void
+    assemble(const PointRecord<dim> &point,
+             const double            dt,
+             const bool              with_matrix,
+             AssemblyScratch<dim>   &scratch,
+             AssemblyCopy           &copy) const override;
+  };
+} // namespace GelMPM
+
+#endif

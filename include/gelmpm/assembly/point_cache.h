@@ -1,0 +1,251 @@
+#ifndef gelmpm_assembly_point_cache_h
+#define gelmpm_assembly_point_cache_h
+
+#include <gelmpm/assembly/discretisation.h>
+#include <gelmpm/material/flory_rehner_gel.h>
+#include <gelmpm/particles/property_layout.h>
+#include <gelmpm/scene/boundary_conditions.h>
+#include <gelmpm/scene/material_regions.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/base/types.h>
+#include <deal.II/lac/vector.h>
+#include <deal.II/particles/particle_handler.h>
+
+#include <vector>
+
+namespace GelMPM
+{
+  /** The outer product a (x) b. */
+  template <int dim>
+  inline dealii::Tensor<2, dim>
+  outer(const dealii::Tensor<1, dim> &a, const dealii::Tensor<1, dim> &b)
+  {
+    dealii::Tensor<2, dim> t;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        t[i][j] = a[i] * b[j];
+    return t;
+  }
+
+
+  /**
+   * @brief What a material point contributes to the step's system, cached for the step: its
+   * kind and piece, its state at t_n, its boundary data and where its shape-function values lie
+   * in the PointCache's arrays.
+   */
+  template <int dim>
+  struct PointRecord
+  {
+    PointKind                  kind;
+    int                        piece;
+    double                     measure;     // V_n or A_n
+    dealii::Tensor<1, dim>     normal;      // unit N_n (surface points)
+    dealii::Point<dim>         x;           // the particle's location: x_n less the edge offset
+    dealii::Tensor<1, dim>     edge_offset; // PropertyLayout::edge_offset
+    dealii::Point<dim>         X0;          // X_0
+    dealii::Tensor<1, dim>     u_n;         // x_n - X_0
+    dealii::Tensor<1, dim>     du_last;     // x_n - x_{n-1}
+    dealii::Tensor<2, dim>     F_p;         // F_n F_0
+    const FloryRehnerGel<dim> *gel;         // the gel of the point's region
+    double                     mobility;    // m_n in the weak form's units
+    double                     mu_n;        // mu at the point, last converged step
+    double                     dmu_last;    // mu_n - mu_{n-1}
+    unsigned int               block;       // index into blocks
+    unsigned int               u_offset;    // into u shape arrays
+    unsigned int               mu_offset;   // into mu shape arrays
+    dealii::Tensor<2, dim>     projector;   // Pi (zero unless u is prescribed)
+    dealii::Tensor<1, dim>     u_bar;
+    // The adjoint Nitsche term's solvent, (g (x) N) : dP/dmu A, at the start of the step.
+    double                 adjoint_solvent_n = 0.;
+    dealii::Tensor<1, dim> traction;
+    double                 mu_bar = 0.;
+    double                 flux   = 0.;
+    bool                   assembled; // volume points and surface points of a piece
+  };
+
+
+  /** The points of one displacement cell: one block of assembly. */
+  struct PointBlock
+  {
+    unsigned int u_cell, mu_cell;
+    unsigned int first, end;
+  };
+
+
+  /**
+   * @brief The per-step cache of material-point data (doc/architecture.md, "A per-step cache of
+   * material-point data"): every point's record grouped by cell into blocks, and the values and
+   * gradients of the extended shape functions at every point, in flat arrays.
+   *
+   * gather() is the sequence of named steps that builds it at the start of a step:
+   * classify_cells() (the cells with volume points, and the extended spaces on them),
+   * unpack_point(), cell_of_point(), group_points() and evaluate_shape_functions(). Points sit
+   * at x_n throughout a step, so nothing here changes over its Newton iterations but the
+   * boundary data of the records (MixedSystem::set_boundary_values()).
+   *
+   * On several ranks each rank caches its own points; the classification and the holder of
+   * every active cell are the same on every rank (one all-reduce).
+   */
+  template <int dim>
+  class PointCache
+  {
+  public:
+    using particle_iterator = typename dealii::Particles::ParticleHandler<dim>::particle_iterator;
+
+    PointCache(const MaterialRegions<dim>    &materials,
+               const BoundaryConditions<dim> &boundary_conditions,
+               DiscreteSpaces<dim>           &spaces,
+               const MPI_Comm                 communicator);
+
+    /**
+     * Gather the points of @p particle_handler: classify the cells and rebuild the extended
+     * spaces, unpack and group the points, evaluate the shape functions. Throws
+     * std::runtime_error (on every rank) if a point has left the background grid or a surface
+     * point is next to no active cell.
+     */
+    void
+    gather(dealii::Particles::ParticleHandler<dim> &particle_handler);
+
+    /** The records, grouped by block. */
+    const std::vector<PointRecord<dim>> &
+    points() const
+    {
+      return points_;
+    }
+
+    /** The records, for the boundary data of a step. */
+    std::vector<PointRecord<dim>> &
+    points()
+    {
+      return points_;
+    }
+
+    /** The particle of record @p p (to update it at the end of the step). */
+    particle_iterator
+    particle(const unsigned int p) const
+    {
+      return particles_[p];
+    }
+
+    const std::vector<PointBlock> &
+    blocks() const
+    {
+      return blocks_;
+    }
+
+    const double *
+    u_values_at(const PointRecord<dim> &r) const
+    {
+      return &u_values[r.u_offset];
+    }
+
+    const dealii::Tensor<1, dim> *
+    u_gradients_at(const PointRecord<dim> &r) const
+    {
+      return &u_gradients[r.u_offset];
+    }
+
+    const double *
+    mu_values_at(const PointRecord<dim> &r) const
+    {
+      return &mu_values[r.mu_offset];
+    }
+
+    const dealii::Tensor<1, dim> *
+    mu_gradients_at(const PointRecord<dim> &r) const
+    {
+      return &mu_gradients[r.mu_offset];
+    }
+
+    /** Which displacement cells hold volume points in this step. */
+    const std::vector<bool> &
+    classification() const
+    {
+      return classification_;
+    }
+
+    /** The rank that holds the volume points of each active cell (invalid for the others). */
+    const std::vector<unsigned int> &
+    cell_holder() const
+    {
+      return cell_holder_;
+    }
+
+    /** Displacement cells that hold volume points in this step. */
+    unsigned int
+    n_active_cells() const
+    {
+      return n_active_cells_;
+    }
+
+    /** The unknowns (u interleaved, then mu), sorted, that the points of @p block couple. */
+    void
+    unknowns_of_block(const PointBlock                             &block,
+                      std::vector<dealii::types::global_dof_index> &dofs) const;
+
+    /** The fields at a point for the unknowns of a Newton iterate. */
+    struct Fields
+    {
+      /** The displacement increment du. */
+      dealii::Tensor<1, dim> du;
+      /** Delta F = I + grad_n du. */
+      dealii::Tensor<2, dim> delta_F;
+      double                 mu;
+    };
+
+    /** du, Delta F and mu at the point @p r for the unknowns @p solution. */
+    Fields
+    fields_at(const PointRecord<dim> &r, const dealii::Vector<double> &solution) const;
+
+  private:
+    /**
+     * Classify the cells of the step from the cells that hold volume points and rebuild the
+     * extended spaces; throws std::runtime_error if a point has left the background grid.
+     */
+    void
+    classify_cells(const dealii::Particles::ParticleHandler<dim> &particle_handler);
+
+    /** The record of @p particle with the state its properties hold (no cell, no offsets yet). */
+    PointRecord<dim>
+    unpack_point(const dealii::Particles::ParticleAccessor<dim> &particle) const;
+
+    /**
+     * The displacement cell whose block the point @p r joins; throws std::runtime_error for a
+     * surface point next to no active cell.
+     */
+    unsigned int
+    cell_of_point(const PointRecord<dim> &r) const;
+
+    /**
+     * Order the records @p unsorted (of the particles @p its) by their @p cells into the blocks
+     * of assembly, and give each its offsets into the shape arrays (which are sized here).
+     */
+    void
+    group_points(const std::vector<PointRecord<dim>>  &unsorted,
+                 const std::vector<particle_iterator> &its,
+                 const std::vector<unsigned int>      &cells);
+
+    /** The values and gradients of the extended shape functions at every point. */
+    void
+    evaluate_shape_functions();
+
+    const MaterialRegions<dim>    &materials;
+    const BoundaryConditions<dim> &boundary_conditions;
+    DiscreteSpaces<dim>           &spaces;
+    const MPI_Comm                 communicator;
+
+    std::vector<PointRecord<dim>>       points_;
+    std::vector<particle_iterator>      particles_;
+    std::vector<PointBlock>             blocks_;
+    std::vector<double>                 u_values, mu_values;
+    std::vector<dealii::Tensor<1, dim>> u_gradients, mu_gradients;
+    unsigned int                        n_active_cells_ = 0;
+    std::vector<bool>                   classification_;
+    std::vector<unsigned int>           cell_holder_;
+  };
+} // namespace GelMPM
+
+#endif

@@ -1,0 +1,332 @@
+#include <gelmpm/assembly/point_cache.h>
+#include <gelmpm/core/collective.h>
+#include <gelmpm/core/format_point.h>
+
+#include <deal.II/base/parallel.h>
+
+#include <algorithm>
+#include <numeric>
+#include <stdexcept>
+
+namespace GelMPM
+{
+  using dealii::Point;
+  using dealii::Tensor;
+
+  namespace
+  {
+    /** The projector onto the displacement components a piece constrains. */
+    template <int dim>
+    Tensor<2, dim>
+    constraint_projector(const typename BoundaryPiece<dim>::DisplacementCondition condition,
+                         const Tensor<1, dim>                                    &normal)
+    {
+      using Condition = typename BoundaryPiece<dim>::DisplacementCondition;
+      Tensor<2, dim> projector;
+      switch (condition)
+        {
+          case Condition::free:
+            break;
+          case Condition::fixed:
+            projector = dealii::unit_symmetric_tensor<dim>();
+            break;
+          case Condition::normal:
+            projector = outer(normal, normal);
+            break;
+          case Condition::tangential:
+            projector =
+              dealii::Tensor<2, dim>(dealii::unit_symmetric_tensor<dim>()) - outer(normal, normal);
+            break;
+        }
+      return projector;
+    }
+  } // namespace
+
+
+  template <int dim>
+  PointCache<dim>::PointCache(const MaterialRegions<dim>    &materials,
+                              const BoundaryConditions<dim> &boundary_conditions,
+                              DiscreteSpaces<dim>           &spaces,
+                              const MPI_Comm                 communicator)
+    : materials(materials)
+    , boundary_conditions(boundary_conditions)
+    , spaces(spaces)
+    , communicator(communicator)
+  {}
+
+
+  template <int dim>
+  void
+  PointCache<dim>::gather(dealii::Particles::ParticleHandler<dim> &particle_handler)
+  {
+    classify_cells(particle_handler);
+
+    std::vector<PointRecord<dim>>  unsorted;
+    std::vector<particle_iterator> its;
+    std::vector<unsigned int>      cells;
+    unsorted.reserve(particle_handler.n_locally_owned_particles());
+    std::string failure;
+    try
+      {
+        for (auto particle = particle_handler.begin(); particle != particle_handler.end();
+             ++particle)
+          {
+            unsorted.push_back(unpack_point(*particle));
+            its.push_back(particle);
+            cells.push_back(cell_of_point(unsorted.back()));
+          }
+      }
+    catch (const std::runtime_error &e)
+      {
+        failure = e.what();
+      }
+    Collective::agree_on_failure<std::runtime_error>(communicator, failure);
+    group_points(unsorted, its, cells);
+    evaluate_shape_functions();
+  }
+
+
+  template <int dim>
+  void
+  PointCache<dim>::classify_cells(const dealii::Particles::ParticleHandler<dim> &particle_handler)
+  {
+    // The cells that hold volume points decide the classification (§3.5).
+    const auto         &u_space = spaces.u_space();
+    std::vector<double> holder(u_space.n_cells(), 0.);
+    const double        this_rank = dealii::Utilities::MPI::this_mpi_process(communicator);
+    std::string         failure;
+    for (const auto &particle : particle_handler)
+      {
+        const Point<dim> x = particle.get_location();
+        unsigned int     cell;
+        try
+          {
+            cell = u_space.cell_containing(x);
+          }
+        catch (const std::out_of_range &)
+          {
+            failure = "a material point at " + format_point(x) +
+                      " has left the background grid; enlarge 'Background grid/Lower corner' "
+                      "and 'Upper corner'";
+            break;
+          }
+        if (kind_of(particle.get_properties()) == PointKind::volume)
+          holder[cell] = this_rank + 1.;
+      }
+    Collective::agree_on_failure<std::runtime_error>(communicator, failure);
+    // The volume points of a cell are all on the rank that owns the cell: the sum over the ranks
+    // is that rank + 1, and tells every rank the classification and who holds each active cell.
+    Collective::sum_in_place(communicator, holder);
+    std::vector<bool> has_material(u_space.n_cells(), false);
+    cell_holder_.assign(u_space.n_cells(), dealii::numbers::invalid_unsigned_int);
+    for (unsigned int c = 0; c < holder.size(); ++c)
+      if (holder[c] > 0.)
+        {
+          has_material[c] = true;
+          cell_holder_[c] = static_cast<unsigned int>(holder[c]) - 1;
+        }
+    spaces.reinit(has_material);
+    n_active_cells_ = std::count(has_material.begin(), has_material.end(), true);
+    classification_ = std::move(has_material);
+  }
+
+
+  template <int dim>
+  PointRecord<dim>
+  PointCache<dim>::unpack_point(const dealii::Particles::ParticleAccessor<dim> &particle) const
+  {
+    using Layout           = PropertyLayout<dim>;
+    const auto       props = particle.get_properties();
+    PointRecord<dim> r;
+    r.kind    = kind_of(props);
+    r.piece   = piece_of(props);
+    r.measure = props[Layout::measure_n];
+    r.x       = particle.get_location();
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        r.edge_offset[d] = props[Layout::edge_offset + d];
+        r.X0[d]          = props[Layout::position_0 + d];
+        r.u_n[d]         = r.x[d] + r.edge_offset[d] - r.X0[d];
+        r.du_last[d]     = props[Layout::increment + d];
+      }
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        r.F_p[i][j] = props[Layout::F + i * dim + j];
+    r.mu_n      = props[Layout::mu];
+    r.dmu_last  = props[Layout::mu_increment];
+    r.gel       = &materials[region_of_point<dim>(props)];
+    r.mobility  = r.gel->mobility(r.F_p);
+    r.assembled = (r.kind == PointKind::volume) || (r.piece >= 0);
+    if (r.kind != PointKind::volume)
+      {
+        Tensor<1, dim> na;
+        for (unsigned int d = 0; d < dim; ++d)
+          na[d] = props[Layout::normal_area_n + d];
+        r.measure = na.norm();
+        r.normal  = na / r.measure;
+        if (r.piece >= 0)
+          {
+            // A roller or a tangential constraint acts along the wall the surface started
+            // on: the directions come from the reference normal N_0 and apply to the total
+            // displacement. With the current normal N_n instead, a tilt of the surface by
+            // round-off turns part of the accumulated displacement into a lateral gap, and
+            // the correction tilts the surface further: a growing mode (doc/method.md).
+            Tensor<1, dim> na0;
+            for (unsigned int d = 0; d < dim; ++d)
+              na0[d] = props[Layout::normal_area_0 + d];
+            r.projector =
+              constraint_projector<dim>(boundary_conditions.piece(r.piece).displacement_condition,
+                                        na0 / na0.norm());
+          }
+      }
+    return r;
+  }
+
+
+  template <int dim>
+  unsigned int
+  PointCache<dim>::cell_of_point(const PointRecord<dim> &r) const
+  {
+    // A surface point may sit in a cell without volume points; it belongs to the active cell
+    // next to it, whose extended functions reach it.
+    const unsigned int cell = (r.kind == PointKind::volume) ? spaces.u_space().cell_containing(r.x)
+                                                            : spaces.active_u_cell_containing(r.x);
+    if (cell == dealii::numbers::invalid_unsigned_int)
+      throw std::runtime_error("the surface point at " + format_point(r.x) +
+                               " lies in no background cell that holds volume points; the "
+                               "surface has separated from the bulk");
+    return cell;
+  }
+
+
+  template <int dim>
+  void
+  PointCache<dim>::group_points(const std::vector<PointRecord<dim>>  &unsorted,
+                                const std::vector<particle_iterator> &its,
+                                const std::vector<unsigned int>      &cells)
+  {
+    // Stable: within a cell the points keep the handler's order, so that sums over them (and
+    // with them the results) do not depend on the sort.
+    std::vector<unsigned int> order(unsorted.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::stable_sort(order.begin(), order.end(), [&](const unsigned int a, const unsigned int b) {
+      return cells[a] < cells[b];
+    });
+
+    points_.clear();
+    particles_.clear();
+    blocks_.clear();
+    points_.reserve(order.size());
+    particles_.reserve(order.size());
+    unsigned int n_u_shapes = 0, n_mu_shapes = 0;
+    for (const unsigned int i : order)
+      {
+        const unsigned int cell = cells[i];
+        if (blocks_.empty() || blocks_.back().u_cell != cell)
+          blocks_.push_back(PointBlock{cell,
+                                       spaces.mu_cell_of(cell),
+                                       static_cast<unsigned int>(points_.size()),
+                                       0});
+        PointRecord<dim> r = unsorted[i];
+        r.block            = blocks_.size() - 1;
+        r.u_offset         = n_u_shapes;
+        r.mu_offset        = n_mu_shapes;
+        n_u_shapes += spaces.u().cell_dofs(cell).size();
+        n_mu_shapes += spaces.mu().cell_dofs(blocks_.back().mu_cell).size();
+        points_.push_back(r);
+        particles_.push_back(its[i]);
+        blocks_.back().end = points_.size();
+      }
+    u_values.resize(n_u_shapes);
+    u_gradients.resize(n_u_shapes);
+    mu_values.resize(n_mu_shapes);
+    mu_gradients.resize(n_mu_shapes);
+  }
+
+
+  template <int dim>
+  void
+  PointCache<dim>::evaluate_shape_functions()
+  {
+    // Every point writes its own ranges of the arrays: evaluate them in parallel.
+    dealii::parallel::apply_to_subranges(
+      0u,
+      static_cast<unsigned int>(points_.size()),
+      [this](const unsigned int begin, const unsigned int end) {
+        std::vector<double>         values, scratch_values;
+        std::vector<Tensor<1, dim>> gradients, scratch_gradients;
+        for (unsigned int p = begin; p < end; ++p)
+          {
+            const PointRecord<dim> &r = points_[p];
+            const PointBlock       &b = blocks_[r.block];
+            for (const auto *space : {&spaces.u(), &spaces.mu()})
+              {
+                const bool         is_u = (space == &spaces.u());
+                const unsigned int cell = is_u ? b.u_cell : b.mu_cell;
+                const unsigned int n    = space->cell_dofs(cell).size();
+                values.resize(n);
+                gradients.resize(n);
+                scratch_values.resize(space->space().functions_per_cell());
+                scratch_gradients.resize(space->space().functions_per_cell());
+                space->evaluate(r.x, cell, values, gradients, scratch_values, scratch_gradients);
+                const unsigned int offset = is_u ? r.u_offset : r.mu_offset;
+                std::copy(values.begin(),
+                          values.end(),
+                          (is_u ? u_values : mu_values).begin() + offset);
+                std::copy(gradients.begin(),
+                          gradients.end(),
+                          (is_u ? u_gradients : mu_gradients).begin() + offset);
+              }
+          }
+      },
+      256);
+  }
+
+
+  template <int dim>
+  void
+  PointCache<dim>::unknowns_of_block(const PointBlock                             &block,
+                                     std::vector<dealii::types::global_dof_index> &dofs) const
+  {
+    const unsigned int n_u = spaces.n_u_dofs();
+    dofs.clear();
+    for (const unsigned int i : spaces.u().cell_dofs(block.u_cell))
+      for (unsigned int c = 0; c < dim; ++c)
+        dofs.push_back(dim * i + c);
+    for (const unsigned int j : spaces.mu().cell_dofs(block.mu_cell))
+      dofs.push_back(n_u + j);
+    std::sort(dofs.begin(), dofs.end());
+  }
+
+
+  template <int dim>
+  typename PointCache<dim>::Fields
+  PointCache<dim>::fields_at(const PointRecord<dim>       &r,
+                             const dealii::Vector<double> &solution) const
+  {
+    Fields fields;
+    auto &[du, delta_F, mu]  = fields;
+    const PointBlock &b      = blocks_[r.block];
+    const auto       &u_dofs = spaces.u().cell_dofs(b.u_cell);
+    const auto       &m_dofs = spaces.mu().cell_dofs(b.mu_cell);
+    const auto        n_u    = spaces.n_u_dofs();
+    delta_F                  = dealii::unit_symmetric_tensor<dim>();
+    du                       = Tensor<1, dim>();
+    for (unsigned int a = 0; a < u_dofs.size(); ++a)
+      {
+        Tensor<1, dim> coefficient;
+        for (unsigned int c = 0; c < dim; ++c)
+          coefficient[c] = solution(dim * u_dofs[a] + c);
+        delta_F += outer(coefficient, u_gradients[r.u_offset + a]);
+        du += u_values[r.u_offset + a] * coefficient;
+      }
+    mu = 0.;
+    for (unsigned int j = 0; j < m_dofs.size(); ++j)
+      mu += mu_values[r.mu_offset + j] * solution(n_u + m_dofs[j]);
+    return fields;
+  }
+
+
+  template class PointCache<2>;
+  template class PointCache<3>;
+} // namespace GelMPM
