@@ -140,4 +140,5 @@ main(int argc, char **argv)
            << 100. * (scene_onset / limit_mpm - 1.) << " % from the limit" << std::endl;
   std::cout << "the scene's step control: onset within 2 % of the limit dt -> 0: "
             << (std::abs(scene_onset / limit_mpm - 1.) <= 0.02) << std::endl;
+  return 0;
 }
