@@ -20,8 +20,13 @@
 # The program is built by the test <module>/cases.build (a ctest fixture that every case of the
 # module requires, so that two cases never build it at the same time, and a compile error fails
 # that test and leaves the cases not run). ctest -R <module>/foo runs the build first.
+#
+# COSTS <case> <seconds>...: the measured run time of the longer cases, as ctest's COST, so that
+# with -j 2 they start first (ctest uses Testing/Temporary/CTestCostData.txt once a run has written
+# it; a fresh build directory has none). The program's build gets the sum of its cases' costs, so
+# that the builds whose cases take longest come first (a build always precedes its cases).
 function(gelmpm_pickup_cases)
-  cmake_parse_arguments(ARG "" "" "LIBRARIES" ${ARGN})
+  cmake_parse_arguments(ARG "" "" "LIBRARIES;COSTS" ${ARGN})
   get_filename_component(_module ${CMAKE_CURRENT_SOURCE_DIR} NAME)
   string(TOLOWER ${CMAKE_BUILD_TYPE} _suffix)
   set(_program ${_module}.cases)
@@ -65,9 +70,9 @@ function(gelmpm_pickup_cases)
   endforeach()
   # A case's main() takes (argc, argv) or nothing.
   string(APPEND _text "namespace\n{\n"
-                      "  int\n  run_case(int (*case_main)(int, char **), int argc, char **argv)\n"
+                      "  [[maybe_unused]] int\n  run_case(int (*case_main)(int, char **), int argc, char **argv)\n"
                       "  {\n    return case_main(argc, argv);\n  }\n\n"
-                      "  int\n  run_case(int (*case_main)(), int, char **)\n"
+                      "  [[maybe_unused]] int\n  run_case(int (*case_main)(), int, char **)\n"
                       "  {\n    return case_main();\n  }\n} // namespace\n\n")
   string(APPEND _text "int\nmain(int argc, char **argv)\n{\n")
   foreach(_case ${_cases})
@@ -131,4 +136,15 @@ function(gelmpm_pickup_cases)
     set_tests_properties(${_test} PROPERTIES LABELS ${_module} TIMEOUT 600
                          FIXTURES_REQUIRED ${_module}_cases)
   endforeach()
+  set(_total_cost 10)
+  set(_costs ${ARG_COSTS})
+  while(_costs)
+    list(POP_FRONT _costs _case _seconds)
+    if(NOT _case IN_LIST _cases)
+      message(FATAL_ERROR "COSTS names ${_case}, which is not a case of tests/${_module}")
+    endif()
+    set_tests_properties(${_module}/${_case}.${_suffix} PROPERTIES COST ${_seconds})
+    math(EXPR _total_cost "${_total_cost} + ${_seconds}")
+  endwhile()
+  set_tests_properties(${_module}/cases.build PROPERTIES COST ${_total_cost})
 endfunction()
