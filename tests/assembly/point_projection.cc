@@ -93,4 +93,5 @@ main(int argc, char **argv)
             << std::endl;
   if (!(u_error < 1e-10 && mu_error < 1e-10))
     std::cout << "  errors " << u_error << ", " << mu_error << std::endl;
+  return 0;
 }

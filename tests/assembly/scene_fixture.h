@@ -2,6 +2,9 @@
 // assembly tests: Q2-Q2SD on a 24 x 24 grid of [-1, 2]^2, a cut box [0, 1.3] x [0, 1.1], pieces
 // with fixed, normal, tangential and free displacement, prescribed mu and flux, time-dependent
 // values. It is a GelMPM::Scene, built as the simulator builds one; only the text is the test's.
+#ifndef gelmpm_tests_scene_fixture_h
+#define gelmpm_tests_scene_fixture_h
+
 #include <gelmpm/simulator/scene.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -100,3 +103,5 @@ struct SceneFixture : private scene_fixture::Parameters, public GelMPM::Scene<2>
     system->set_boundary_values(0.5, 0.);
   }
 };
+
+#endif

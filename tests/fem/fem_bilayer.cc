@@ -130,4 +130,5 @@ main(int argc, char **argv)
   std::cout << "Timoshenko curvature " << std::setprecision(4) << reference
             << "; FE 40 x 4 within 1 %: " << (std::abs(deviation) < 0.01) << " (" << std::fixed
             << std::setprecision(1) << 100. * deviation << " %)" << std::endl;
+  return 0;
 }

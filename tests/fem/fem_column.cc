@@ -194,4 +194,5 @@ main(int argc, char **argv)
         std::cout << "  (onsets " << std::setprecision(8) << onsets[0] << ", " << onsets[1] << ")"
                   << std::endl;
     }
+  return 0;
 }

@@ -153,4 +153,5 @@ main(int argc, char **argv)
   if (!(damped.result.completed && damped.last.deformation.max_stretch_ratio > 3.))
     std::cout << "  (depth " << -damped.last.punch_displacement << ", stretch ratio "
               << damped.last.deformation.max_stretch_ratio << ")" << std::endl;
+  return 0;
 }

@@ -118,4 +118,5 @@ main(int argc, char **argv)
     std::cout << "  (" << std::scientific << relative << ")" << std::defaultfloat << std::endl;
   std::cout << "equilibrium Delta h/h_0: " << std::fixed << std::setprecision(4)
             << drained.dh.back() << " (analytic " << equilibrium << ")" << std::endl;
+  return 0;
 }

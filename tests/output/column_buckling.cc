@@ -69,4 +69,5 @@ main(int argc, char **argv)
             << (s.at("n_pos").back() == s.at("n_dofs_u").back() &&
                 s.at("n_neg").back() == s.at("n_dofs_mu").back() && s.at("n_zero").back() == 0.)
             << std::endl;
+  return 0;
 }

@@ -112,4 +112,5 @@ main(int argc, char **argv)
             << std::endl;
   std::cout << "the mode sways: |u_x| at the top above 10 x at the bottom: "
             << (ux_top > 10. * ux_bottom) << std::endl;
+  return 0;
 }

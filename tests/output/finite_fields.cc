@@ -59,4 +59,5 @@ main(int argc, char **argv)
     }
   std::cout << "point-data arrays read: " << (arrays > 0) << std::endl;
   std::cout << "every value finite: " << (non_finite == 0) << std::endl;
+  return 0;
 }

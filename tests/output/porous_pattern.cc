@@ -76,4 +76,5 @@ main(int argc, char **argv)
   if (one_event)
     std::cout << "  with mu on the holes -0.13 +- 0.01 (paper): "
               << (std::abs(events.at("mu_boundary")[0] + 0.13) <= 0.01) << std::endl;
+  return 0;
 }

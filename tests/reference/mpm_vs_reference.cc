@@ -66,4 +66,5 @@ main(int argc, char **argv)
             << (std::abs(slope - 0.5) <= 0.05) << std::endl;
   std::cout << "Delta h/h_0 at t = 2 tau_d: " << std::fixed << std::setprecision(3) << dh.back()
             << " (reference " << reference.thickness_change() << ")" << std::endl;
+  return 0;
 }

@@ -150,4 +150,5 @@ main()
               << (std::abs(late.thickness_change() - (late.stretch_at(0.) - 1.)) < 1e-8)
               << std::endl;
   }
+  return 0;
 }

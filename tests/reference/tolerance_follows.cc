@@ -82,4 +82,5 @@ main(int argc, char **argv)
   if (!follows)
     std::cout << "  (ratio " << ratio << ")" << std::endl;
   std::cout << "the tighter tolerance takes more steps: " << (b.steps > a.steps) << std::endl;
+  return 0;
 }

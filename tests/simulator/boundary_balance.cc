@@ -157,4 +157,5 @@ main(int argc, char **argv)
                   largest(run.statistics.at("solvent_imbalance")) <= 1e-4)
               << std::endl;
   }
+  return 0;
 }

@@ -135,4 +135,5 @@ main(int argc, char **argv)
             << (std::abs(skew.at("t_over_tau_d").back() - 0.01) < 1e-12) << std::endl;
   std::cout << "gamma_u = 1, skew-symmetric: displacement conditions hold to 1e-8: "
             << (largest(skew, "u_bc_error") < 1e-8) << std::endl;
+  return 0;
 }

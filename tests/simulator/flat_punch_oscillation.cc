@@ -58,4 +58,5 @@ main(int argc, char **argv)
   if (!(q2_q2 > 10. * q2_q2sd && q3_q2 > q2_q2sd && q2_q2sd < 0.1))
     std::cout << "  (Q2-Q2 " << q2_q2 << ", Q3-Q2 " << q3_q2 << ", Q2-Q2SD " << q2_q2sd << ")"
               << std::endl;
+  return 0;
 }

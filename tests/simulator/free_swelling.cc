@@ -96,4 +96,5 @@ main(int argc, char **argv)
   std::cout << "swelling: spread (J_max - J_min)/J below 1.5%: " << (spread < 0.015) << std::endl;
   if (std::abs(J_mean / J_exact - 1.) >= 1e-4 || spread >= 0.015)
     std::cout << "  (mean J = " << J_mean << ", spread = " << spread << ")" << std::endl;
+  return 0;
 }

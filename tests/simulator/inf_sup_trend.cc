@@ -64,4 +64,5 @@ main(int argc, char **argv)
   for (const auto &[name, b] : beta)
     if (!(std::abs(ratio("Q2-Q2SD") - 1.) < 0.05 && ratio("Q2-Q2") < 0.8 && ratio("Q3-Q2") < 0.8))
       std::cout << "  " << name << ": " << b.first << " -> " << b.second << std::endl;
+  return 0;
 }

@@ -92,4 +92,5 @@ main(int argc, char **argv)
             << std::endl;
   if (most != 0. || change > 1e-10)
     std::cout << "  (at most " << most << " iterations, change " << change << ")" << std::endl;
+  return 0;
 }

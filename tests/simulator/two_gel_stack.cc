@@ -72,4 +72,5 @@ main(int argc, char **argv)
             << (std::abs(found - expected) <= 1e-3 * expected) << std::endl;
   if (!(std::abs(found - expected) <= 1e-3 * expected))
     std::cout << "  (" << found << " against " << expected << ")" << std::endl;
+  return 0;
 }

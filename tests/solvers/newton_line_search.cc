@@ -98,4 +98,5 @@ main(int argc, char **argv)
     decreasing = decreasing && merit.history[k][0] < merit.history[k - 1][0];
   std::cout << "damped Newton ('merit') converges with a decreasing residual: "
             << (merit.converged && std::abs(x - 2.) < 1e-12 && decreasing) << std::endl;
+  return 0;
 }

@@ -105,4 +105,5 @@ main()
   // 4.
   std::cout << GelMPM::format_duration(8.44) << " | " << GelMPM::format_duration(42.4) << " | "
             << GelMPM::format_duration(187.) << " | " << GelMPM::format_duration(7500.) << '\n';
+  return 0;
 }

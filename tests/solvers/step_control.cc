@@ -314,4 +314,5 @@ main()
     std::cout << "noise sets a floor on the relative step until the estimate resolves the error: "
               << ok << std::endl;
   }
+  return 0;
 }

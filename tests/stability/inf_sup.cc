@@ -130,4 +130,5 @@ main(int argc, char **argv)
   const double singular = GelMPM::discrete_inf_sup_constant(saddle_point_matrix(A, B), n, M);
   std::cout << "a pressure mode that no displacement sees gives beta below 1e-6 of the above: "
             << (singular < 1e-6 * beta) << std::endl;
+  return 0;
 }
