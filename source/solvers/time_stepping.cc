@@ -79,6 +79,7 @@ namespace GelMPM
       "growth. The measured error against the reference follows it (doc/performance.md, "
       "'Error-controlled steps'). It does not act where a 'Step caps' interval applies (steps "
       "set by hand, e.g. over a loading ramp); combine it with 'Growth factor' = 2. "
+      "At least 1000 times 'Newton/Tolerance' (each step's solution is uncertain by about that). "
       "Material point scenes only; the "
       "body-fitted peer ignores it. 0: off.");
     prm.declare_entry("Error norm",
