@@ -23,10 +23,26 @@
 #include <iostream>
 #include <regex>
 #include <sstream>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace GelMPM
 {
+  namespace
+  {
+    /** The names of the files a run writes into its output directory (but gelmpm.lock). */
+    const std::regex &
+    earlier_output_names()
+    {
+      static const std::regex names(
+        "(particles|grid|mode)(-[0-9]{5}(\\.[0-9]{4})?\\.p?vtu|\\.pvd)(\\.tmp)?|"
+        "(statistics|stability|events)\\.csv|parameters\\.prm|original\\.prm|"
+        "checkpoint\\.bin(\\.tmp)?|surface_.+-[0-9]{5}\\.csv(\\.tmp)?");
+      return names;
+    }
+  } // namespace
+
+
   template <int dim>
   void
   Simulator<dim>::declare_parameters(dealii::ParameterHandler &prm, const SceneStructure &structure)
@@ -310,6 +326,35 @@ namespace GelMPM
                        "is '" + directory + "', which this user cannot write into (" +
                          std::strerror(errno) + ")",
                        "give the directory write permission, or give another directory");
+    // An earlier run's file that the run removes or replaces, but cannot: a directory in its
+    // place, or a file of another user where the sticky bit (/tmp) lets only its owner remove or
+    // rename it. The run would stop at its first write with exit status 1.
+    if (!fs::is_directory(directory, error))
+      return;
+    struct stat directory_status;
+    const bool  sticky = ::stat(directory.c_str(), &directory_status) == 0 &&
+                        (directory_status.st_mode & S_ISVTX) != 0 && ::geteuid() != 0 &&
+                        directory_status.st_uid != ::geteuid();
+    for (const auto &entry : fs::directory_iterator(directory, error))
+      {
+        const std::string name = entry.path().filename().string();
+        if (!std::regex_match(name, earlier_output_names()))
+          continue;
+        const std::string path = entry.path().string();
+        if (!entry.is_regular_file(error))
+          throw InputError("Output/Directory",
+                           "is '" + directory + "', which holds '" + name +
+                             "' that is not a file: the run cannot write its own '" + name +
+                             "' there",
+                           "remove '" + path + "', or give the run another directory");
+        struct stat file_status;
+        if (sticky && ::stat(path.c_str(), &file_status) == 0 && file_status.st_uid != ::geteuid())
+          throw InputError("Output/Directory",
+                           "is '" + directory + "', which holds '" + name +
+                             "' of another user, and its sticky bit lets only that user remove "
+                             "or replace it",
+                           "have '" + path + "' removed, or give the run another directory");
+      }
   }
 
 
@@ -390,12 +435,10 @@ namespace GelMPM
   {
     // Only the names this program writes: a particles-00042.vtu of a longer earlier run would
     // otherwise sit next to this run's series as if it belonged to it.
-    const std::regex ours("(particles|grid|mode)(-[0-9]{5}(\\.[0-9]{4})?\\.p?vtu|\\.pvd)(\\.tmp)?|"
-                          "(statistics|stability|events)\\.csv|parameters\\.prm|original\\.prm|"
-                          "checkpoint\\.bin(\\.tmp)?|surface_.+-[0-9]{5}\\.csv(\\.tmp)?");
-    std::error_code  error;
+    std::error_code error;
     for (const auto &entry : std::filesystem::directory_iterator(output_settings.directory, error))
-      if (entry.is_regular_file() && std::regex_match(entry.path().filename().string(), ours))
+      if (entry.is_regular_file() &&
+          std::regex_match(entry.path().filename().string(), earlier_output_names()))
         std::filesystem::remove(entry.path(), error);
   }
 

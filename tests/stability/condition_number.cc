@@ -83,8 +83,8 @@ namespace
     const double exact    = exact_condition(K);
     const double ratio    = estimate / exact;
     const bool   ok       = std::isfinite(estimate) && ratio >= 1. / 3. && ratio <= 1. + 1e-8;
-    std::cout << name << " n=" << K.m() << ": estimate / exact within [1/3, 1]: "
-              << (ok ? "yes" : "NO") << std::endl;
+    std::cout << name << " n=" << K.m()
+              << ": estimate / exact within [1/3, 1]: " << (ok ? "yes" : "NO") << std::endl;
     if (!ok)
       std::cout << "  estimate " << estimate << ", exact " << exact << std::endl;
     return ok;
