@@ -7,6 +7,7 @@
 #include <gelmpm/particles/point_location.h>
 #include <gelmpm/particles/point_serialization.h>
 #include <gelmpm/particles/property_layout.h>
+#include <gelmpm/simulator/rigid_motion.h>
 #include <gelmpm/simulator/simulator.h>
 
 #include <deal.II/base/mpi.h>
@@ -173,7 +174,7 @@ namespace GelMPM
       create_material_points();
       check_grid_resolves_body();
       check_boundary_values();
-      check_output_directory();
+      check_output_directory(resume);
     }
 
     std::ostringstream used;
@@ -210,6 +211,36 @@ namespace GelMPM
                     "restore the file, or run the scene from the start (without --resume)");
           }
       }
+    // Last: a scene with a mistake found above may leave its body free as well.
+    check_rigid_motions();
+  }
+
+
+  template <int dim>
+  void
+  Simulator<dim>::check_rigid_motions() const
+  {
+    const auto motions = unheld_rigid_motions(scene.particles,
+                                              scene.boundary_conditions,
+                                              scene.contact,
+                                              scene.grid.lower,
+                                              scene.grid.upper,
+                                              scene.communicator);
+    if (motions.empty())
+      return;
+    std::string list;
+    for (unsigned int i = 0; i < motions.size(); ++i)
+      list += (i == 0 ? "" : i + 1 == motions.size() ? " and " : ", ") + motions[i];
+    // The tangent is singular along them: the solver gives the body an arbitrary amount of
+    // them, made of round-off (a quarter square free on all sides ended its swelling 6 % of
+    // its size off its symmetric position, without a word).
+    throw InputError("Boundary conditions",
+                     "leave the body free in " + list +
+                       ": no piece prescribes the displacement along such a motion and no "
+                       "contact plane lies across it, so the tangent is singular and the solves "
+                       "move the body by an arbitrary amount of it made of round-off",
+                     "give the pieces on the body's planes of symmetry 'Displacement = normal', "
+                     "or hold a piece by 'Displacement = fixed'");
   }
 
 
@@ -294,7 +325,7 @@ namespace GelMPM
 
   template <int dim>
   void
-  Simulator<dim>::check_output_directory() const
+  Simulator<dim>::check_output_directory(const bool resume) const
   {
     namespace fs = std::filesystem;
     std::error_code error;
@@ -327,8 +358,9 @@ namespace GelMPM
                          std::strerror(errno) + ")",
                        "give the directory write permission, or give another directory");
     // An earlier run's file that the run removes or replaces, but cannot: a directory in its
-    // place, or a file of another user where the sticky bit (/tmp) lets only its owner remove or
-    // rename it. The run would stop at its first write with exit status 1.
+    // place (a device or a link is replaced; as checkpoint.bin --resume refuses it by name), or a
+    // file of another user where the sticky bit (/tmp) lets only its owner remove or rename it. The
+    // run would stop at its first write with exit status 1.
     if (!fs::is_directory(directory, error))
       return;
     struct stat directory_status;
@@ -338,13 +370,14 @@ namespace GelMPM
     for (const auto &entry : fs::directory_iterator(directory, error))
       {
         const std::string name = entry.path().filename().string();
-        if (!std::regex_match(name, earlier_output_names()))
+        // --resume reads checkpoint.bin, and refuses what is not one by name.
+        if (!std::regex_match(name, earlier_output_names()) || (resume && name == "checkpoint.bin"))
           continue;
         const std::string path = entry.path().string();
-        if (!entry.is_regular_file(error))
+        if (entry.is_directory(error))
           throw InputError("Output/Directory",
                            "is '" + directory + "', which holds '" + name +
-                             "' that is not a file: the run cannot write its own '" + name +
+                             "' that is a directory: the run cannot write its own '" + name +
                              "' there",
                            "remove '" + path + "', or give the run another directory");
         struct stat file_status;
