@@ -12,7 +12,8 @@ namespace GelMPM
 {
   namespace
   {
-    /** Eigenvalues and eigenvectors (columns of @p V) of the symmetric @p A, by Jacobi rotations. */
+    /** Eigenvalues and eigenvectors (columns of @p V) of the symmetric @p A, by Jacobi rotations.
+     */
     template <unsigned int n>
     void
     symmetric_eigen(std::array<std::array<double, n>, n> &A,
@@ -35,26 +36,26 @@ namespace GelMPM
                 if (A[p][q] == 0.)
                   continue;
                 const double theta = (A[q][q] - A[p][p]) / (2. * A[p][q]);
-                const double t     = (theta >= 0. ? 1. : -1.) /
-                                 (std::abs(theta) + std::sqrt(theta * theta + 1.));
+                const double t =
+                  (theta >= 0. ? 1. : -1.) / (std::abs(theta) + std::sqrt(theta * theta + 1.));
                 const double c = 1. / std::sqrt(t * t + 1.), s = t * c;
                 for (unsigned int k = 0; k < n; ++k)
                   {
                     const double a_kp = A[k][p], a_kq = A[k][q];
-                    A[k][p]           = c * a_kp - s * a_kq;
-                    A[k][q]           = s * a_kp + c * a_kq;
+                    A[k][p] = c * a_kp - s * a_kq;
+                    A[k][q] = s * a_kp + c * a_kq;
                   }
                 for (unsigned int k = 0; k < n; ++k)
                   {
                     const double a_pk = A[p][k], a_qk = A[q][k];
-                    A[p][k]           = c * a_pk - s * a_qk;
-                    A[q][k]           = s * a_pk + c * a_qk;
+                    A[p][k] = c * a_pk - s * a_qk;
+                    A[q][k] = s * a_pk + c * a_qk;
                   }
                 for (unsigned int k = 0; k < n; ++k)
                   {
                     const double v_kp = V[k][p], v_kq = V[k][q];
-                    V[k][p]           = c * v_kp - s * v_kq;
-                    V[k][q]           = s * v_kp + c * v_kq;
+                    V[k][p] = c * v_kp - s * v_kq;
+                    V[k][q] = s * v_kp + c * v_kq;
                   }
               }
         }
@@ -71,8 +72,8 @@ namespace GelMPM
                        const dealii::Point<dim>                      &grid_upper,
                        const MPI_Comm                                 communicator)
   {
-    using Layout                 = PropertyLayout<dim>;
-    using Condition              = typename BoundaryPiece<dim>::DisplacementCondition;
+    using Layout             = PropertyLayout<dim>;
+    using Condition          = typename BoundaryPiece<dim>::DisplacementCondition;
     constexpr unsigned int n = dim == 2 ? 3 : 6; // translations, then rotations
 
     // The body's centre and extent, from its volume points.
@@ -123,8 +124,8 @@ namespace GelMPM
           {
             // e_a x y
             const unsigned int b = (a + 1) % 3, c = (a + 2) % 3;
-            r[3 + a][b]          = -y[c];
-            r[3 + a][c]          = y[b];
+            r[3 + a][b] = -y[c];
+            r[3 + a][c] = y[b];
           }
       return r;
     };
@@ -139,8 +140,8 @@ namespace GelMPM
         for (unsigned int l = 0; l < n; ++l)
           M[k * n + l] += weight * ((projector * r[k]) * (projector * r[l]));
     };
-    const auto planes = contact.enabled() ? contact.planes(grid_lower, grid_upper) :
-                                            std::vector<ContactSettings::Plane>();
+    const auto planes     = contact.enabled() ? contact.planes(grid_lower, grid_upper)
+                                              : std::vector<ContactSettings::Plane>();
     double     total_area = 0.;
     for (const auto &p : particles)
       {
@@ -194,7 +195,7 @@ namespace GelMPM
     // A held motion moves a constrained part of the boundary (of area at least a fraction of
     // the whole) by about its size: its eigenvalue is a sizeable fraction of the area. An
     // unheld one moves none: zero but for round-off.
-    const double threshold = 1e-10 * std::max(total_area, 1e-300);
+    const double                       threshold = 1e-10 * std::max(total_area, 1e-300);
     std::vector<std::array<double, n>> free;
     for (unsigned int k = 0; k < n; ++k)
       if (A[k][k] <= threshold)
@@ -205,7 +206,7 @@ namespace GelMPM
           free.push_back(v);
         }
     // Name each elementary motion that lies in the unheld space; what is left are combinations.
-    const char *axes = "xyz";
+    const char              *axes = "xyz";
     std::vector<std::string> names;
     unsigned int             named = 0;
     for (unsigned int k = 0; k < n; ++k)
@@ -219,8 +220,7 @@ namespace GelMPM
             if (k < dim)
               names.push_back(std::string("translation along ") + axes[k]);
             else
-              names.push_back(std::string("rotation about ") +
-                              (dim == 2 ? 'z' : axes[k - dim]));
+              names.push_back(std::string("rotation about ") + (dim == 2 ? 'z' : axes[k - dim]));
           }
       }
     if (free.size() > named)
