@@ -83,24 +83,7 @@ namespace GelMPM
     linear_solver.set_symmetric(scene.nitsche.symmetry > 0.);
     newton.parse_parameters(prm);
     time_stepping.parse_parameters(prm);
-    // The error estimate compares two Newton solutions, each uncertain by about the Newton
-    // tolerance: a local error below it needs steps of more than t, and 1000 times it steps of
-    // at least t / 1000 (the free-swelling test scene at 1e-8 against 1e-10 crept at steps of
-    // 1e-5 t: 33,000 steps to 0.1 tau_d; at 1e-300 every step was retaken twice and accepted as
-    // noise).
-    if (time_stepping.tolerance > 0. && time_stepping.tolerance < 1000. * newton.tolerance)
-      {
-        std::ostringstream problem, fix;
-        problem << "is " << time_stepping.tolerance << ", below 1000 times 'Newton/Tolerance' ("
-                << 1000. * newton.tolerance
-                << "): each step's solution is uncertain by about the Newton tolerance, so the "
-                   "error estimate cannot resolve such a local error unless every step is longer "
-                   "than a thousandth of the time elapsed";
-        fix << "give at least " << 1000. * newton.tolerance
-            << " (e.g. 1e-3), or 0 for no error control; or lower 'Newton/Tolerance' (at least "
-            << NewtonSettings::smallest_tolerance << ")";
-        throw InputError("Time stepping/Tolerance", problem.str(), fix.str());
-      }
+    time_stepping.check_resolvable(newton.tolerance, NewtonSettings::smallest_tolerance);
     observables.parse_parameters(prm, structure.boundary_pieces);
     balance.parse_parameters(prm, structure.boundary_pieces);
     stability.parse_parameters(prm);
