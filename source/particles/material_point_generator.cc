@@ -1,3 +1,4 @@
+#include <gelmpm/core/available_memory.h>
 #include <gelmpm/core/format_point.h>
 #include <gelmpm/core/input_error.h>
 #include <gelmpm/particles/material_point_generator.h>
@@ -177,20 +178,48 @@ namespace GelMPM
           }
         cells_inside += geometry.inside(centre) ? 1 : 0;
       }
-    const double points = cells_inside * std::pow(static_cast<double>(points_per_cell), dim);
-    const double physical =
-      static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
-    if (!(physical > 0.) || points * bytes_per_point <= physical)
+    const double points    = cells_inside * std::pow(static_cast<double>(points_per_cell), dim);
+    const double available = available_memory();
+    if (!(available > 0.))
+      return;
+    if (points * bytes_per_point > available)
+      {
+        std::ostringstream problem;
+        problem.precision(3);
+        problem << "is " << points_per_cell << ": the body's " << cells_inside
+                << " cells would hold about " << points << " volume points, which need at least "
+                << points * bytes_per_point / 1e9 << " GB of memory, more than the "
+                << available / 1e9 << " GB this machine has available";
+        throw InputError("Material points/Points per cell",
+                         problem.str(),
+                         "give fewer points per cell, or fewer cells ('Background grid/Cells')");
+      }
+    // The whole run: the grid's cells, and per cell of the body its points, its rows of the
+    // tangent and their share of the factorisation. Measured peaks (Q2-Q2SD, 3 points per
+    // cell): 255-290 kB per body cell in 3D (the free-swelling cube with 216 to 2744 body cells;
+    // the factorisation's fill grows faster than the cells), 26 kB in 2D (2500 to 10000), and
+    // 0.8 kB per empty cell of a 3D grid. The share of the available memory leaves a margin for
+    // that growth and for the rest of the machine.
+    const double bytes_per_body_cell =
+      (dim == 2 ? 21e3 : 200e3) +
+      std::pow(static_cast<double>(points_per_cell), dim) * bytes_per_point;
+    const double bytes_per_cell = dim == 2 ? 300. : 800.;
+    const double estimate       = cells_inside * bytes_per_body_cell + n_cells * bytes_per_cell;
+    const double usable         = 0.8 * available;
+    if (estimate <= usable)
       return;
     std::ostringstream problem;
     problem.precision(3);
-    problem << "is " << points_per_cell << ": the body's " << cells_inside
-            << " cells would hold about " << points << " volume points, which need at least "
-            << points * bytes_per_point / 1e9 << " GB of memory, more than this machine's "
-            << physical / 1e9 << " GB";
-    throw InputError("Material points/Points per cell",
+    problem << "gives the body about " << cells_inside << " of the grid's " << double(n_cells)
+            << " cells, whose points, unknowns and factorised tangent need about " << estimate / 1e9
+            << " GB (about " << bytes_per_body_cell / 1e3
+            << " kB a cell of the body), more than 80 % of the " << available / 1e9
+            << " GB this machine has available";
+    throw InputError("Background grid/Cells",
                      problem.str(),
-                     "give fewer points per cell, or fewer cells ('Background grid/Cells')");
+                     "give fewer cells per direction, a smaller body or grid ('Geometry', "
+                     "'Background grid/Lower corner', 'Upper corner'), or fewer 'Material "
+                     "points/Points per cell'");
   }
 
 
@@ -280,7 +309,6 @@ namespace GelMPM
             n_sub *= n;
             n_cells *= grid.n_cells[d];
           }
-        check_point_memory(geometry, grid);
         bool in_boxes = false;
         for (unsigned int c = 0; c < n_cells; ++c)
           for (unsigned int s = 0; s < n_sub; ++s)

@@ -1,3 +1,4 @@
+#include <gelmpm/core/available_memory.h>
 #include <gelmpm/core/input_error.h>
 #include <gelmpm/core/parameters.h>
 #include <gelmpm/core/round_off.h>
@@ -69,14 +70,14 @@ namespace GelMPM
     double       n              = 1.;
     for (const double c : cells)
       n *= c;
-    const double physical =
-      static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
-    if (!(physical > 0.) || n * bytes_per_cell <= physical)
+    const double available = available_memory();
+    if (!(available > 0.) || n * bytes_per_cell <= available)
       return;
     std::ostringstream problem;
     problem.precision(3);
     problem << "asks for " << n << " cells, which need at least " << n * bytes_per_cell / 1e9
-            << " GB of memory, more than this machine's " << physical / 1e9 << " GB";
+            << " GB of memory, more than the " << available / 1e9
+            << " GB this machine has available";
     throw InputError("Background grid/Cells", problem.str(), "give fewer cells per direction");
   }
 

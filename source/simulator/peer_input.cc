@@ -46,6 +46,7 @@ namespace GelMPM
     regions.parse_parameters(prm, structure.material_regions, material);
     time_stepping.parse_parameters(prm);
     newton.parse_parameters(prm);
+    time_stepping.check_resolvable(newton.tolerance, NewtonSettings::smallest_tolerance);
     linear_solver.parse_parameters(prm);
     stability.parse_parameters(prm);
   }

@@ -51,6 +51,11 @@ namespace GelMPM
     // The spaces first: an odd cell count with subdivision is reported before point generation,
     // which may take long on a large grid.
     spaces = std::make_unique<DiscreteSpaces<dim>>(grid, discretisation);
+    // The run's memory from the grid and the body's cells, before any cell or point is made
+    // (also under --check): a body of boxes or a level set, whose cells are known from the
+    // grid alone.
+    if (geometry.source() != Geometry<dim>::Source::mesh)
+      generator.check_point_memory(geometry, grid);
     if (Collective::is_parallel(communicator))
       {
         auto distributed =

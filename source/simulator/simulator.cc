@@ -7,6 +7,7 @@
 #include <gelmpm/particles/point_location.h>
 #include <gelmpm/particles/point_serialization.h>
 #include <gelmpm/particles/property_layout.h>
+#include <gelmpm/simulator/rigid_motion.h>
 #include <gelmpm/simulator/simulator.h>
 
 #include <deal.II/base/mpi.h>
@@ -23,10 +24,26 @@
 #include <iostream>
 #include <regex>
 #include <sstream>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace GelMPM
 {
+  namespace
+  {
+    /** The names of the files a run writes into its output directory (but gelmpm.lock). */
+    const std::regex &
+    earlier_output_names()
+    {
+      static const std::regex names(
+        "(particles|grid|mode)(-[0-9]{5}(\\.[0-9]{4})?\\.p?vtu|\\.pvd)(\\.tmp)?|"
+        "(statistics|stability|events)\\.csv|parameters\\.prm|original\\.prm|"
+        "checkpoint\\.bin(\\.tmp)?|surface_.+-[0-9]{5}\\.csv(\\.tmp)?");
+      return names;
+    }
+  } // namespace
+
+
   template <int dim>
   void
   Simulator<dim>::declare_parameters(dealii::ParameterHandler &prm, const SceneStructure &structure)
@@ -66,6 +83,7 @@ namespace GelMPM
     linear_solver.set_symmetric(scene.nitsche.symmetry > 0.);
     newton.parse_parameters(prm);
     time_stepping.parse_parameters(prm);
+    time_stepping.check_resolvable(newton.tolerance, NewtonSettings::smallest_tolerance);
     observables.parse_parameters(prm, structure.boundary_pieces);
     balance.parse_parameters(prm, structure.boundary_pieces);
     stability.parse_parameters(prm);
@@ -139,7 +157,7 @@ namespace GelMPM
       create_material_points();
       check_grid_resolves_body();
       check_boundary_values();
-      check_output_directory();
+      check_output_directory(resume);
     }
 
     std::ostringstream used;
@@ -176,6 +194,36 @@ namespace GelMPM
                     "restore the file, or run the scene from the start (without --resume)");
           }
       }
+    // Last: a scene with a mistake found above may leave its body free as well.
+    check_rigid_motions();
+  }
+
+
+  template <int dim>
+  void
+  Simulator<dim>::check_rigid_motions() const
+  {
+    const auto motions = unheld_rigid_motions(scene.particles,
+                                              scene.boundary_conditions,
+                                              scene.contact,
+                                              scene.grid.lower,
+                                              scene.grid.upper,
+                                              scene.communicator);
+    if (motions.empty())
+      return;
+    std::string list;
+    for (unsigned int i = 0; i < motions.size(); ++i)
+      list += (i == 0 ? "" : i + 1 == motions.size() ? " and " : ", ") + motions[i];
+    // The tangent is singular along them: the solver gives the body an arbitrary amount of
+    // them, made of round-off (a quarter square free on all sides ended its swelling 6 % of
+    // its size off its symmetric position, without a word).
+    throw InputError("Boundary conditions",
+                     "leave the body free in " + list +
+                       ": no piece prescribes the displacement along such a motion and no "
+                       "contact plane lies across it, so the tangent is singular and the solves "
+                       "move the body by an arbitrary amount of it made of round-off",
+                     "give the pieces on the body's planes of symmetry 'Displacement = normal', "
+                     "or hold a piece by 'Displacement = fixed'");
   }
 
 
@@ -260,7 +308,7 @@ namespace GelMPM
 
   template <int dim>
   void
-  Simulator<dim>::check_output_directory() const
+  Simulator<dim>::check_output_directory(const bool resume) const
   {
     namespace fs = std::filesystem;
     std::error_code error;
@@ -292,6 +340,37 @@ namespace GelMPM
                        "is '" + directory + "', which this user cannot write into (" +
                          std::strerror(errno) + ")",
                        "give the directory write permission, or give another directory");
+    // An earlier run's file that the run removes or replaces, but cannot: a directory in its
+    // place (a device or a link is replaced; as checkpoint.bin --resume refuses it by name), or a
+    // file of another user where the sticky bit (/tmp) lets only its owner remove or rename it. The
+    // run would stop at its first write with exit status 1.
+    if (!fs::is_directory(directory, error))
+      return;
+    struct stat directory_status;
+    const bool  sticky = ::stat(directory.c_str(), &directory_status) == 0 &&
+                        (directory_status.st_mode & S_ISVTX) != 0 && ::geteuid() != 0 &&
+                        directory_status.st_uid != ::geteuid();
+    for (const auto &entry : fs::directory_iterator(directory, error))
+      {
+        const std::string name = entry.path().filename().string();
+        // --resume reads checkpoint.bin, and refuses what is not one by name.
+        if (!std::regex_match(name, earlier_output_names()) || (resume && name == "checkpoint.bin"))
+          continue;
+        const std::string path = entry.path().string();
+        if (entry.is_directory(error))
+          throw InputError("Output/Directory",
+                           "is '" + directory + "', which holds '" + name +
+                             "' that is a directory: the run cannot write its own '" + name +
+                             "' there",
+                           "remove '" + path + "', or give the run another directory");
+        struct stat file_status;
+        if (sticky && ::stat(path.c_str(), &file_status) == 0 && file_status.st_uid != ::geteuid())
+          throw InputError("Output/Directory",
+                           "is '" + directory + "', which holds '" + name +
+                             "' of another user, and its sticky bit lets only that user remove "
+                             "or replace it",
+                           "have '" + path + "' removed, or give the run another directory");
+      }
   }
 
 
@@ -372,12 +451,10 @@ namespace GelMPM
   {
     // Only the names this program writes: a particles-00042.vtu of a longer earlier run would
     // otherwise sit next to this run's series as if it belonged to it.
-    const std::regex ours("(particles|grid|mode)(-[0-9]{5}(\\.[0-9]{4})?\\.p?vtu|\\.pvd)(\\.tmp)?|"
-                          "(statistics|stability|events)\\.csv|parameters\\.prm|original\\.prm|"
-                          "checkpoint\\.bin(\\.tmp)?|surface_.+-[0-9]{5}\\.csv(\\.tmp)?");
-    std::error_code  error;
+    std::error_code error;
     for (const auto &entry : std::filesystem::directory_iterator(output_settings.directory, error))
-      if (entry.is_regular_file() && std::regex_match(entry.path().filename().string(), ours))
+      if (entry.is_regular_file() &&
+          std::regex_match(entry.path().filename().string(), earlier_output_names()))
         std::filesystem::remove(entry.path(), error);
   }
 
@@ -668,6 +745,8 @@ namespace GelMPM
             std::ostringstream message;
             message << "gelmpm: the run cannot converge beyond t/tau_d = " << current_time()
                     << "; results up to there are in " << output_settings.directory;
+            if (!loop->round_off_hint().empty())
+              message << " (" << loop->round_off_hint() << ")";
             pcout << message.str() << std::endl;
             pcerr << message.str() << std::endl;
             write_output();

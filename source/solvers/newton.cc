@@ -2,7 +2,9 @@
 #include <gelmpm/core/non_physical_state.h>
 #include <gelmpm/solvers/newton.h>
 
+#include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace GelMPM
 {
@@ -15,12 +17,14 @@ namespace GelMPM
                       dealii::Patterns::Integer(1),
                       "Newton iterations before a step counts as failed (and is retried with a "
                       "smaller step).");
-    prm.declare_entry("Tolerance",
-                      "1e-10",
-                      dealii::Patterns::Double(0.),
-                      "Both residual blocks must fall below this, relative to their natural "
-                      "scales: G |Omega_0|^((dim-1)/dim) for the displacement block and "
-                      "(k_BT/nu) |Omega_0| for the chemical-potential block.");
+    prm.declare_entry(
+      "Tolerance",
+      "1e-10",
+      dealii::Patterns::Double(0.),
+      "Both residual blocks must fall below this, relative to their natural "
+      "scales: G |Omega_0|^((dim-1)/dim) for the displacement block and "
+      "(k_BT/nu) |Omega_0| for the chemical-potential block. At least 1e-14 (below, "
+      "the residuals stop on round-off).");
     prm.declare_entry("Line search",
                       "physical",
                       dealii::Patterns::Selection("none|physical|merit"),
@@ -103,6 +107,44 @@ namespace GelMPM
             "Newton/Tolerance",
             "must lie strictly between 0 and 1",
             "use e.g. 1e-10");
+    // The scaled residual sums thousands of point terms, each rounded to 2.2e-16 of its size:
+    // converged states of the free-swelling test scene stop at 0.8-1.2e-14, and stiffer gels
+    // (smaller N nu) far above.
+    if (tolerance < smallest_tolerance)
+      {
+        std::ostringstream problem;
+        problem << "is " << tolerance << ", below " << smallest_tolerance
+                << " (45 times the double's precision 2.2e-16), where the scaled residuals stop "
+                   "on round-off: no Newton iteration can meet it";
+        throw InputError("Newton/Tolerance",
+                         problem.str(),
+                         "give at least 1e-14, e.g. the default 1e-10");
+      }
+  }
+
+
+  std::string
+  round_off_stall(const NewtonReport &report, const NewtonSettings &settings)
+  {
+    // The residuals at the start of the last iterations and at the end: a Newton iteration
+    // that has reached the round-off of its residual moves it no more than by a factor of a few.
+    constexpr unsigned int n_last = 4;
+    if (report.converged || report.history.size() + 1 < n_last)
+      return "";
+    std::vector<double> last = {std::max(report.residual_u, report.residual_mu)};
+    for (auto h = report.history.rbegin(); h != report.history.rend() && last.size() < n_last; ++h)
+      last.push_back(std::max((*h)[0], (*h)[1]));
+    const double lowest  = *std::min_element(last.begin(), last.end());
+    const double highest = *std::max_element(last.begin(), last.end());
+    if (!(lowest > settings.tolerance) || highest > 10. * lowest || highest > 1e-8)
+      return "";
+    std::ostringstream hint;
+    hint.precision(2);
+    hint << "Newton stalls at scaled residuals of " << report.residual_u << " (|R_u|) and "
+         << report.residual_mu
+         << " (|R_mu|), the round-off of this scene's residual, above 'Newton/Tolerance' = "
+         << settings.tolerance << ": give 'Newton/Tolerance' at least " << 10. * highest;
+    return hint.str();
   }
 
   NewtonReport

@@ -282,8 +282,10 @@ namespace GelMPM
   bool
   TimeLoop::attempt_failed(const NewtonReport &report, const double t_begin, const double step_dt)
   {
+    round_off_hint_ = round_off_stall(report, newton_settings);
     log << "    step " << control_.step() + 1 << " at t = " << t_begin << " with dt = " << step_dt
-        << " failed (" << report.failure << ")";
+        << " failed (" << report.failure << (round_off_hint_.empty() ? "" : "; " + round_off_hint_)
+        << ")";
     if (newton_settings.log_failures)
       {
         log << "\n      Newton: scaled |R_u|, |R_mu| at the start of each iteration, "
@@ -421,6 +423,13 @@ namespace GelMPM
   TimeLoop::failure() const
   {
     return failure_;
+  }
+
+
+  const std::string &
+  TimeLoop::round_off_hint() const
+  {
+    return round_off_hint_;
   }
 
 

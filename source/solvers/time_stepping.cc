@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 namespace GelMPM
 {
@@ -79,6 +80,7 @@ namespace GelMPM
       "growth. The measured error against the reference follows it (doc/performance.md, "
       "'Error-controlled steps'). It does not act where a 'Step caps' interval applies (steps "
       "set by hand, e.g. over a loading ramp); combine it with 'Growth factor' = 2. "
+      "At least 1000 times 'Newton/Tolerance' (each step's solution is uncertain by about that). "
       "Material point scenes only; the "
       "body-fitted peer ignores it. 0: off.");
     prm.declare_entry("Error norm",
@@ -229,6 +231,28 @@ namespace GelMPM
         stop_times.push_back(t);
       }
     std::sort(stop_times.begin(), stop_times.end());
+  }
+
+
+  void
+  TimeStepping::check_resolvable(const double newton_tolerance,
+                                 const double smallest_newton_tolerance) const
+  {
+    // A local error below 1000 times the Newton tolerance needs steps of at least t / 1000: the
+    // free-swelling test scene at 1e-8 against 1e-10 crept at steps of 1e-5 t (33,000 steps to
+    // 0.1 tau_d); at 1e-300 every step was retaken twice and accepted as noise.
+    if (!(tolerance > 0.) || tolerance >= 1000. * newton_tolerance)
+      return;
+    std::ostringstream problem, fix;
+    problem << "is " << tolerance << ", below 1000 times 'Newton/Tolerance' ("
+            << 1000. * newton_tolerance
+            << "): each step's solution is uncertain by about the Newton tolerance, so the "
+               "error estimate cannot resolve such a local error unless every step is longer "
+               "than a thousandth of the time elapsed";
+    fix << "give at least " << 1000. * newton_tolerance
+        << " (e.g. 1e-3), or 0 for no error control; or lower 'Newton/Tolerance' (at least "
+        << smallest_newton_tolerance << ")";
+    throw InputError("Time stepping/Tolerance", problem.str(), fix.str());
   }
 
 

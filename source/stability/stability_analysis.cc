@@ -108,7 +108,7 @@ namespace GelMPM
     prm.declare_entry("Condition number",
                       "false",
                       dealii::Patterns::Bool(),
-                      "After every converged step, LAPACK's estimate of the 1-norm condition "
+                      "After every converged step, an estimate of the 1-norm condition "
                       "number of the tangent (column condition_number). Dense: for grids with at "
                       "most 10000 unknowns in all (the Nitsche penalty study of doc/extremes.md).");
     prm.leave_subsection();

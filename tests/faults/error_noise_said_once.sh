@@ -1,10 +1,11 @@
-# A step error tolerance below what the points' integration noise allows ('Time stepping/
-# Tolerance = 1e-300', no step caps): every step exceeds it whatever its size and is accepted as
-# noise. The log says so once, at the first such step, and counts such steps in the summary,
-# instead of one line a step.
+# Steps whose error estimate the points' integration noise sets ('Time stepping/Tolerance = 1e-3',
+# no step caps, growth factor 2: from t = 34.8 tau_d 18 steps to 36 tau_d exceed it whatever their
+# size and are accepted as noise). The log says so once, at the first such step, and counts such
+# steps in the summary, instead of one line a step. (A tolerance that no step can meet, 1e-300,
+# is refused: tests/input_errors/step_tolerance_below_newton.)
 source "$(dirname "$0")/common.sh"
-"$gelmpm" "$scene" --set "Time stepping/Tolerance=1e-300" --set "Time stepping/Step caps=" \
-  --set "Time stepping/End time=0.002" >stdout 2>stderr
+"$gelmpm" "$scene" --set "Time stepping/Tolerance=1e-3" --set "Time stepping/Step caps=" \
+  --set "Time stepping/Growth factor=2" --set "Time stepping/End time=36" >stdout 2>stderr
 status=$?
 echo "exit status: $status"; cat stderr
 check $status "exit status $status, expected 0"

@@ -78,15 +78,17 @@ namespace GelMPM
                 const double                             mu_0,
                 dealii::Particles::ParticleHandler<dim> &particles) const;
 
+  public:
     /**
-     * Throw InputError ('Material points/Points per cell') if the volume points of a body given
-     * by boxes or a level set would need more than the machine's memory (estimated from the
-     * cells whose centre lies in the body), before any is made.
+     * Throw InputError if a body given by boxes or a level set needs more memory than the
+     * machine has available, estimated from the cells whose centre lies in the body: its volume
+     * points ('Material points/Points per cell'), or the whole run, grid, points, tangent and
+     * factorisation ('Background grid/Cells', above 80 % of the available memory). Needs no
+     * triangulation: Scene calls it before the grid is built (also under --check).
      */
     void
     check_point_memory(const Geometry<dim> &geometry, const BackgroundGrid<dim> &grid) const;
 
-  public:
     unsigned int points_per_cell         = 3;
     unsigned int surface_points_per_edge = 2;
   };

@@ -118,6 +118,9 @@ namespace GelMPM
     /** The scene's material points, and the counts and scales the run derives from them. */
     void
     create_material_points();
+    /** InputError if no boundary condition holds the body against a rigid motion. */
+    void
+    check_rigid_motions() const;
     /** InputError if the extended bases cannot be built on the initial configuration. */
     void
     check_grid_resolves_body();
@@ -134,7 +137,7 @@ namespace GelMPM
     volume_points_per_cell() const;
     /** InputError if the run would overwrite the scene file's own directory. */
     void
-    check_output_directory() const;
+    check_output_directory(bool resume) const;
     void
     open_statistics();
     /** Create the system and the output files; write the initial state (or resume). */

@@ -60,6 +60,9 @@ namespace GelMPM
      */
     double reuse_contraction = 1e-3;
 
+    /** The smallest 'Tolerance' accepted: below it the scaled residuals stop on round-off. */
+    static constexpr double smallest_tolerance = 1e-14;
+
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 
@@ -88,6 +91,16 @@ namespace GelMPM
     std::vector<std::array<double, 3>> history;
     std::string                        failure;
   };
+
+
+  /**
+   * When the failed Newton solve @p report stalled at the round-off of its residual (the last
+   * iterations' scaled residuals within a factor of 10 of each other, below 1e-8 and above the
+   * tolerance), a sentence that says so and names 'Newton/Tolerance' with a value that can be
+   * met; otherwise empty.
+   */
+  std::string
+  round_off_stall(const NewtonReport &report, const NewtonSettings &settings);
 
 
   /**

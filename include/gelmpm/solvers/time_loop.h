@@ -271,6 +271,12 @@ namespace GelMPM
     /** Why the run failed (Outcome::failed) and the signal that stopped it (interrupted). */
     const std::string &
     failure() const;
+    /**
+     * When the last failed attempt's Newton iteration stalled at round-off (round_off_stall()):
+     * what to change, naming 'Newton/Tolerance'; otherwise empty.
+     */
+    const std::string &
+    round_off_hint() const;
     int
     signal() const;
 
@@ -340,6 +346,7 @@ namespace GelMPM
     double        last_dt = 0.; // the last accepted step (0 before the first, after a kick)
     double        next_output_time = 0.;
     std::string   failure_;
+    std::string   round_off_hint_;
     int           signal_               = 0;
     unsigned long n_newton_iterations   = 0;
     unsigned long n_factorizations      = 0;

@@ -59,6 +59,15 @@ namespace GelMPM
     void
     parse_parameters(dealii::ParameterHandler &prm);
 
+    /**
+     * Throw InputError ('Time stepping/Tolerance') if the tolerance is below 1000 times
+     * @p newton_tolerance ('Newton/Tolerance'): each step's solution is uncertain by about the
+     * Newton tolerance, and the error estimate resolves no local error below it unless every
+     * step is longer than a thousandth of the time elapsed.
+     */
+    void
+    check_resolvable(const double newton_tolerance, const double smallest_newton_tolerance) const;
+
     /** Largest step allowed at time @p t by the caps (infinity beyond the last cap). */
     double
     cap(const double t) const;
