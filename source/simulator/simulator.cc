@@ -959,7 +959,7 @@ namespace GelMPM
       mode_output->restore_files();
     std::error_code ignored;
     std::filesystem::remove(checkpoint_path(output_settings.directory) + ".tmp", ignored);
-    // From the first accepted step on the run accepts inexact extrapolations (advance()).
+    // From the first accepted step on the run accepts inexact extrapolations (accepted()).
     if (current_step() > 0)
       scene.spaces->tolerate_inexact_extrapolation();
     resume_from.reset();
