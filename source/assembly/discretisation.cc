@@ -104,7 +104,41 @@ namespace GelMPM
                 grid.lower,
                 grid.upper,
                 mu_cells(grid, settings.subdivision))
-  {}
+    , axisymmetric_(grid.axisymmetric)
+  {
+    // A body of revolution that reaches the axis is cut next to it, within the first q cells
+    // of the grid, wherever its surface meets the axis (the poles of a sphere): there the
+    // extrapolation of the extended B-splines is not exact (doc/axisymmetric.md).
+    if (axisymmetric_)
+      inexact_extrapolation_tolerated = true;
+  }
+
+
+  template <int dim>
+  bool
+  DiscreteSpaces<dim>::axisymmetric() const
+  {
+    return axisymmetric_;
+  }
+
+
+  template <int dim>
+  std::vector<dealii::types::global_dof_index>
+  DiscreteSpaces<dim>::axis_unknowns() const
+  {
+    std::vector<dealii::types::global_dof_index> unknowns;
+    if (!axisymmetric_)
+      return unknowns;
+    for (unsigned int i = 0; i < u_space_.n_functions(); ++i)
+      {
+        const unsigned int dof = u_->dof_of_control_point(i);
+        if (dof != dealii::numbers::invalid_unsigned_int &&
+            u_space_.function_multi_index(i)[0] == 0)
+          unknowns.push_back(dim * dof);
+      }
+    std::sort(unknowns.begin(), unknowns.end());
+    return unknowns;
+  }
 
 
   template <int dim>

@@ -1,3 +1,4 @@
+#include <gelmpm/assembly/axisymmetric_terms.h>
 #include <gelmpm/assembly/displacement_nitsche.h>
 
 namespace GelMPM
@@ -16,6 +17,16 @@ namespace GelMPM
                            AssemblyScratch<dim>   &s,
                            AssemblyCopy           &copy)
   {
+    if constexpr (dim == 2)
+      if (point.axisymmetric())
+        return add_axisymmetric_displacement_nitsche(point,
+                                                     Pi,
+                                                     g,
+                                                     beta,
+                                                     symmetry,
+                                                     with_matrix,
+                                                     s,
+                                                     copy);
     const double         area  = point.measure;
     const auto          &N     = point.normal;
     const double         sym   = symmetry;

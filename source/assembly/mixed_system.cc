@@ -1,3 +1,4 @@
+#include <gelmpm/assembly/axisymmetric_terms.h>
 #include <gelmpm/assembly/mixed_system.h>
 #include <gelmpm/core/collective.h>
 #include <gelmpm/core/format_point.h>
@@ -50,6 +51,13 @@ namespace GelMPM
                           const std::function<void()>             &before_new_pattern)
   {
     cache.gather(particle_handler);
+    on_axis.clear();
+    if (spaces_.axisymmetric())
+      {
+        on_axis.assign(spaces_.n_dofs(), false);
+        for (const auto i : spaces_.axis_unknowns())
+          on_axis[i] = true;
+      }
     // On several ranks the rows' owners follow the cells' holders too (a repartition).
     bool new_pattern =
       cache.classification() != pattern_classification ||
@@ -187,7 +195,10 @@ namespace GelMPM
         Tensor<1, dim>    u_bar_n;
         for (unsigned int d = 0; d < dim; ++d)
           u_bar_n[d] = piece.displacement_value().value(X0, d);
-        const auto start = r.gel->incremental(dealii::unit_symmetric_tensor<dim>(), r.mu_n, r.F_p);
+        const auto start = point_state(r,
+                                       Tensor<2, dim>(dealii::unit_symmetric_tensor<dim>()),
+                                       Tensor<1, dim>(),
+                                       r.mu_n);
         r.adjoint_solvent_n =
           r.measure *
           dealii::scalar_product(outer(r.projector * (r.u_n - u_bar_n), r.normal), start.dP_n_dmu);
@@ -253,6 +264,33 @@ namespace GelMPM
     Collective::sum_in_place(communicator, residual_.begin(), residual_.size());
     // Collective: every rank learns of a failure on any, before the next collective call.
     Collective::agree_on_failure<NonPhysicalState>(communicator, failed ? failure : "");
+  }
+
+
+  template <int dim>
+  void
+  MixedSystem<dim>::hold_axis_in_block(AssemblyCopy &copy, const bool with_matrix) const
+  {
+    const unsigned int n = copy.dofs.size();
+    for (unsigned int i = 0; i < n; ++i)
+      if (on_axis[copy.dofs[i]])
+        {
+          copy.residual(i) = 0.;
+          if (with_matrix)
+            for (unsigned int j = 0; j < n; ++j)
+              if (j != i)
+                copy.matrix(i, j) = copy.matrix(j, i) = 0.;
+        }
+  }
+
+
+  template <int dim>
+  void
+  MixedSystem<dim>::hold_axis(dealii::Vector<double> &solution) const
+  {
+    for (unsigned int i = 0; i < on_axis.size(); ++i)
+      if (on_axis[i])
+        solution(i) = 0.;
   }
 
 
@@ -396,6 +434,8 @@ namespace GelMPM
                 if (c != r)
                   copy.matrix(c, r) += value;
               }
+        if (!on_axis.empty())
+          hold_axis_in_block(copy, with_matrix);
       }
     catch (const NonPhysicalState &e)
       {
@@ -464,14 +504,19 @@ namespace GelMPM
       const auto [du, delta_F, mu] = cache.fields_at(r, solution);
 
       const Tensor<2, dim> F_p = delta_F * r.F_p;
-      // J_n relative to the initial configuration (the out-of-plane stretch stays lambda_0).
+      // J_n relative to the initial configuration: in plane strain the out-of-plane stretch
+      // stays lambda_0; in an axisymmetric scene the hoop stretch is r_{n+1}/R_0.
       const double lambda_0 = r.gel->lambda_0();
-      const double J_n      = dealii::determinant(F_p) / std::pow(lambda_0, dim);
+      const double hoop     = r.axisymmetric() ? (r.radius + du[0]) / r.X0[0] : 1.;
+      const double J_n = hoop * dealii::determinant(F_p) / std::pow(lambda_0, dim);
 
       auto props = cache.particle(p)->get_properties();
       for (unsigned int i = 0; i < dim; ++i)
         for (unsigned int j = 0; j < dim; ++j)
           props[Layout::F + i * dim + j] = F_p[i][j];
+      if constexpr (dim == 2)
+        if (r.axisymmetric())
+          props[Layout::out_of_plane] = lambda_0 * hoop;
       props[Layout::mu_increment] = mu - r.mu_n;
       props[Layout::mu]           = mu;
       for (unsigned int d = 0; d < dim; ++d)

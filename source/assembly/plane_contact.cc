@@ -1,3 +1,4 @@
+#include <gelmpm/assembly/axisymmetric_terms.h>
 #include <gelmpm/assembly/displacement_nitsche.h>
 #include <gelmpm/assembly/plane_contact.h>
 
@@ -62,7 +63,7 @@ namespace GelMPM
           {
             Tensor<1, dim> n;
             n[plane.axis]    = plane.sign;
-            const auto state = r.gel->incremental(delta_F, mu, r.F_p);
+            const auto state = point_state(r, delta_F, du, mu, false);
             is_active |= beta * g - n * (state.P_n * r.normal) > 0.;
           }
         else
@@ -86,7 +87,8 @@ namespace GelMPM
     // The traction P_n N, once per point for all planes (Nitsche only).
     Tensor<1, dim> traction;
     if (contact.method == ContactSettings::Method::nitsche)
-      traction = point.gel->incremental(s.delta_F, s.mu_at_point, point.F_p).P_n * point.normal;
+      traction =
+        point_state(point, s.delta_F, s.du_at_point, s.mu_at_point, false).P_n * point.normal;
     for (const auto &plane : planes)
       {
         const double   g = plane.sign * (point.x[plane.axis] + point.edge_offset[plane.axis] +

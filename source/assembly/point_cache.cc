@@ -152,11 +152,18 @@ namespace GelMPM
     for (unsigned int i = 0; i < dim; ++i)
       for (unsigned int j = 0; j < dim; ++j)
         r.F_p[i][j] = props[Layout::F + i * dim + j];
-    r.mu_n      = props[Layout::mu];
-    r.dmu_last  = props[Layout::mu_increment];
-    r.gel       = &materials[region_of_point<dim>(props)];
-    r.mobility  = r.gel->mobility(r.F_p);
-    r.assembled = (r.kind == PointKind::volume) || (r.piece >= 0);
+    r.mu_n     = props[Layout::mu];
+    r.dmu_last = props[Layout::mu_increment];
+    r.gel      = &materials[region_of_point<dim>(props)];
+    if (spaces.axisymmetric() && r.X0[0] > 0.)
+      {
+        r.radius = r.x[0] + r.edge_offset[0];
+        r.hoop   = out_of_plane_stretch_of<dim>(props);
+      }
+    r.mobility = r.axisymmetric() ? r.gel->mobility(r.F_p, r.hoop) : r.gel->mobility(r.F_p);
+    // Surface points on the axis of an axisymmetric scene have no area (2 pi R = 0).
+    r.assembled = ((r.kind == PointKind::volume) || (r.piece >= 0)) &&
+                  !(spaces.axisymmetric() && !r.axisymmetric());
     if (r.kind != PointKind::volume)
       {
         Tensor<1, dim> na;

@@ -1,3 +1,4 @@
+#include <gelmpm/assembly/axisymmetric_terms.h>
 #include <gelmpm/assembly/volume_term.h>
 
 namespace GelMPM
@@ -13,6 +14,9 @@ namespace GelMPM
                                      AssemblyScratch<dim>   &s,
                                      AssemblyCopy           &copy) const
   {
+    if constexpr (dim == 2)
+      if (point.axisymmetric())
+        return assemble_axisymmetric_volume_term(point, dt, with_matrix, s, copy);
     const auto   state = point.gel->incremental(s.delta_F, s.mu_at_point, point.F_p, with_matrix);
     const double V     = point.measure;
     const double kTnu  = point.gel->kT_over_nu();

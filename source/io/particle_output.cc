@@ -74,7 +74,8 @@ namespace GelMPM
         const double               mu       = props[Layout::mu];
         const unsigned int         region   = region_of_point<dim>(props);
         const FloryRehnerGel<dim> &material = materials[region];
-        const double               J        = material.J(F);
+        const double               stretch  = out_of_plane_stretch_of<dim>(props);
+        const double               J        = material.J(F, stretch);
 
         DataOutBase::Patch<0, dim> patch;
         const Point<dim>           x = position_of(particle.get_location(), props);
@@ -99,7 +100,7 @@ namespace GelMPM
           patch.data(first_stretch + d, 0) = std::sqrt(std::max(principal[dim - 1 - d].first, 0.));
         if (J > 1.)
           {
-            const Tensor<2, dim> sigma = material.stress(F, mu) * transpose(F) / J;
+            const Tensor<2, dim> sigma = material.stress(F, mu, stretch) * transpose(F) / J;
             for (unsigned int i = 0; i < dim; ++i)
               for (unsigned int j = 0; j < dim; ++j)
                 patch.data(stress_first + i * dim + j, 0) = sigma[i][j];

@@ -262,6 +262,14 @@ namespace GelMPM
 
 
   template <int dim>
+  double
+  FloryRehnerGel<dim>::J(const Tensor<2, dim> &F, const double out_of_plane) const
+  {
+    return (dim == 2 ? out_of_plane : 1.) * dealii::determinant(F);
+  }
+
+
+  template <int dim>
   void
   FloryRehnerGel<dim>::volumetric_derivatives(const double J,
                                               const double mu,
@@ -291,7 +299,17 @@ namespace GelMPM
   Tensor<2, dim>
   FloryRehnerGel<dim>::stress(const Tensor<2, dim> &F, const double mu) const
   {
-    const double J_ = J(F);
+    return stress(F, mu, lambda_0_);
+  }
+
+
+  template <int dim>
+  Tensor<2, dim>
+  FloryRehnerGel<dim>::stress(const Tensor<2, dim> &F,
+                              const double          mu,
+                              const double          out_of_plane) const
+  {
+    const double J_ = J(F, out_of_plane);
     check_physical(J_);
     double dpsi, d2psi;
     volumetric_derivatives(J_, mu, dpsi, d2psi);
@@ -347,7 +365,15 @@ namespace GelMPM
   double
   FloryRehnerGel<dim>::mobility(const Tensor<2, dim> &F_p) const
   {
-    const double J_p = J(F_p);
+    return mobility(F_p, lambda_0_);
+  }
+
+
+  template <int dim>
+  double
+  FloryRehnerGel<dim>::mobility(const Tensor<2, dim> &F_p, const double out_of_plane) const
+  {
+    const double J_p = J(F_p, out_of_plane);
     check_physical(J_p);
     return kT_over_nu() * diffusivity_ * (J_p - 1.) / J_p;
   }

@@ -1,6 +1,7 @@
 #include <gelmpm/core/available_memory.h>
 #include <gelmpm/core/format_point.h>
 #include <gelmpm/core/input_error.h>
+#include <gelmpm/core/round_off.h>
 #include <gelmpm/particles/material_point_generator.h>
 #include <gelmpm/particles/point_location.h>
 #include <gelmpm/scene/expression.h>
@@ -261,6 +262,8 @@ namespace GelMPM
           properties[Layout::F + i * dim + j] = (i == j) ? lambda_0 : 0.;
       properties[Layout::mu]     = mu_0;
       properties[Layout::region] = region;
+      if constexpr (dim == 2)
+        properties[Layout::out_of_plane] = lambda_0;
       // Every rank walks all points, so that ids and checks are the same on all; each keeps
       // the points of the cells it owns.
       const auto [cell, reference] = locator.locate(x);
@@ -273,12 +276,19 @@ namespace GelMPM
     for (unsigned int d = 1; d < dim; ++d)
       h_min = std::min(h_min, grid.cell_size(d));
 
+    // In an axisymmetric scene every measure is that of the revolved body: 2 pi R times the
+    // meridian plane's. Surface points closer to the axis than on_axis_tolerance h lie on it
+    // (a level set's contour is projected onto x = 0 to about round-off).
+    constexpr double on_axis_tolerance = 1e-8;
+    const auto       revolution        = [&](const dealii::Point<dim> &x) {
+      return grid.axisymmetric ? 2. * dealii::numbers::PI * x[0] : 1.;
+    };
     const auto insert_volume_point =
       [&](const dealii::Point<dim> &x, const double volume, const std::string &group) {
         std::fill(properties.begin(), properties.end(), 0.);
         properties[Layout::kind]      = static_cast<double>(PointKind::volume);
         properties[Layout::piece]     = -1;
-        properties[Layout::measure_0] = properties[Layout::measure_n] = volume;
+        properties[Layout::measure_0] = properties[Layout::measure_n] = revolution(x) * volume;
         const unsigned int region = regions.size() > 1 ? regions.region_of(x, group) : 0;
         ++volume_points_of_region[region];
         insert(x, region);
@@ -334,15 +344,29 @@ namespace GelMPM
     // The body must lie in the grid: check the boundary (it bounds the body).
     check_boundary_groups(geometry, boundary_conditions);
     {
+      // The axis of an axisymmetric scene is the grid's lower x edge, where the body may end:
+      // a level set is sampled beyond it, so that its contour closes along the axis.
+      dealii::Point<dim> sample_lower = grid.lower;
+      if (grid.axisymmetric)
+        sample_lower[0] -= h_min;
       const auto elements =
-        body.surface_elements(h_min / surface_points_per_edge, grid.lower, grid.upper);
+        body.surface_elements(h_min / surface_points_per_edge, sample_lower, grid.upper);
       std::vector<unsigned int> count(boundary_conditions.n_pieces(), 0);
       for (const auto &e : elements)
         {
+          require(!grid.axisymmetric || e.centre[0] >= -relative_position_tolerance * h_min,
+                  geometry.entry(),
+                  "puts material at R = x < 0 in an axisymmetric scene, e.g. at " +
+                    format_point(e.centre) + ", where the meridian plane has none",
+                  "move or cut the body so that it lies at x >= 0 (the axis is x = 0)");
           require(grid.contains(e.centre),
                   geometry.entry(),
                   "puts the body outside the background grid, e.g. at " + format_point(e.centre),
                   "enlarge 'Background grid/Lower corner' and 'Upper corner' or move the body");
+          // The axis of an axisymmetric scene is no boundary of the revolved body (its area
+          // 2 pi R ds vanishes): u_r = 0 holds there by the axis unknowns (MixedSystem).
+          if (grid.axisymmetric && e.centre[0] <= on_axis_tolerance * h_min)
+            continue;
           const double                 area   = e.normal_area.norm();
           const dealii::Tensor<1, dim> normal = e.normal_area / area;
           const int                    piece =
@@ -358,10 +382,11 @@ namespace GelMPM
           else
             properties[Layout::kind] = static_cast<double>(PointKind::neumann_neumann);
           properties[Layout::piece]     = piece;
-          properties[Layout::measure_0] = properties[Layout::measure_n] = area;
+          const double revolved_area    = revolution(e.centre) * area;
+          properties[Layout::measure_0] = properties[Layout::measure_n] = revolved_area;
           for (unsigned int d = 0; d < dim; ++d)
             properties[Layout::normal_area_0 + d] = properties[Layout::normal_area_n + d] =
-              e.normal_area[d];
+              revolution(e.centre) * e.normal_area[d];
           // A surface point takes the region of the body just inside it: on an interface that
           // meets the boundary, the side its normal points away from.
           unsigned int region = 0;
@@ -378,7 +403,10 @@ namespace GelMPM
                 "selects no point of the body's boundary",
                 boundary_conditions.piece(i).boundary_groups().empty()
                   ? "check the expression against the geometry (variables " +
-                      PointNormalExpression::variable_names(dim) + ")"
+                      PointNormalExpression::variable_names(dim) + ")" +
+                      (grid.axisymmetric ? "; in an axisymmetric scene the axis x = 0 is no "
+                                           "boundary and needs no piece (u_r = 0 holds there)"
+                                         : "")
                   : "check the groups against the mesh's physical groups");
     }
     particles.update_cached_numbers();

@@ -33,6 +33,15 @@ namespace GelMPM
                       Patterns::List(Patterns::Integer(1), dim, dim),
                       "Number of cells per direction of the displacement grid (cell size h_u). "
                       "With mu on the coarse grid (subdivision) the counts must be even.");
+    prm.declare_entry("Coordinate system",
+                      "Cartesian",
+                      Patterns::Selection("Cartesian|axisymmetric"),
+                      "Cartesian: x, y (, z); in 2D the gel is in plane strain. axisymmetric (2D "
+                      "only): the grid is the meridian plane of a body of revolution, x the "
+                      "radius R and y the axis z; the hoop stretch r/R enters F, every volume "
+                      "and area is that of the revolved body (2 pi R), and u_r = 0 on the axis. "
+                      "The grid's 'Lower corner' must then have x = 0: its left edge is the axis "
+                      "(doc/axisymmetric.md).");
     prm.leave_subsection();
   }
 
@@ -45,7 +54,18 @@ namespace GelMPM
     const auto lo = get_double_list(prm, "Lower corner", "Background grid/Lower corner", dim);
     const auto hi = get_double_list(prm, "Upper corner", "Background grid/Upper corner", dim);
     const auto n  = get_double_list(prm, "Cells", "Background grid/Cells", dim);
+    axisymmetric  = prm.get("Coordinate system") == "axisymmetric";
     prm.leave_subsection();
+    require(!axisymmetric || dim == 2,
+            "Background grid/Coordinate system",
+            "is axisymmetric in a 3D scene: a body of revolution is modelled in its meridian "
+            "plane",
+            "set 'Dimension = 2' for an axisymmetric scene, or 'Coordinate system = Cartesian'");
+    require(!axisymmetric || lo[0] == 0.,
+            "Background grid/Lower corner",
+            "has x = " + std::to_string(lo[0]) +
+              " in an axisymmetric scene, whose grid starts on the axis R = 0",
+            "give 'Lower corner = 0, <z_min>' and keep the body at R >= 0");
     check_memory(n);
     for (unsigned int d = 0; d < dim; ++d)
       {

@@ -106,7 +106,10 @@ namespace GelMPM
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = 0; j < dim; ++j)
             F[i][j] = props[Layout::F + i * dim + j];
-        volume += props[Layout::measure_n] * (1. - 1. / material[region_of_point<dim>(props)].J(F));
+        volume +=
+          props[Layout::measure_n] *
+          (1. -
+           1. / material[region_of_point<dim>(props)].J(F, out_of_plane_stretch_of<dim>(props)));
       }
     return dealii::Utilities::MPI::sum(volume, communicator);
   }

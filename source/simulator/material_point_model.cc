@@ -109,6 +109,7 @@ namespace GelMPM
                                   ? from_points[dof]
                                   : mu_coefficients[i];
       }
+    scene.system->hold_axis(solution);
   }
 
 

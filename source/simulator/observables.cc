@@ -35,6 +35,18 @@ namespace GelMPM
                       "1",
                       dealii::Patterns::Integer(0, 2),
                       "Coordinate direction of the thickness (0: x, 1: y, 2: z).");
+    prm.declare_entry("Radius piece",
+                      "",
+                      dealii::Patterns::Anything(),
+                      "A boundary piece name (e.g. 'sphere'): adds the column radius_over_R0, the "
+                      "mean distance of the piece's surface points from 'Radius centre' over its "
+                      "value in the initial configuration (r/R_0 of a swelling sphere, disk or "
+                      "cylinder). Empty: off.");
+    prm.declare_entry("Radius centre",
+                      "0, 0, 0",
+                      dealii::Patterns::List(dealii::Patterns::Double(), 2, 3),
+                      "With 'Radius piece': the centre the distances are measured from (its first "
+                      "'Dimension' coordinates are used).");
     prm.declare_entry("Centre offset pieces",
                       "",
                       dealii::Patterns::Anything(),
@@ -143,12 +155,16 @@ namespace GelMPM
     const auto names = dealii::Utilities::split_string_list(prm.get("Thickness pieces"), ',');
     const auto offset_names =
       dealii::Utilities::split_string_list(prm.get("Centre offset pieces"), ',');
-    thickness_direction         = prm.get_integer("Thickness direction");
-    volume_ratio_range          = prm.get_bool("Volume ratio range");
-    mu_oscillation              = prm.get_bool("Chemical potential oscillation");
-    boundary_error              = prm.get_bool("Boundary condition error");
-    const std::string pore_name = dealii::Utilities::trim(prm.get("Pore piece"));
-    crease_angle                = prm.get_double("Crease angle") * M_PI / 180.;
+    thickness_direction           = prm.get_integer("Thickness direction");
+    volume_ratio_range            = prm.get_bool("Volume ratio range");
+    mu_oscillation                = prm.get_bool("Chemical potential oscillation");
+    boundary_error                = prm.get_bool("Boundary condition error");
+    const std::string pore_name   = dealii::Utilities::trim(prm.get("Pore piece"));
+    const std::string radius_name = dealii::Utilities::trim(prm.get("Radius piece"));
+    const auto centre_text = dealii::Utilities::split_string_list(prm.get("Radius centre"), ',');
+    for (unsigned int d = 0; d < dim && d < centre_text.size(); ++d)
+      radius_centre[d] = dealii::Utilities::string_to_double(centre_text[d]);
+    crease_angle           = prm.get_double("Crease angle") * M_PI / 180.;
     surface_names          = dealii::Utilities::split_string_list(prm.get("Surface pieces"), ',');
     fold_approach_distance = prm.get_double("Fold approach distance");
     fold_arc_length        = prm.get_double("Fold arc length");
@@ -216,6 +232,16 @@ namespace GelMPM
             "give a multiple of h_u larger than 'Fold approach distance', e.g. 3");
     offset_pieces =
       piece_pair(offset_names, pieces, "Observables/Centre offset pieces", "bottom, top");
+    radius_piece = -1;
+    if (!radius_name.empty())
+      {
+        const auto it = std::find(pieces.begin(), pieces.end(), radius_name);
+        require(it != pieces.end(),
+                "Observables/Radius piece",
+                "names the piece '" + radius_name + "' that is not in 'Boundary conditions/Pieces'",
+                "use one of the declared pieces");
+        radius_piece = it - pieces.begin();
+      }
   }
 
 
@@ -250,6 +276,8 @@ namespace GelMPM
     std::vector<std::string> c;
     if (thickness_pieces[0] >= 0)
       c.push_back("delta_h_over_h0");
+    if (radius_piece >= 0)
+      c.push_back("radius_over_R0");
     if (offset_pieces[0] >= 0)
       {
         for (unsigned int d = 0; d < dim; ++d)
@@ -303,6 +331,25 @@ namespace GelMPM
         const double h     = means[0][thickness_direction] - means[1][thickness_direction];
         const double h_0   = means[2][thickness_direction] - means[3][thickness_direction];
         statistics.set("delta_h_over_h0", h / h_0 - 1.);
+      }
+    if (radius_piece >= 0)
+      {
+        using Layout = PropertyLayout<dim>;
+        // Sums of the current and the initial distances.
+        std::vector<double> sums(2, 0.);
+        for (const auto &particle : particles)
+          {
+            const auto props = particle.get_properties();
+            if (kind_of(props) == PointKind::volume || piece_of(props) != radius_piece)
+              continue;
+            dealii::Point<dim> X0;
+            for (unsigned int d = 0; d < dim; ++d)
+              X0[d] = props[Layout::position_0 + d];
+            sums[0] += position_of(particle.get_location(), props).distance(radius_centre);
+            sums[1] += X0.distance(radius_centre);
+          }
+        dealii::Utilities::MPI::sum(sums, communicator, sums);
+        statistics.set("radius_over_R0", sums[0] / sums[1]);
       }
     if (offset_pieces[0] >= 0)
       {
@@ -709,9 +756,10 @@ namespace GelMPM
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = 0; j < dim; ++j)
             F[i][j] = props[Layout::F + i * dim + j];
-        const double J = material[region_of_point<dim>(props)].J(F);
-        J_min          = std::min(J_min, J);
-        J_max          = std::max(J_max, J);
+        const double J =
+          material[region_of_point<dim>(props)].J(F, out_of_plane_stretch_of<dim>(props));
+        J_min = std::min(J_min, J);
+        J_max = std::max(J_max, J);
         sum_JV += J * props[Layout::measure_0];
         sum_V += props[Layout::measure_0];
       }

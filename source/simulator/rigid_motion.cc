@@ -70,7 +70,8 @@ namespace GelMPM
                        const ContactSettings                         &contact,
                        const dealii::Point<dim>                      &grid_lower,
                        const dealii::Point<dim>                      &grid_upper,
-                       const MPI_Comm                                 communicator)
+                       const MPI_Comm                                 communicator,
+                       const bool                                     axisymmetric)
   {
     using Layout             = PropertyLayout<dim>;
     using Condition          = typename BoundaryPiece<dim>::DisplacementCondition;
@@ -186,6 +187,20 @@ namespace GelMPM
       }
     dealii::Utilities::MPI::sum(M, communicator, M);
     total_area = dealii::Utilities::MPI::sum(total_area, communicator);
+    if (axisymmetric)
+      {
+        // u_r = 0 along the axis, held at its two ends over the body's height.
+        const double           weight = std::max(total_area, moments[0] / size);
+        dealii::Tensor<2, dim> radial;
+        radial[0][0] = 1.;
+        for (const double z : {lowest[1], highest[1]})
+          {
+            dealii::Point<dim> on_axis;
+            on_axis[1] = z;
+            add(on_axis, radial, weight);
+          }
+        total_area = std::max(total_area, weight);
+      }
 
     std::array<std::array<double, n>, n> A, V;
     for (unsigned int k = 0; k < n; ++k)
@@ -236,12 +251,14 @@ namespace GelMPM
                           const ContactSettings &,
                           const dealii::Point<2> &,
                           const dealii::Point<2> &,
-                          const MPI_Comm);
+                          const MPI_Comm,
+                          const bool);
   template std::vector<std::string>
   unheld_rigid_motions<3>(const dealii::Particles::ParticleHandler<3> &,
                           const BoundaryConditions<3> &,
                           const ContactSettings &,
                           const dealii::Point<3> &,
                           const dealii::Point<3> &,
-                          const MPI_Comm);
+                          const MPI_Comm,
+                          const bool);
 } // namespace GelMPM

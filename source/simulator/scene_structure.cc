@@ -11,11 +11,13 @@ namespace GelMPM
   void
   SceneStructure::declare_parameters(dealii::ParameterHandler &prm)
   {
-    prm.declare_entry("Dimension",
-                      "2",
-                      dealii::Patterns::Integer(2, 3),
-                      "Space dimension of the scene. In 2D the gel is in plane strain: the "
-                      "out-of-plane stretch stays at the initial stretch lambda_0.");
+    prm.declare_entry(
+      "Dimension",
+      "2",
+      dealii::Patterns::Integer(2, 3),
+      "Space dimension of the scene. In 2D the gel is in plane strain (the "
+      "out-of-plane stretch stays at the initial stretch lambda_0), or axisymmetric "
+      "with 'Background grid/Coordinate system = axisymmetric'.");
     prm.enter_subsection("Boundary conditions");
     prm.declare_entry("Pieces",
                       "",

@@ -208,7 +208,8 @@ namespace GelMPM
                                               scene.contact,
                                               scene.grid.lower,
                                               scene.grid.upper,
-                                              scene.communicator);
+                                              scene.communicator,
+                                              scene.grid.axisymmetric);
     if (motions.empty())
       return;
     std::string list;

@@ -7,6 +7,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
+#include <deal.II/base/types.h>
 
 #include <memory>
 #include <string>
@@ -106,6 +107,19 @@ namespace GelMPM
     std::vector<double>
     u_dof_greville_points() const;
 
+    /** Whether the grid is the meridian plane of an axisymmetric scene (BackgroundGrid). */
+    bool
+    axisymmetric() const;
+
+    /**
+     * Axisymmetric scenes: the radial displacement unknowns of the control points on the axis
+     * (the first B-spline in x, the only one that is nonzero at R = 0), sorted. Held at zero,
+     * they make u_r = 0 on the axis exactly, which the hoop strain u_r/R requires. Empty
+     * otherwise.
+     */
+    std::vector<dealii::types::global_dof_index>
+    axis_unknowns() const;
+
     /** Number of displacement unknowns (dim per DoF of the extended u space). */
     unsigned int
     n_u_dofs() const;
@@ -143,6 +157,7 @@ namespace GelMPM
     std::unique_ptr<ExtendedBSplineSpace<dim>> mu_;
     std::vector<bool>                          u_cell_has_material_;
     bool                                       inexact_extrapolation_tolerated = false;
+    bool                                       axisymmetric_;
     // The rule the current extended spaces were built with.
     bool built_tolerating_inexact_extrapolation = false;
   };

@@ -154,6 +154,15 @@ namespace GelMPM
     update_particles(const dealii::Vector<double> &solution);
 
     /**
+     * Axisymmetric scenes: set the radial unknowns on the axis (DiscreteSpaces::axis_unknowns())
+     * of @p solution to zero, as the first Newton iterate must have them. assemble() keeps them
+     * there: their rows and columns of the tangent hold only the diagonal, their residual is
+     * zero. Nothing in a Cartesian scene.
+     */
+    void
+    hold_axis(dealii::Vector<double> &solution) const;
+
+    /**
      * Particle-to-grid transfer of the chemical potential: the coefficients of the current mu
      * basis closest to the points' mu_n in the least-squares sense over the volume points
      * (L2 projection with the points as quadrature: M c = b, M_ij = sum_p V_p Ñ_i Ñ_j,
@@ -338,6 +347,14 @@ namespace GelMPM
 
     // Whether add_to_matrix() may write into the rows directly (one rank, sorted columns).
     bool rows_are_local_and_sorted = false;
+
+    // Axisymmetric scenes: per unknown, whether it is a radial unknown on the axis (empty in a
+    // Cartesian scene); rebuilt with the spaces at every setup().
+    std::vector<bool> on_axis;
+
+    /** Reduce a block's system to the diagonal in the rows and columns of the axis unknowns. */
+    void
+    hold_axis_in_block(AssemblyCopy &copy, const bool with_matrix) const;
   };
 } // namespace GelMPM
 

@@ -64,6 +64,17 @@ namespace GelMPM
     double                 mu_bar = 0.;
     double                 flux   = 0.;
     bool                   assembled; // volume points and surface points of a piece
+    // Axisymmetric scenes (doc/axisymmetric.md): r_n = x_n[0] > 0, and the hoop stretch
+    // F_p,33 = lambda_0 r_n / R_0 of F_n F_0. Zero in Cartesian scenes.
+    double radius = 0.;
+    double hoop   = 0.;
+
+    /** Whether the point belongs to an axisymmetric scene (its measure includes 2 pi r_n). */
+    bool
+    axisymmetric() const
+    {
+      return radius > 0.;
+    }
   };
 
 

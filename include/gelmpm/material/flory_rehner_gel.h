@@ -70,6 +70,13 @@ namespace GelMPM
     double
     J(const dealii::Tensor<2, dim> &F) const;
 
+    /**
+     * J of the 2D state with the out-of-plane stretch F_33 = @p out_of_plane (an axisymmetric
+     * scene's hoop stretch; lambda_0 gives J(F)): out_of_plane det F. In 3D det F.
+     */
+    double
+    J(const dealii::Tensor<2, dim> &F, const double out_of_plane) const;
+
     /** W(F, mu), eq. (19). */
     double
     free_energy(const dealii::Tensor<2, dim> &F, const double mu) const;
@@ -77,6 +84,13 @@ namespace GelMPM
     /** Nominal stress P = dW/dF. */
     dealii::Tensor<2, dim>
     stress(const dealii::Tensor<2, dim> &F, const double mu) const;
+
+    /**
+     * The in-plane nominal stress with the out-of-plane stretch @p out_of_plane (which enters
+     * only through J when F is block diagonal): stress(F, mu) for lambda_0.
+     */
+    dealii::Tensor<2, dim>
+    stress(const dealii::Tensor<2, dim> &F, const double mu, const double out_of_plane) const;
 
     /** dP/dF, A_iJkL = dP_iJ / dF_kL. */
     dealii::Tensor<4, dim>
@@ -98,6 +112,10 @@ namespace GelMPM
      */
     double
     mobility(const dealii::Tensor<2, dim> &F_p) const;
+
+    /** mobility() of the 2D state with the out-of-plane stretch @p out_of_plane. */
+    double
+    mobility(const dealii::Tensor<2, dim> &F_p, const double out_of_plane) const;
 
     /** Incremental quantities for F = dF F_p, eq. (25)–(30). */
     struct Incremental

@@ -66,6 +66,8 @@ namespace GelMPM
    *   body creep through the edge by one violation per step (doc/method.md).
    * - region: the material region of the point (MaterialRegions; 0: the body's own material),
    *   fixed at its creation.
+   * - out_of_plane (2D only): the out-of-plane stretch F_33 from the dry state, lambda_0 in plane
+   *   strain, the hoop stretch lambda_0 r_n / R_0 in an axisymmetric scene (doc/axisymmetric.md).
    */
   template <int dim>
   struct PropertyLayout
@@ -83,7 +85,8 @@ namespace GelMPM
     static constexpr unsigned int mu_increment  = increment + dim;
     static constexpr unsigned int edge_offset   = mu_increment + 1;
     static constexpr unsigned int region        = edge_offset + dim;
-    static constexpr unsigned int n_properties  = region + 1;
+    static constexpr unsigned int out_of_plane  = region + 1;
+    static constexpr unsigned int n_properties  = out_of_plane + (dim == 2 ? 1 : 0);
   };
 
 
@@ -112,6 +115,21 @@ namespace GelMPM
   kind_of(const Properties &properties)
   {
     return static_cast<PointKind>(std::lround(properties[PropertyLayout<1>::kind]));
+  }
+
+
+  /**
+   * The out-of-plane stretch F_33 of the point whose property array is @p properties in 2D
+   * (PropertyLayout::out_of_plane); 1 in 3D, where F holds every stretch.
+   */
+  template <int dim, typename Properties>
+  inline double
+  out_of_plane_stretch_of(const Properties &properties)
+  {
+    if constexpr (dim == 2)
+      return properties[PropertyLayout<dim>::out_of_plane];
+    else
+      return 1.;
   }
 
 

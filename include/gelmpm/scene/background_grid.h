@@ -20,6 +20,12 @@ namespace GelMPM
     dealii::Point<dim>            lower;
     dealii::Point<dim>            upper;
     std::array<unsigned int, dim> n_cells;
+    /**
+     * 'Coordinate system = axisymmetric' (2D only): x is the radius R >= 0, y the axis z, and the
+     * scene is the meridian plane of a body of revolution (doc/axisymmetric.md). The grid's lower
+     * x edge is then the axis R = 0.
+     */
+    bool axisymmetric = false;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

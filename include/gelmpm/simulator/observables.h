@@ -29,6 +29,9 @@ namespace GelMPM
    *   h(t) is the mean coordinate x_d of the surface points of the first piece minus that of the
    *   second, h_0 the same in the initial configuration, and the column is h/h_0 - 1 (paper §4.1:
    *   Delta h / h_0).
+   * - Radius (column radius_over_R0): with "Radius piece" and "Radius centre" c, the mean
+   *   distance |x - c| of the piece's surface points over its initial value: the radius of a
+   *   swelling sphere, disk or cylinder, r/R_0 (doc/axisymmetric.md).
    * - Centre offset (columns centre_offset_x, _y, (_z), centre_distance): with "Centre offset
    *   pieces = bottom, top", the vector between the mean positions of the two pieces' surface
    *   points minus its initial value, and its length (paper §4.3, Fig. 10a).
@@ -202,8 +205,10 @@ namespace GelMPM
 
     std::array<int, 2>                  thickness_pieces = {{-1, -1}};
     std::array<int, 2>                  offset_pieces    = {{-1, -1}};
-    int                                 pore_piece       = -1;
-    MPI_Comm                            communicator     = MPI_COMM_SELF;
+    int                                 radius_piece     = -1;
+    dealii::Point<dim>                  radius_centre;
+    int                                 pore_piece   = -1;
+    MPI_Comm                            communicator = MPI_COMM_SELF;
     std::vector<dealii::Point<dim>>     pore_centres;
     std::vector<ContactSettings::Plane> contact_planes;
     double                              contact_tolerance = 0.;

@@ -22,6 +22,9 @@ namespace GelMPM
    * gives it an arbitrary amount made of round-off. Each entry names the motion ("translation
    * along x", "rotation about z"), or a combination that is not one of these; empty when the
    * body is held. Collective over @p communicator.
+   *
+   * In an axisymmetric scene (@p axisymmetric) the axis holds the radial translation and the
+   * rotation (u_r = 0 there): only the translation along the axis (y) can be unheld.
    */
   template <int dim>
   std::vector<std::string>
@@ -30,7 +33,8 @@ namespace GelMPM
                        const ContactSettings                         &contact,
                        const dealii::Point<dim>                      &grid_lower,
                        const dealii::Point<dim>                      &grid_upper,
-                       const MPI_Comm                                 communicator);
+                       const MPI_Comm                                 communicator,
+                       const bool                                     axisymmetric = false);
 } // namespace GelMPM
 
 #endif
