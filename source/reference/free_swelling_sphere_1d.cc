@@ -119,10 +119,12 @@ namespace GelMPM
   {
     const double l03 = std::pow(parameters.lambda_0, 3);
     Cell         c;
-    c.lambda_r     = (r_b - r_a) / (R[k + 1] - R[k]);
-    c.lambda_theta = (r_a + r_b) / (R[k] + R[k + 1]);
-    c.volume       = (r_b * r_b * r_b - r_a * r_a * r_a) / 3.;
-    c.J            = l03 * c.volume / volume_0[k];
+    c.lambda_r = (r_b - r_a) / (R[k + 1] - R[k]);
+    c.volume   = (r_b * r_b * r_b - r_a * r_a * r_a) / 3.;
+    c.J        = l03 * c.volume / volume_0[k];
+    // The hoop stretch that reproduces the cell's volume with lambda_r: a uniform dilation is then
+    // an exact discrete equilibrium.
+    c.lambda_theta = std::sqrt(c.J / (l03 * c.lambda_r));
     c.dJ_a         = -l03 * r_a * r_a / volume_0[k];
     c.dJ_b         = l03 * r_b * r_b / volume_0[k];
     return c;
@@ -193,18 +195,28 @@ namespace GelMPM
           {
             const double r_a = r_next[k], r_b = r_next[k + 1];
             const Cell   s   = cell(k, r_a, r_b);
-            const double h = R[k + 1] - R[k], S = R[k] + R[k + 1];
-            // The cell's energy E = (V0/lambda_0^3) W; g_a, g_b = dE/dr_a, dE/dr_b.
-            const double c0   = volume_0[k] * N_nu / l0;
-            const double W_J  = energy_J(s.J, mu_next[k], N_nu, chi);
+            const double h   = R[k + 1] - R[k];
+            // The cell's energy E = (V0/lambda_0^3) W; g_a, g_b = dE/dr_a, dE/dr_b. Its elastic
+            // part (c0/2) (lambda_r^2 + 2 q/lambda_r), q = V/V0 = lambda_r lambda_theta^2, has
+            // the derivatives c0 [(lambda_r - q/lambda_r^2) e_j + f_j/lambda_r] with
+            // e_j = d lambda_r/d r_j = -+1/h and f_j = dq/dr_j = -+r_j^2/V0.
+            const double c0 = volume_0[k] * N_nu / l0, q = s.volume / volume_0[k];
+            const double lr = s.lambda_r, e_a = -1. / h, e_b = 1. / h;
+            const double f_a = -r_a * r_a / volume_0[k], f_b = r_b * r_b / volume_0[k];
+            const double W_J = energy_J(s.J, mu_next[k], N_nu, chi);
             const double W_JJ = energy_JJ(s.J, N_nu, chi);
-            const double g_a  = c0 * (-s.lambda_r / h + 2. * s.lambda_theta / S) - W_J * r_a * r_a;
-            const double g_b  = c0 * (s.lambda_r / h + 2. * s.lambda_theta / S) + W_J * r_b * r_b;
-            const double k_aa =
-              c0 * (1. / (h * h) + 2. / (S * S)) - W_JJ * s.dJ_a * r_a * r_a - 2. * W_J * r_a;
-            const double k_ab = c0 * (-1. / (h * h) + 2. / (S * S)) - W_JJ * s.dJ_b * r_a * r_a;
-            const double k_bb =
-              c0 * (1. / (h * h) + 2. / (S * S)) + W_JJ * s.dJ_b * r_b * r_b + 2. * W_J * r_b;
+            const double g_a = c0 * ((lr - q / (lr * lr)) * e_a + f_a / lr) - W_J * r_a * r_a;
+            const double g_b = c0 * ((lr - q / (lr * lr)) * e_b + f_b / lr) + W_J * r_b * r_b;
+            auto         elastic = [&](const double e_i, const double f_i, const double e_j,
+                               const double f_j) {
+              return c0 * ((1. + 2. * q / (lr * lr * lr)) * e_i * e_j -
+                           (f_i * e_j + f_j * e_i) / (lr * lr));
+            };
+            const double k_aa = elastic(e_a, f_a, e_a, f_a) - c0 * 2. * r_a / (volume_0[k] * lr) -
+                                W_JJ * s.dJ_a * r_a * r_a - 2. * W_J * r_a;
+            const double k_ab = elastic(e_a, f_a, e_b, f_b) - W_JJ * s.dJ_b * r_a * r_a;
+            const double k_bb = elastic(e_b, f_b, e_b, f_b) + c0 * 2. * r_b / (volume_0[k] * lr) +
+                                W_JJ * s.dJ_b * r_b * r_b + 2. * W_J * r_b;
             if (k > 0)
               {
                 residual[r_column(k)] += g_a;
