@@ -156,7 +156,7 @@ namespace GelMPM
   void
   FreeSwellingSphere1D::step(const double dt)
   {
-    const unsigned int n = parameters.n_cells;
+    const unsigned int n  = parameters.n_cells;
     const double       l0 = parameters.lambda_0, l03 = l0 * l0 * l0;
     const double       N_nu = parameters.N_nu, chi = parameters.chi;
     const double       mu_bath = bath_chemical_potential(t + dt);
@@ -172,7 +172,7 @@ namespace GelMPM
 
     // Unknowns x_{2k} = mu_k, x_{2k+1} = r_{k+1}; the mechanical balance of node i is row
     // 2i - 1, the solvent balance of cell k row 2k.
-    const int size = 2 * n, kl = half_band, ku = half_band, ldab = 2 * kl + ku + 1;
+    const int           size = 2 * n, kl = half_band, ku = half_band, ldab = 2 * kl + ku + 1;
     std::vector<double> band(static_cast<std::size_t>(ldab) * size), residual(size);
     std::vector<int>    pivots(size);
     auto                add = [&](const int row, const int column, const double value) {
@@ -180,8 +180,12 @@ namespace GelMPM
         return; // r_0 = 0 is not an unknown
       band[(kl + ku + row - column) + static_cast<std::size_t>(column) * ldab] += value;
     };
-    auto r_column = [](const unsigned int i) { return static_cast<int>(2 * i) - 1; };
-    auto mu_column = [](const unsigned int k) { return static_cast<int>(2 * k); };
+    auto r_column = [](const unsigned int i) {
+      return static_cast<int>(2 * i) - 1;
+    };
+    auto mu_column = [](const unsigned int k) {
+      return static_cast<int>(2 * k);
+    };
 
     std::vector<double> r_next = r, mu_next = mu;
     // Per cell: the mobility k = (J - 1)/(lambda_0^3 lambda_r^2) and its derivatives by r_a, r_b.
@@ -194,8 +198,8 @@ namespace GelMPM
         for (unsigned int k = 0; k < n; ++k)
           {
             const double r_a = r_next[k], r_b = r_next[k + 1];
-            const Cell   s   = cell(k, r_a, r_b);
-            const double h   = R[k + 1] - R[k];
+            const Cell   s = cell(k, r_a, r_b);
+            const double h = R[k + 1] - R[k];
             // The cell's energy E = (V0/lambda_0^3) W; g_a, g_b = dE/dr_a, dE/dr_b. Its elastic
             // part (c0/2) (lambda_r^2 + 2 q/lambda_r), q = V/V0 = lambda_r lambda_theta^2, has
             // the derivatives c0 [(lambda_r - q/lambda_r^2) e_j + f_j/lambda_r] with
@@ -203,15 +207,15 @@ namespace GelMPM
             const double c0 = volume_0[k] * N_nu / l0, q = s.volume / volume_0[k];
             const double lr = s.lambda_r, e_a = -1. / h, e_b = 1. / h;
             const double f_a = -r_a * r_a / volume_0[k], f_b = r_b * r_b / volume_0[k];
-            const double W_J = energy_J(s.J, mu_next[k], N_nu, chi);
+            const double W_J  = energy_J(s.J, mu_next[k], N_nu, chi);
             const double W_JJ = energy_JJ(s.J, N_nu, chi);
-            const double g_a = c0 * ((lr - q / (lr * lr)) * e_a + f_a / lr) - W_J * r_a * r_a;
-            const double g_b = c0 * ((lr - q / (lr * lr)) * e_b + f_b / lr) + W_J * r_b * r_b;
-            auto         elastic = [&](const double e_i, const double f_i, const double e_j,
-                               const double f_j) {
-              return c0 * ((1. + 2. * q / (lr * lr * lr)) * e_i * e_j -
-                           (f_i * e_j + f_j * e_i) / (lr * lr));
-            };
+            const double g_a  = c0 * ((lr - q / (lr * lr)) * e_a + f_a / lr) - W_J * r_a * r_a;
+            const double g_b  = c0 * ((lr - q / (lr * lr)) * e_b + f_b / lr) + W_J * r_b * r_b;
+            auto         elastic =
+              [&](const double e_i, const double f_i, const double e_j, const double f_j) {
+                return c0 * ((1. + 2. * q / (lr * lr * lr)) * e_i * e_j -
+                             (f_i * e_j + f_j * e_i) / (lr * lr));
+              };
             const double k_aa = elastic(e_a, f_a, e_a, f_a) - c0 * 2. * r_a / (volume_0[k] * lr) -
                                 W_JJ * s.dJ_a * r_a * r_a - 2. * W_J * r_a;
             const double k_ab = elastic(e_a, f_a, e_b, f_b) - W_JJ * s.dJ_b * r_a * r_a;
@@ -273,7 +277,7 @@ namespace GelMPM
           add(mu_column(n - 1), mu_column(n - 1), w * kappa[n - 1]);
         }
 
-        const int one = 1;
+        const int one  = 1;
         int       info = 0;
         dgbsv_(&size,
                &kl,
@@ -296,8 +300,7 @@ namespace GelMPM
             bool admissible = true;
             for (unsigned int k = 0; k < n && admissible; ++k)
               {
-                const double r_a =
-                  k > 0 ? r_next[k] - alpha * update[r_column(k)] : 0.;
+                const double r_a = k > 0 ? r_next[k] - alpha * update[r_column(k)] : 0.;
                 const double r_b = r_next[k + 1] - alpha * update[r_column(k + 1)];
                 admissible       = r_b > r_a && cell(k, r_a, r_b).J > 1. + above_dry_state;
               }
@@ -370,8 +373,7 @@ namespace GelMPM
   {
     const unsigned int n = parameters.n_cells;
     const Cell         s = cell(n - 1, r[n - 1], r[n]);
-    const double       kappa =
-      (s.J - 1.) / (std::pow(parameters.lambda_0, 3) * s.lambda_r * s.lambda_r);
+    const double kappa = (s.J - 1.) / (std::pow(parameters.lambda_0, 3) * s.lambda_r * s.lambda_r);
     return kappa * (bath_chemical_potential(t) - mu[n - 1]) / (1. - centre[n - 1]);
   }
 
@@ -439,9 +441,9 @@ namespace GelMPM
     for (unsigned int k = 0; k < values.size(); ++k)
       {
         const Cell s = cell(k, r[k], r[k + 1]);
-        values[k]    = parameters.N_nu * s.lambda_r / parameters.lambda_0 +
-                    energy_J(s.J, mu[k], parameters.N_nu, parameters.chi) * s.lambda_theta *
-                      s.lambda_theta;
+        values[k] =
+          parameters.N_nu * s.lambda_r / parameters.lambda_0 +
+          energy_J(s.J, mu[k], parameters.N_nu, parameters.chi) * s.lambda_theta * s.lambda_theta;
       }
     return values;
   }
@@ -454,9 +456,9 @@ namespace GelMPM
     for (unsigned int k = 0; k < values.size(); ++k)
       {
         const Cell s = cell(k, r[k], r[k + 1]);
-        values[k]    = parameters.N_nu * s.lambda_theta / parameters.lambda_0 +
-                    energy_J(s.J, mu[k], parameters.N_nu, parameters.chi) * s.lambda_r *
-                      s.lambda_theta;
+        values[k] =
+          parameters.N_nu * s.lambda_theta / parameters.lambda_0 +
+          energy_J(s.J, mu[k], parameters.N_nu, parameters.chi) * s.lambda_r * s.lambda_theta;
       }
     return values;
   }

@@ -4,9 +4,8 @@
 // doc/free_swelling_sphere.md for the equations and a convergence study.
 #include <gelmpm/reference/free_swelling_sphere_1d.h>
 
-#include <boost/program_options.hpp>
-
 #include <algorithm>
+#include <boost/program_options.hpp>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -126,16 +125,14 @@ main(int argc, char **argv)
               const auto  s_r = reference.radial_stresses(), s_t = reference.hoop_stresses();
               for (unsigned int k = 0; k < R_c.size(); ++k)
                 profiles << t << ',' << R_c[k] << ',' << 0.5 * (r[k] + r[k + 1]) << ',' << l_r[k]
-                         << ',' << l_t[k] << ',' << mu[k] << ',' << s_r[k] << ',' << s_t[k]
-                         << '\n';
+                         << ',' << l_t[k] << ',' << mu[k] << ',' << s_r[k] << ',' << s_t[k] << '\n';
               std::cout << t << ',' << reference.outer_radius() << std::endl;
             }
         }
       std::cout << "# gelmpm-swelling-sphere-1d: " << reference.n_steps()
                 << " steps; equilibrium r/R_0 = " << reference.stretch_at(parameters.mu_top)
                 << " (isotropic free swelling at mu = mu_top); results: " << directory
-                << "/reference_radius.csv, " << directory << "/reference_profiles.csv"
-                << std::endl;
+                << "/reference_radius.csv, " << directory << "/reference_profiles.csv" << std::endl;
     }
   catch (const std::exception &e)
     {

@@ -48,7 +48,7 @@ namespace
     double lo = 1. + 1e-12, hi = 10.;
     for (unsigned int k = 0; k < 200; ++k)
       {
-        const double mid                = 0.5 * (lo + hi);
+        const double mid            = 0.5 * (lo + hi);
         (mu_of(mid) < mu ? lo : hi) = mid;
       }
     return 0.5 * (lo + hi) / lambda_0;
@@ -85,8 +85,7 @@ main()
       sphere.advance_to(2000.);
       const double closed_form = closed_form_stretch(mu_top);
       std::cout << "mu_top = " << mu_top << ": closed-form r/R_0 = " << std::fixed
-                << std::setprecision(6) << closed_form
-                << "; r(1, 2000 tau_d) equals it to 1e-5: "
+                << std::setprecision(6) << closed_form << "; r(1, 2000 tau_d) equals it to 1e-5: "
                 << (std::abs(sphere.outer_radius() - closed_form) < 1e-5)
                 << "; the class's stretch_at agrees to 1e-12: "
                 << (std::abs(sphere.stretch_at(mu_top) - closed_form) < 1e-12) << std::endl
@@ -124,10 +123,10 @@ main()
   {
     FreeSwellingSphere1D sphere(parameters(100, 1.02));
     sphere.advance_to(0.01);
-    const double uptake_start = sphere.solvent_uptake();
-    const double t_0 = 0.01, t_1 = 1.;
-    const unsigned int n_samples  = 2000;
-    double             integral   = 0., flux = sphere.surface_flux(), time = t_0;
+    const double       uptake_start = sphere.solvent_uptake();
+    const double       t_0 = 0.01, t_1 = 1.;
+    const unsigned int n_samples = 2000;
+    double             integral = 0., flux = sphere.surface_flux(), time = t_0;
     for (unsigned int k = 1; k <= n_samples; ++k)
       {
         const double t_next = t_0 * std::pow(t_1 / t_0, static_cast<double>(k) / n_samples);

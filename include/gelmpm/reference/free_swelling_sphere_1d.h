@@ -28,15 +28,15 @@ namespace GelMPM
    * Discretisation: nodes R_i = 1 - (1 - i/n)^g graded towards the surface carry r_i (r_0 = 0);
    * each cell [R_k, R_k+1] carries one mu_k (a staggered, P1-P0 arrangement). Equilibrium is the
    * stationarity of the discrete energy sum_k W(lambda_r, lambda_theta, J, mu_k) V0_k in the r_i,
-   * with lambda_r = (r_k+1 - r_k)/(R_k+1 - R_k), lambda_theta = (r_k + r_k+1)/(R_k + R_k+1) and
-   * J = lambda_0^3 (r_k+1^3 - r_k^3)/(R_k+1^3 - R_k^3) (the cell's exact volume ratio), so that
-   * the traction-free surface is the natural condition and a uniform dilation is an exact discrete
-   * solution. Solvent conservation is a finite-volume balance per cell, d/dt (r_k+1^3 - r_k^3)/3 =
-   * F_k+1 - F_k with the fluxes F_i = R_i^2 k d mu/dR on the nodes (F_0 = 0: the centre's face has
-   * no area). Variable-step BDF2 in time (a backward-Euler start), steps growing geometrically;
-   * Newton's method on the coupled banded system (LAPACK dgbsv) each step. Written from the
-   * closed-form equations, independently of the MPM solver, of FloryRehnerGel and of
-   * ConstrainedSwelling1D.
+   * with lambda_r = (r_k+1 - r_k)/(R_k+1 - R_k), J = lambda_0^3 (r_k+1^3 - r_k^3)/(R_k+1^3 -
+   * R_k^3) (the cell's exact volume ratio) and lambda_theta = (J/(lambda_0^3 lambda_r))^1/2 (the
+   * hoop stretch that reproduces it), so that the traction-free surface is the natural condition
+   * and a uniform dilation is an exact discrete solution. Solvent conservation is a finite-volume
+   * balance per cell, d/dt (r_k+1^3 - r_k^3)/3 = F_k+1 - F_k with the fluxes F_i = R_i^2 k d mu/dR
+   * on the nodes (F_0 = 0: the centre's face has no area). Variable-step BDF2 in time (a
+   * backward-Euler start), steps growing geometrically; Newton's method on the coupled banded
+   * system (LAPACK dgbsv) each step. Written from the closed-form equations, independently of the
+   * MPM solver, of FloryRehnerGel and of ConstrainedSwelling1D.
    */
   class FreeSwellingSphere1D
   {
