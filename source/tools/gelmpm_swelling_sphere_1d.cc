@@ -3,6 +3,7 @@
 // radius against time and the fields at the requested times as CSV files; see
 // doc/free_swelling_sphere.md for the equations and a convergence study.
 #include <gelmpm/reference/free_swelling_sphere_1d.h>
+#include <gelmpm/reference/tool_times.h>
 
 #include <algorithm>
 #include <boost/program_options.hpp>
@@ -13,26 +14,6 @@
 #include <iostream>
 #include <set>
 #include <sstream>
-
-namespace
-{
-  std::vector<double>
-  parse_times(const std::string &text)
-  {
-    std::vector<double> times;
-    std::stringstream   in(text);
-    std::string         item;
-    while (std::getline(in, item, ','))
-      {
-        std::size_t  used  = 0;
-        const double value = std::stod(item, &used);
-        if (value <= 0. || item.find_first_not_of(" \t", used) != std::string::npos)
-          throw std::invalid_argument("--times: '" + item + "' is not a positive number");
-        times.push_back(value);
-      }
-    return times;
-  }
-} // namespace
 
 
 int
@@ -90,7 +71,7 @@ main(int argc, char **argv)
           return 0;
         }
       po::notify(vm);
-      const std::vector<double> profile_times = parse_times(times_text);
+      const std::vector<double> profile_times = GelMPM::parse_positive_times(times_text);
       const double              end = *std::max_element(profile_times.begin(), profile_times.end());
 
       std::set<double> times(profile_times.begin(), profile_times.end());
