@@ -2,6 +2,7 @@
 // Writes the thickness change against time and the stretch and chemical-potential profiles at
 // chosen times as CSV; see doc/constrained_swelling.md for the equations and a convergence study.
 #include <gelmpm/reference/constrained_swelling_1d.h>
+#include <gelmpm/reference/tool_times.h>
 
 #include <boost/program_options.hpp>
 #include <cmath>
@@ -11,26 +12,6 @@
 #include <iostream>
 #include <set>
 #include <sstream>
-
-namespace
-{
-  std::vector<double>
-  parse_times(const std::string &text)
-  {
-    std::vector<double> times;
-    std::stringstream   in(text);
-    std::string         item;
-    while (std::getline(in, item, ','))
-      {
-        std::size_t  used  = 0;
-        const double value = std::stod(item, &used);
-        if (value <= 0. || item.find_first_not_of(" \t", used) != std::string::npos)
-          throw std::invalid_argument("--times: '" + item + "' is not a positive number");
-        times.push_back(value);
-      }
-    return times;
-  }
-} // namespace
 
 
 int
@@ -88,7 +69,7 @@ main(int argc, char **argv)
           return 0;
         }
       po::notify(vm);
-      const std::vector<double> profile_times = parse_times(times_text);
+      const std::vector<double> profile_times = GelMPM::parse_positive_times(times_text);
       const double              end = *std::max_element(profile_times.begin(), profile_times.end());
 
       std::set<double> times(profile_times.begin(), profile_times.end());
