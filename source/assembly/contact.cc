@@ -147,7 +147,7 @@ namespace GelMPM
 
   template <int dim>
   void
-  ContactAssembler<dim>::add_obstacle(const Obstacle<dim>  &obstacle,
+  ContactAssembler<dim>::add_obstacle(const Obstacle<dim>    &obstacle,
                                       const PointRecord<dim> &point,
                                       const Tensor<1, dim>   &traction,
                                       const bool              with_matrix,
@@ -166,8 +166,14 @@ namespace GelMPM
         const double sigma_n = n * traction;
         if (beta * g - sigma_n > 0.)
           {
-            add_displacement_nitsche(
-              point, outer(n, n), g * n, beta, this->nitsche.symmetry, with_matrix, s, copy);
+            add_displacement_nitsche(point,
+                                     outer(n, n),
+                                     g * n,
+                                     beta,
+                                     this->nitsche.symmetry,
+                                     with_matrix,
+                                     s,
+                                     copy);
             // The curvature of a sphere: beta g dm/dx, the derivative of g m beyond m (x) m.
             if (with_matrix && obstacle.shape == Obstacle<dim>::Shape::sphere)
               for (unsigned int a = 0; a < s.n_u; ++a)

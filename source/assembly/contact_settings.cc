@@ -20,13 +20,14 @@ namespace GelMPM
   {
     using namespace dealii;
     prm.enter_subsection("Contact");
-    prm.declare_entry("Method",
-                      "none",
-                      Patterns::Selection("none|penalty|nitsche"),
-                      "Contact of free surfaces with the planes of symmetry listed in 'Grid "
-                      "sides' and the rigid 'Obstacles' (doc/method.md, \"Contact\"): none; penalty (beta_c max(g, 0) on "
-                      "penetrating surface points); nitsche (symmetric Nitsche terms of a roller "
-                      "on the active points, consistent).");
+    prm.declare_entry(
+      "Method",
+      "none",
+      Patterns::Selection("none|penalty|nitsche"),
+      "Contact of free surfaces with the planes of symmetry listed in 'Grid "
+      "sides' and the rigid 'Obstacles' (doc/method.md, \"Contact\"): none; penalty (beta_c max(g, 0) on "
+      "penetrating surface points); nitsche (symmetric Nitsche terms of a roller "
+      "on the active points, consistent).");
     prm.declare_entry("Grid sides",
                       "",
                       Patterns::Anything(),

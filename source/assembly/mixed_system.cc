@@ -36,11 +36,8 @@ namespace GelMPM
     , contact(boundary_conditions, nitsche, spaces)
     , chemical_potential_nitsche(boundary_conditions, nitsche, spaces)
     , solvent_flux(boundary_conditions, nitsche, spaces)
-    , surface_terms{{&traction,
-                     &displacement_nitsche,
-                     &contact,
-                     &chemical_potential_nitsche,
-                     &solvent_flux}}
+    , surface_terms{
+        {&traction, &displacement_nitsche, &contact, &chemical_potential_nitsche, &solvent_flux}}
   {}
 
 
@@ -367,8 +364,11 @@ namespace GelMPM
             for (unsigned int k = 0; k < reactions.size(); ++k)
               {
                 const unsigned int index = contact.index_of_rigid(k);
-                const auto [active, g]   = contact.state(
-                  index, point, scratch.du_at_point, scratch.delta_F, scratch.mu_at_point);
+                const auto [active, g]   = contact.state(index,
+                                                       point,
+                                                       scratch.du_at_point,
+                                                       scratch.delta_F,
+                                                       scratch.mu_at_point);
                 (void)g;
                 if (!active)
                   continue;
@@ -379,10 +379,9 @@ namespace GelMPM
                   for (unsigned int d = 0; d < dim; ++d)
                     reaction.force[d] += copy.residual(dim * a + d);
                 reaction.area += point.measure;
-                reaction.radius =
-                  std::max(reaction.radius,
-                           contact.rigid_obstacle(k).distance_from_axis(
-                             point.x + point.edge_offset + scratch.du_at_point));
+                reaction.radius = std::max(reaction.radius,
+                                           contact.rigid_obstacle(k).distance_from_axis(
+                                             point.x + point.edge_offset + scratch.du_at_point));
               }
           }
       }
@@ -650,7 +649,7 @@ namespace GelMPM
   template <int dim>
   void
   MixedSystem<dim>::set_contact(const ContactSettings            &settings,
-                               const std::vector<Obstacle<dim>> &obstacles)
+                                const std::vector<Obstacle<dim>> &obstacles)
   {
     contact.set_settings(settings, obstacles);
   }

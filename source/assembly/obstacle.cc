@@ -100,12 +100,12 @@ namespace GelMPM
                 where + "/Shape",
                 "is '" + shape_text + "', which is not a shape of an obstacle",
                 std::string("give one of ") + shape_names);
-        shape              = shape_text == "plane"  ? Shape::plane
-                             : shape_text == "sphere" ? Shape::sphere
-                                                      : Shape::flat_punch;
-        const auto c       = get_double_list(prm, "Center", where + "/Center", dim);
-        const auto n       = get_double_list(prm, "Normal", where + "/Normal", dim);
-        const auto r       = get_double_list(prm, "Radius", where + "/Radius", 1);
+        shape        = shape_text == "plane"    ? Shape::plane
+                       : shape_text == "sphere" ? Shape::sphere
+                                                : Shape::flat_punch;
+        const auto c = get_double_list(prm, "Center", where + "/Center", dim);
+        const auto n = get_double_list(prm, "Normal", where + "/Normal", dim);
+        const auto r = get_double_list(prm, "Radius", where + "/Radius", 1);
         for (unsigned int d = 0; d < dim; ++d)
           {
             require(std::isfinite(c[d]) && std::isfinite(n[d]),
@@ -124,8 +124,7 @@ namespace GelMPM
         radius = r[0];
         require(shape == Shape::plane || (std::isfinite(radius) && radius > 0.),
                 where + "/Radius",
-                "is " + number(radius) + ", but a " + prm.get("Shape") +
-                  " needs a positive radius",
+                "is " + number(radius) + ", but a " + prm.get("Shape") + " needs a positive radius",
                 "give the radius (half-width in 2D) of the obstacle, e.g. 0.5");
 
         prm.enter_subsection("Motion");
@@ -206,16 +205,16 @@ namespace GelMPM
         result.possible = true;
         result.g        = radius - d;
         result.m        = -e / d;
-        result.dm_dx    = -(dealii::unit_symmetric_tensor<dim>() - dealii::outer_product(result.m, result.m)) / d;
+        result.dm_dx =
+          -(dealii::unit_symmetric_tensor<dim>() - dealii::outer_product(result.m, result.m)) / d;
         return result;
       }
     // A plane or a punch's face: m = -nu. For a grid side nu = -sign e_axis, so that m and g are
     // the side's sign e_axis and sign (x - value)[axis] exactly.
     for (unsigned int d = 0; d < dim; ++d)
       result.m[d] = 0. - normal[d]; // not -0 where normal[d] = 0
-    result.g = (x - current_center) * result.m;
-    result.possible =
-      shape == Shape::plane || distance_from_axis(x) <= radius * (1. + 1e-12);
+    result.g        = (x - current_center) * result.m;
+    result.possible = shape == Shape::plane || distance_from_axis(x) <= radius * (1. + 1e-12);
     return result;
   }
 
@@ -234,10 +233,11 @@ namespace GelMPM
   Obstacle<dim>::check_inside_grid(const dealii::Point<dim> &lower, const dealii::Point<dim> &upper)
   {
     set_time(0.);
-    const double reach = shape == Shape::plane ? 0. : radius;
+    const double reach  = shape == Shape::plane ? 0. : radius;
     bool         inside = true;
     for (unsigned int d = 0; d < dim; ++d)
-      inside = inside && current_center[d] + reach >= lower[d] && current_center[d] - reach <= upper[d];
+      inside =
+        inside && current_center[d] + reach >= lower[d] && current_center[d] - reach <= upper[d];
     require(inside,
             "Contact/" + name + "/Center",
             "puts the obstacle at t = 0 (" +

@@ -56,11 +56,12 @@ namespace
   void
   check_press(const bool drained)
   {
-    const std::string name  = std::string(dim == 2 ? "2D" : "3D") + (drained ? " drained" : " undrained");
-    const double      J_0   = std::pow(lambda_0, 3);
-    const double      mu_0  = stress_times_stretch(lambda_0, J_0, 0.) / (G / N_nu * J_0);
-    const double      b     = lambda_0 * (1. - delta / H);
-    double            a, P_bb;
+    const std::string name =
+      std::string(dim == 2 ? "2D" : "3D") + (drained ? " drained" : " undrained");
+    const double J_0  = std::pow(lambda_0, 3);
+    const double mu_0 = stress_times_stretch(lambda_0, J_0, 0.) / (G / N_nu * J_0);
+    const double b    = lambda_0 * (1. - delta / H);
+    double       a, P_bb;
     if (!drained)
       {
         a    = dim == 2 ? J_0 / (b * lambda_0) : std::sqrt(J_0 / b);
@@ -71,7 +72,7 @@ namespace
         const auto J = [&](const double s) {
           return dim == 2 ? s * b * lambda_0 : s * s * b;
         };
-        a    = GelMPMTests::bisect(
+        a = GelMPMTests::bisect(
           [&](const double s) {
             return stress_times_stretch(s, J(s), mu_0);
           },
@@ -82,7 +83,7 @@ namespace
     // P_bb per dry area; the top's dry area W/lambda_0 by 1/lambda_0 of the unit initial
     // thickness (2D), (W/lambda_0)^2 (3D).
     const double expected = -P_bb * std::pow(W, dim - 1) / (lambda_0 * lambda_0);
-    const double area = std::pow(W * a / lambda_0, dim - 1);
+    const double area     = std::pow(W * a / lambda_0, dim - 1);
 
     std::ostringstream bath;
     bath.precision(17);
@@ -102,11 +103,11 @@ namespace
         overrides.push_back("Time stepping/End time=100");
         overrides.push_back("Time stepping/Growth factor=2");
       }
-    const auto run = GelMPMTests::run_scene<dim>(
-      std::string(SOURCE_DIR) +
-        (dim == 2 ? "/obstacle_block_scene.prm" : "/obstacle_block_3d_scene.prm"),
-      "obstacle_block",
-      overrides);
+    const auto run = GelMPMTests::run_scene<dim>(std::string(SOURCE_DIR) +
+                                                   (dim == 2 ? "/obstacle_block_scene.prm"
+                                                             : "/obstacle_block_3d_scene.prm"),
+                                                 "obstacle_block",
+                                                 overrides);
     std::cout << name << ": run completed: " << (run.status == 0) << std::endl;
     const std::string axis   = dim == 2 ? "y" : "z";
     const double      force  = run.statistics.at("press_force_" + axis).back();

@@ -2,12 +2,12 @@
 #define gelmpm_assembly_mixed_system_h
 
 #include <gelmpm/assembly/chemical_potential_nitsche.h>
+#include <gelmpm/assembly/contact.h>
 #include <gelmpm/assembly/contact_settings.h>
 #include <gelmpm/assembly/discretisation.h>
 #include <gelmpm/assembly/displacement_nitsche.h>
 #include <gelmpm/assembly/neumann_terms.h>
 #include <gelmpm/assembly/nitsche_settings.h>
-#include <gelmpm/assembly/contact.h>
 #include <gelmpm/assembly/point_assembler.h>
 #include <gelmpm/assembly/point_cache.h>
 #include <gelmpm/assembly/point_projection.h>
