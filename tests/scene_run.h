@@ -25,9 +25,10 @@ namespace GelMPMTests
   };
 
   /**
-   * Run the 2D scene @p scene_file into @p directory (test mode, no particle output) with the
-   * further @p overrides ("Section/Entry=value"). The scene's log is discarded.
+   * Run the scene @p scene_file of dimension @p dim into @p directory (test mode, no particle
+   * output) with the further @p overrides ("Section/Entry=value"). The scene's log is discarded.
    */
+  template <int dim = 2>
   inline SceneRun
   run_scene(const std::string              &scene_file,
             const std::string              &directory,
@@ -46,7 +47,7 @@ namespace GelMPMTests
     SceneRun           run;
     try
       {
-        run.status = GelMPM::run_scene_file<2>(scene_file, parsed);
+        run.status = GelMPM::run_scene_file<dim>(scene_file, parsed);
       }
     catch (...)
       {

@@ -15,9 +15,9 @@ namespace GelMPM
      */
     struct VirtualDeformation
     {
-      const double         *N;
-      const Tensor<1, 2>   *G;
-      double                inverse_radius;
+      const double       *N;
+      const Tensor<1, 2> *G;
+      double              inverse_radius;
 
       /** T : B(a, k). */
       double
@@ -62,8 +62,11 @@ namespace GelMPM
   FloryRehnerGel<3>
   revolved_gel(const FloryRehnerGel<2> &gel)
   {
-    return FloryRehnerGel<3>(
-      gel.shear_modulus(), gel.chi(), gel.N_nu(), gel.diffusivity(), gel.lambda_0());
+    return FloryRehnerGel<3>(gel.shear_modulus(),
+                             gel.chi(),
+                             gel.N_nu(),
+                             gel.diffusivity(),
+                             gel.lambda_0());
   }
 
 
@@ -75,10 +78,11 @@ namespace GelMPM
                      const bool            with_tangent)
   {
     const double delta_hoop = 1. + du_r / point.radius;
-    return revolved_gel(*point.gel).incremental(with_hoop(delta_F, delta_hoop),
-                                                mu,
-                                                with_hoop(point.F_p, point.hoop),
-                                                with_tangent);
+    return revolved_gel(*point.gel)
+      .incremental(with_hoop(delta_F, delta_hoop),
+                   mu,
+                   with_hoop(point.F_p, point.hoop),
+                   with_tangent);
   }
 
 
@@ -119,12 +123,13 @@ namespace GelMPM
                                     AssemblyScratch<2>   &s,
                                     AssemblyCopy         &copy)
   {
-    const auto state = axisymmetric_state(point, s.delta_F, s.du_at_point[0], s.mu_at_point, with_matrix);
-    const double              V    = point.measure;
-    const double              kTnu = point.gel->kT_over_nu();
-    const double              m    = point.mobility;
-    const unsigned int        mu0  = s.mu0();
-    const VirtualDeformation  B{s.N, s.G, 1. / point.radius};
+    const auto state =
+      axisymmetric_state(point, s.delta_F, s.du_at_point[0], s.mu_at_point, with_matrix);
+    const double             V    = point.measure;
+    const double             kTnu = point.gel->kT_over_nu();
+    const double             m    = point.mobility;
+    const unsigned int       mu0  = s.mu0();
+    const VirtualDeformation B{s.N, s.G, 1. / point.radius};
 
     for (unsigned int a = 0; a < s.n_u; ++a)
       for (unsigned int i = 0; i < 2; ++i)

@@ -20,13 +20,14 @@ namespace GelMPM
   {
     using namespace dealii;
     prm.enter_subsection("Contact");
-    prm.declare_entry("Method",
-                      "none",
-                      Patterns::Selection("none|penalty|nitsche"),
-                      "Contact of free surfaces with the planes of symmetry listed in 'Grid "
-                      "sides' (doc/method.md, \"Contact\"): none; penalty (beta_c max(g, 0) on "
-                      "penetrating surface points); nitsche (symmetric Nitsche terms of a roller "
-                      "on the active points, consistent).");
+    prm.declare_entry(
+      "Method",
+      "none",
+      Patterns::Selection("none|penalty|nitsche"),
+      "Contact of free surfaces with the planes of symmetry listed in 'Grid "
+      "sides' and the rigid 'Obstacles' (doc/method.md, \"Contact\"): none; penalty (beta_c max(g, 0) on "
+      "penetrating surface points); nitsche (symmetric Nitsche terms of a roller "
+      "on the active points, consistent).");
     prm.declare_entry("Grid sides",
                       "",
                       Patterns::Anything(),
@@ -44,8 +45,11 @@ namespace GelMPM
 
 
   void
-  ContactSettings::parse_parameters(dealii::ParameterHandler &prm, const unsigned int dim)
+  ContactSettings::parse_parameters(dealii::ParameterHandler       &prm,
+                                    const unsigned int              dim,
+                                    const std::vector<std::string> &obstacle_names)
   {
+    obstacles = obstacle_names;
     prm.enter_subsection("Contact");
     const std::string name = prm.get("Method");
     method                 = name == "penalty"   ? Method::penalty
@@ -84,10 +88,14 @@ namespace GelMPM
                    "and the linear solves would keep no digit";
         throw InputError("Contact/Penalty", problem.str(), "give gamma_c of e.g. 1000");
       }
-    require(method == Method::none || !sides.empty(),
+    require(method == Method::none || !sides.empty() || !obstacles.empty(),
             "Contact/Grid sides",
-            "is empty while 'Contact/Method' is " + name,
-            "name the grid sides that are planes of symmetry, e.g. 'all'");
+            "is empty while 'Contact/Method' is " + name + " and 'Contact/Obstacles' is empty",
+            "name the grid sides that are planes of symmetry, e.g. 'all', or the obstacles");
+    require(method != Method::none || obstacles.empty(),
+            "Contact/Method",
+            "is none while 'Contact/Obstacles' names obstacles",
+            "set 'Contact/Method = penalty' (or nitsche) to impose the contact with them");
   }
 
 

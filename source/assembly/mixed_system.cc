@@ -34,14 +34,11 @@ namespace GelMPM
     , projection(cache, spaces, communicator)
     , traction(boundary_conditions, nitsche, spaces)
     , displacement_nitsche(boundary_conditions, nitsche, spaces)
-    , plane_contact(boundary_conditions, nitsche, spaces)
+    , contact(boundary_conditions, nitsche, spaces)
     , chemical_potential_nitsche(boundary_conditions, nitsche, spaces)
     , solvent_flux(boundary_conditions, nitsche, spaces)
-    , surface_terms{{&traction,
-                     &displacement_nitsche,
-                     &plane_contact,
-                     &chemical_potential_nitsche,
-                     &solvent_flux}}
+    , surface_terms{
+        {&traction, &displacement_nitsche, &contact, &chemical_potential_nitsche, &solvent_flux}}
   {}
 
 
@@ -204,6 +201,7 @@ namespace GelMPM
           dealii::scalar_product(outer(r.projector * (r.u_n - u_bar_n), r.normal), start.dP_n_dmu);
       }
     boundary_conditions.set_time(t_over_tau_d);
+    contact.set_time(t_over_tau_d);
     for (auto &r : cache.points())
       {
         if (r.kind == PointKind::volume || r.piece < 0)
@@ -378,6 +376,65 @@ namespace GelMPM
 
 
   template <int dim>
+  std::vector<typename MixedSystem<dim>::ObstacleReaction>
+  MixedSystem<dim>::obstacle_reactions(const dealii::Vector<double> &solution) const
+  {
+    // Each obstacle's own contact terms, tested with w = e_k as boundary_balances() tests the
+    // pieces' terms: the force on the gel is minus their sum, the force on the obstacle their sum.
+    std::vector<ObstacleReaction> reactions(contact.n_rigid_obstacles());
+    AssemblyScratch<dim>          scratch;
+    AssemblyCopy                  copy;
+    for (const auto &block : cache.blocks())
+      {
+        bool has_contact_points = false;
+        for (unsigned int p = block.first; p < block.end && !has_contact_points; ++p)
+          has_contact_points = cache.points()[p].kind != PointKind::volume &&
+                               cache.points()[p].assembled && contact.applies(cache.points()[p]);
+        if (!has_contact_points)
+          continue;
+        scratch.gather_block_coefficients(block, spaces_, solution);
+        for (unsigned int p = block.first; p < block.end; ++p)
+          {
+            const PointRecord<dim> &point = cache.points()[p];
+            if (point.kind == PointKind::volume || !point.assembled || !contact.applies(point))
+              continue;
+            scratch.evaluate_point_fields(point, cache);
+            for (unsigned int k = 0; k < reactions.size(); ++k)
+              {
+                const unsigned int index = contact.index_of_rigid(k);
+                const auto [active, g]   = contact.state(index,
+                                                       point,
+                                                       scratch.du_at_point,
+                                                       scratch.delta_F,
+                                                       scratch.mu_at_point);
+                (void)g;
+                if (!active)
+                  continue;
+                copy.residual.reinit(dim * scratch.n_u + scratch.n_mu);
+                contact.assemble_obstacle(index, point, false, scratch, copy);
+                auto &reaction = reactions[k];
+                for (unsigned int a = 0; a < scratch.n_u; ++a)
+                  for (unsigned int d = 0; d < dim; ++d)
+                    reaction.force[d] += copy.residual(dim * a + d);
+                reaction.area += point.measure;
+                reaction.radius = std::max(reaction.radius,
+                                           contact.rigid_obstacle(k).distance_from_axis(
+                                             point.x + point.edge_offset + scratch.du_at_point));
+              }
+          }
+      }
+    for (auto &reaction : reactions)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          reaction.force[d] = dealii::Utilities::MPI::sum(reaction.force[d], communicator);
+        reaction.area   = dealii::Utilities::MPI::sum(reaction.area, communicator);
+        reaction.radius = dealii::Utilities::MPI::max(reaction.radius, communicator);
+      }
+    return reactions;
+  }
+
+
+  template <int dim>
   void
   MixedSystem<dim>::assemble_block(const PointBlock             &block,
                                    const dealii::Vector<double> &solution,
@@ -547,10 +604,10 @@ namespace GelMPM
           const auto  &basis     = spaces_.u_space().basis_1d(d);
           const double tolerance = 0.25 * basis.cell_size();
           const bool   held = r.kind == PointKind::volume || r.projector[d][d] > 0.5;
-          if ((held || plane_contact.on_contact_plane(d, -1.)) && x[d] < basis.x_min() &&
+          if ((held || contact.on_contact_plane(d, -1.)) && x[d] < basis.x_min() &&
               x[d] > basis.x_min() - tolerance)
             x[d] = basis.x_min();
-          if ((held || plane_contact.on_contact_plane(d, 1.)) && x[d] > basis.x_max() &&
+          if ((held || contact.on_contact_plane(d, 1.)) && x[d] > basis.x_max() &&
               x[d] < basis.x_max() + tolerance)
             x[d] = basis.x_max();
           if (x[d] < basis.x_min() || x[d] > basis.x_max())
@@ -636,9 +693,10 @@ namespace GelMPM
 
   template <int dim>
   void
-  MixedSystem<dim>::set_contact(const ContactSettings &settings)
+  MixedSystem<dim>::set_contact(const ContactSettings            &settings,
+                                const std::vector<Obstacle<dim>> &obstacles)
   {
-    plane_contact.set_settings(settings);
+    contact.set_settings(settings, obstacles);
   }
 
 
@@ -648,7 +706,7 @@ namespace GelMPM
   {
     unsigned int active      = 0;
     double       penetration = 0.;
-    if (!plane_contact.enabled())
+    if (!contact.enabled())
       return {active, penetration};
     for (const auto &r : cache.points())
       {
@@ -656,7 +714,7 @@ namespace GelMPM
             boundary_conditions.piece(r.piece).displacement_prescribed())
           continue;
         const auto [du, delta_F, mu] = cache.fields_at(r, solution);
-        const auto [is_active, g]    = plane_contact.state(r, du, delta_F, mu);
+        const auto [is_active, g]    = contact.state(r, du, delta_F, mu);
         penetration                  = std::max(penetration, g);
         active += is_active;
       }

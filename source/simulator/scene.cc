@@ -10,7 +10,8 @@ namespace GelMPM
   void
   Scene<dim>::declare_parameters(dealii::ParameterHandler       &prm,
                                  const std::vector<std::string> &boundary_pieces,
-                                 const std::vector<std::string> &material_regions)
+                                 const std::vector<std::string> &material_regions,
+                                 const std::vector<std::string> &obstacle_names)
   {
     FloryRehnerGel<dim>::declare_parameters(prm);
     MaterialRegions<dim>::declare_parameters(prm, material_regions);
@@ -21,6 +22,7 @@ namespace GelMPM
     DiscretisationSettings::declare_parameters(prm);
     NitscheSettings::declare_parameters(prm);
     ContactSettings::declare_parameters(prm);
+    declare_obstacles<dim>(prm, obstacle_names);
   }
 
 
@@ -29,7 +31,8 @@ namespace GelMPM
                     const std::vector<std::string> &boundary_pieces,
                     const std::string              &scene_directory,
                     const MPI_Comm                  communicator,
-                    const std::vector<std::string> &material_regions)
+                    const std::vector<std::string> &material_regions,
+                    const std::vector<std::string> &obstacle_names)
     : communicator(communicator)
   {
     material.parse_parameters(prm);
@@ -40,7 +43,10 @@ namespace GelMPM
     generator.parse_parameters(prm);
     discretisation.parse_parameters(prm);
     nitsche.parse_parameters(prm);
-    contact.parse_parameters(prm, dim);
+    contact.parse_parameters(prm, dim, obstacle_names);
+    obstacles = parse_obstacles<dim>(prm, obstacle_names);
+    for (auto &obstacle : obstacles)
+      obstacle.check_inside_grid(grid.lower, grid.upper);
   }
 
 
@@ -116,7 +122,7 @@ namespace GelMPM
                                                 *spaces,
                                                 triangulation->get_communicator());
     if (contact.enabled())
-      system->set_contact(contact);
+      system->set_contact(contact, obstacles);
   }
 
 

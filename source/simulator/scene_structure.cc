@@ -28,6 +28,17 @@ namespace GelMPM
                       "boundary point belongs to the first piece whose selector it satisfies; "
                       "points of no piece are traction-free and impermeable.");
     prm.leave_subsection();
+    prm.enter_subsection("Contact");
+    prm.declare_entry("Obstacles",
+                      "",
+                      dealii::Patterns::List(dealii::Patterns::Anything()),
+                      "Comma-separated names of rigid obstacles with a prescribed motion (a "
+                      "plane, a sphere or a flat punch). Each name gets a subsection "
+                      "'Contact/<name>' with its shape, geometry and motion; their contact with "
+                      "the free pieces is imposed as 'Method' says, and statistics.csv gets the "
+                      "columns <name>_force_x, ..., <name>_contact_area and "
+                      "<name>_contact_radius (doc/statistics.md). Empty: none.");
+    prm.leave_subsection();
     prm.enter_subsection("Material");
     prm.declare_entry("Regions",
                       "",
@@ -50,6 +61,9 @@ namespace GelMPM
     p.enter_subsection("Boundary conditions");
     s.boundary_pieces = dealii::Utilities::split_string_list(p.get("Pieces"), ',');
     p.leave_subsection();
+    p.enter_subsection("Contact");
+    s.obstacles = dealii::Utilities::split_string_list(p.get("Obstacles"), ',');
+    p.leave_subsection();
     p.enter_subsection("Material");
     s.material_regions = dealii::Utilities::split_string_list(p.get("Regions"), ',');
     p.leave_subsection();
@@ -57,6 +71,8 @@ namespace GelMPM
     check_section_names(s.boundary_pieces, "Boundary conditions/Pieces", "piece");
     // A region's subsection sits beside the section's own entries and subsections.
     check_section_names(s.material_regions, "Material/Regions", "region");
+    // An obstacle's subsection sits beside the section's entries.
+    check_section_names(s.obstacles, "Contact/Obstacles", "obstacle");
     return s;
   }
 

@@ -50,7 +50,10 @@ namespace GelMPM
   {
     SceneStructure::declare_parameters(prm);
     OutputSettings::declare_parameters(prm);
-    Scene<dim>::declare_parameters(prm, structure.boundary_pieces, structure.material_regions);
+    Scene<dim>::declare_parameters(prm,
+                                   structure.boundary_pieces,
+                                   structure.material_regions,
+                                   structure.obstacles);
     LinearSolver::declare_parameters(prm);
     NewtonSettings::declare_parameters(prm);
     TimeStepping::declare_parameters(prm);
@@ -71,7 +74,8 @@ namespace GelMPM
             structure.boundary_pieces,
             scene_file.empty() ? "" : std::filesystem::path(scene_file).parent_path().string(),
             MPI_COMM_WORLD,
-            structure.material_regions)
+            structure.material_regions,
+            structure.obstacles)
     , scene_file(scene_file)
     , pcout(std::cout, dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
     , pcerr(std::cerr, dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
@@ -304,6 +308,8 @@ namespace GelMPM
     const double largest_mu = scene.regions.largest_swelling_chemical_potential();
     for (unsigned int i = 0; i < scene.boundary_conditions.n_pieces(); ++i)
       scene.boundary_conditions.piece(i).check_values(samples[i], times, largest_mu);
+    for (auto &obstacle : scene.obstacles)
+      obstacle.check_motion(times);
   }
 
 
@@ -512,6 +518,8 @@ namespace GelMPM
     if (scene.contact.enabled())
       for (const char *name : {"contact_points", "contact_penetration"})
         columns.push_back(name);
+    for (const auto &c : obstacle_columns())
+      columns.push_back(c);
     for (const auto &c : observables.columns())
       columns.push_back(c);
     for (const auto &c : balance.columns())
@@ -555,6 +563,22 @@ namespace GelMPM
 
 
   template <int dim>
+  std::vector<std::string>
+  Simulator<dim>::obstacle_columns() const
+  {
+    std::vector<std::string> columns;
+    for (const auto &obstacle : scene.obstacles)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          columns.push_back(obstacle.name + "_force_" + "xyz"[d]);
+        columns.push_back(obstacle.name + "_contact_area");
+        columns.push_back(obstacle.name + "_contact_radius");
+      }
+    return columns;
+  }
+
+
+  template <int dim>
   void
   Simulator<dim>::record_statistics(const NewtonReport           &report,
                                     const unsigned int            attempts,
@@ -586,6 +610,16 @@ namespace GelMPM
         const auto [active, penetration] = scene.system->contact_state(*solution);
         statistics.set("contact_points", active);
         statistics.set("contact_penetration", penetration);
+      }
+    // The obstacles' reactions of the converged state (before_update()); none at the start.
+    const auto columns = obstacle_columns();
+    for (unsigned int k = 0, c = 0; k < scene.obstacles.size(); ++k)
+      {
+        const bool known = solution != nullptr && k < reactions.size();
+        for (unsigned int d = 0; d < dim; ++d)
+          statistics.set(columns[c++], known ? reactions[k].force[d] : 0.);
+        statistics.set(columns[c++], known ? reactions[k].area : 0.);
+        statistics.set(columns[c++], known ? reactions[k].radius : 0.);
       }
     observables.evaluate(scene.particles, scene.regions, dirichlet_errors, statistics);
     statistics.write_row();
@@ -775,6 +809,9 @@ namespace GelMPM
     balances.clear();
     if (balance.enabled())
       balances = scene.system->boundary_balances(solution, dt * scales.tau_d);
+    reactions.clear();
+    if (!scene.obstacles.empty())
+      reactions = scene.system->obstacle_reactions(solution);
     return false;
   }
 

@@ -23,6 +23,10 @@ namespace GelMPM
    *   (sigma_n = n.(P_n N) the normal traction, negative in compression), the active set of
    *   Nitsche's method for contact; consistent, so the penetration vanishes with the mesh.
    * Either way the active set is that of the current Newton iterate (semi-smooth Newton).
+   *
+   * The same terms keep the free surfaces out of the rigid obstacles named in 'Obstacles'
+   * (Obstacle: planes, spheres, flat punches with a prescribed motion), each with a subsection
+   * of its own; the grid sides are fixed plane obstacles (ContactAssembler).
    */
   struct ContactSettings
   {
@@ -62,9 +66,15 @@ namespace GelMPM
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 
-    /** Read the section; @p dim rejects sides a 2D grid does not have. */
+    /** The names of the rigid obstacles ('Contact/Obstacles', read by SceneStructure). */
+    std::vector<std::string> obstacles;
+
+    /** Read the section; @p dim rejects sides a 2D grid does not have; @p obstacles are the
+     * names of the rigid obstacles. */
     void
-    parse_parameters(dealii::ParameterHandler &prm, const unsigned int dim);
+    parse_parameters(dealii::ParameterHandler       &prm,
+                     const unsigned int              dim,
+                     const std::vector<std::string> &obstacles = {});
   };
 } // namespace GelMPM
 

@@ -16,7 +16,7 @@ namespace GelMPM
    * The exact tangent includes the third derivative of the energy contracted with W (a central
    * difference of A_n along W), so that it is the Jacobian of the residual. Shared by the
    * prescribed displacements (DisplacementNitscheAssembler) and the Nitsche variant of plane
-   * contact (PlaneContactAssembler: a roller while active).
+   * contact (ContactAssembler: a roller on the obstacle while active).
    */
   template <int dim>
   void

@@ -2,12 +2,12 @@
 #define gelmpm_assembly_mixed_system_h
 
 #include <gelmpm/assembly/chemical_potential_nitsche.h>
+#include <gelmpm/assembly/contact.h>
 #include <gelmpm/assembly/contact_settings.h>
 #include <gelmpm/assembly/discretisation.h>
 #include <gelmpm/assembly/displacement_nitsche.h>
 #include <gelmpm/assembly/neumann_terms.h>
 #include <gelmpm/assembly/nitsche_settings.h>
-#include <gelmpm/assembly/plane_contact.h>
 #include <gelmpm/assembly/point_assembler.h>
 #include <gelmpm/assembly/point_cache.h>
 #include <gelmpm/assembly/point_projection.h>
@@ -73,7 +73,7 @@ namespace GelMPM
    * tangent (NewtonSystem's matrix and residual), the boundary data of a step and the point
    * updates. Each term of the
    * weak form is an assembler of its own (PointAssembler): VolumeTermAssembler at volume points;
-   * TractionAssembler, DisplacementNitscheAssembler, PlaneContactAssembler,
+   * TractionAssembler, DisplacementNitscheAssembler, ContactAssembler,
    * ChemicalPotentialNitscheAssembler and SolventFluxAssembler, in this order, at the surface
    * points of a piece. The projections are PointProjection's; the error norms of a step are in
    * mixed_system_errors.cc.
@@ -235,10 +235,10 @@ namespace GelMPM
 
     /**
      * Keep the free surfaces behind the planes of symmetry of @p settings (the "Contact"
-     * section); off until called.
+     * section) and out of the rigid @p obstacles; off until called.
      */
     void
-    set_contact(const ContactSettings &settings);
+    set_contact(const ContactSettings &settings, const std::vector<Obstacle<dim>> &obstacles = {});
 
     /**
      * The contact state of @p solution: the number of surface points on which the contact
@@ -267,6 +267,28 @@ namespace GelMPM
      */
     std::vector<PieceBalance>
     boundary_balances(const dealii::Vector<double> &solution, const double dt) const;
+
+    /** What the gel does to one rigid obstacle (ContactAssembler::rigid_obstacle()). */
+    struct ObstacleReaction
+    {
+      /**
+       * The force the gel exerts on the obstacle: the obstacle's contact terms of the residual
+       * tested with w = e_k, summed over the surface points (minus its share of the pieces'
+       * forces of boundary_balances()), in G times length^(dim-1) (per unit thickness in 2D).
+       */
+      dealii::Tensor<1, dim> force;
+      /** The sum of PointRecord::measure over the points where its contact is active. */
+      double area = 0.;
+      /** The largest distance of such a point from the obstacle's axis (0 if none). */
+      double radius = 0.;
+    };
+
+    /**
+     * The reaction of each rigid obstacle for the converged @p solution, at the obstacle's
+     * position of the step's end. Collective.
+     */
+    std::vector<ObstacleReaction>
+    obstacle_reactions(const dealii::Vector<double> &solution) const;
 
     /** Number of material points of the last setup(), and how many take part in assembly. */
     unsigned int
@@ -333,7 +355,7 @@ namespace GelMPM
     VolumeTermAssembler<dim>                         volume_term;
     TractionAssembler<dim>                           traction;
     DisplacementNitscheAssembler<dim>                displacement_nitsche;
-    PlaneContactAssembler<dim>                       plane_contact;
+    ContactAssembler<dim>                            contact;
     ChemicalPotentialNitscheAssembler<dim>           chemical_potential_nitsche;
     SolventFluxAssembler<dim>                        solvent_flux;
     const std::array<const PointAssembler<dim> *, 5> surface_terms;

@@ -55,7 +55,8 @@ namespace GelMPM
     static void
     declare_parameters(dealii::ParameterHandler       &prm,
                        const std::vector<std::string> &boundary_pieces,
-                       const std::vector<std::string> &material_regions = {});
+                       const std::vector<std::string> &material_regions = {},
+                       const std::vector<std::string> &obstacles        = {});
 
     /**
      * Parse and check the sections declared by declare_parameters(). Throws InputError. Files the
@@ -66,7 +67,8 @@ namespace GelMPM
           const std::vector<std::string> &boundary_pieces,
           const std::string              &scene_directory  = "",
           const MPI_Comm                  communicator     = MPI_COMM_WORLD,
-          const std::vector<std::string> &material_regions = {});
+          const std::vector<std::string> &material_regions = {},
+          const std::vector<std::string> &obstacles        = {});
 
     /**
      * Create the triangulation of the background grid, the material points of the body in their
@@ -124,6 +126,8 @@ namespace GelMPM
     DiscretisationSettings      discretisation;
     NitscheSettings             nitsche;
     ContactSettings             contact;
+    /** The rigid obstacles of "Contact" ('Obstacles'), at t = 0. */
+    std::vector<Obstacle<dim>> obstacles;
 
     MPI_Comm                                    communicator;
     std::unique_ptr<dealii::Triangulation<dim>> triangulation;

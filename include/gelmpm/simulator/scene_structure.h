@@ -12,8 +12,8 @@ namespace GelMPM
 {
   /**
    * @brief What a scene file must say before the rest of it can be declared: the space dimension
-   * and the names of the boundary pieces and of the material regions (each gets a subsection of
-   * its own).
+   * and the names of the boundary pieces, of the material regions and of the obstacles (each gets
+   * a subsection of its own).
    *
    * Read in a first pass over the scene file that ignores every other entry (as ASPECT reads
    * "Dimension" before dispatching to its 2D or 3D simulator).
@@ -26,6 +26,8 @@ namespace GelMPM
     std::vector<std::string> boundary_pieces;
     /** Names of the material regions, in the order given ("Material/Regions"). */
     std::vector<std::string> material_regions;
+    /** Names of the rigid obstacles, in the order given ("Contact/Obstacles"). */
+    std::vector<std::string> obstacles;
 
     /** Declare the entries this structure is read from. */
     static void

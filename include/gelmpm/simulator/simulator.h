@@ -138,6 +138,11 @@ namespace GelMPM
     /** InputError if the run would overwrite the scene file's own directory. */
     void
     check_output_directory(bool resume) const;
+    /** The columns of the rigid obstacles: per obstacle <name>_force_x, ..., <name>_contact_area,
+     * <name>_contact_radius. */
+    std::vector<std::string>
+    obstacle_columns() const;
+
     void
     open_statistics();
     /** Create the system and the output files; write the initial state (or resume). */
@@ -252,6 +257,8 @@ namespace GelMPM
     bool                                     inexact_extrapolation_noted = false;
     // The pieces' terms of the step being accepted, taken before a kick moves its state.
     std::vector<typename MixedSystem<dim>::PieceBalance> balances;
+    /** The rigid obstacles' reactions of the step being accepted. */
+    std::vector<typename MixedSystem<dim>::ObstacleReaction> reactions;
 
     // Held by rank 0 from the preparation of the output directory to the end of the run.
     std::unique_ptr<DirectoryLock> output_lock;

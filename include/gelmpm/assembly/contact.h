@@ -1,0 +1,131 @@
+#ifndef gelmpm_assembly_contact_h
+#define gelmpm_assembly_contact_h
+
+#include <gelmpm/assembly/contact_settings.h>
+#include <gelmpm/assembly/obstacle.h>
+#include <gelmpm/assembly/point_assembler.h>
+
+#include <utility>
+#include <vector>
+
+namespace GelMPM
+{
+  /**
+   * @brief The frictionless contact of free surfaces with the obstacles of the "Contact" section
+   * (ContactSettings): the planes of symmetry on the grid's sides ('Grid sides', fixed plane
+   * obstacles) and the rigid obstacles with a prescribed motion ('Obstacles'), at the surface
+   * points of a piece whose displacement is free. Not a term of the paper: the unilateral
+   * condition g <= 0 on the gap g (the penetration, Obstacle::gap(), along the direction m into
+   * the obstacle; doc/method.md), imposed
+   * - by a penalty: R_u[w] += A_s beta_c max(g, 0) m . w, beta_c = gamma_c G / h_u, with its
+   *   exact tangent (including the curvature of a sphere);
+   * - or by Nitsche's method: the terms of a roller on the obstacle's surface
+   *   (add_displacement_nitsche() with Pi = m (x) m, g m and beta_c) where beta_c g - m . (P_n N)
+   *   > 0, Nitsche's active set.
+   * The active set is that of the Newton iterate (semi-smooth Newton). The obstacles are summed
+   * in their order, the grid sides first. Off (nothing added) until set_settings() enables it.
+   */
+  template <int dim>
+  class ContactAssembler final : public SurfaceTermAssembler<dim>
+  {
+  public:
+    using SurfaceTermAssembler<dim>::SurfaceTermAssembler;
+
+    /** Use @p settings, with the planes on the sides of the background grid they name, and the
+     * rigid @p obstacles after them. */
+    void
+    set_settings(const ContactSettings &settings, const std::vector<Obstacle<dim>> &obstacles);
+
+    /** Move the rigid obstacles to time @p t (in tau_d). */
+    void
+    set_time(const double t);
+
+    /** Whether contact is imposed at all. */
+    bool
+    enabled() const;
+
+    /** Whether the grid side of direction @p axis, lower (@p sign -1) or upper (+1), is a
+     * contact plane. */
+    bool
+    on_contact_plane(const unsigned int axis, const double sign) const;
+
+    /** The number of rigid obstacles (those of 'Contact/Obstacles', not the grid sides). */
+    unsigned int
+    n_rigid_obstacles() const;
+
+    /** The rigid obstacle @p k (0 for the first of 'Contact/Obstacles'). */
+    const Obstacle<dim> &
+    rigid_obstacle(const unsigned int k) const;
+
+    /**
+     * Whether the contact condition with the obstacle @p k (all obstacles, the grid sides first)
+     * is active at the surface point @p point of a free piece with the fields @p du, @p delta_F
+     * and @p mu at it, and its penetration g (-infinity where it cannot touch).
+     */
+    std::pair<bool, double>
+    state(const unsigned int            k,
+          const PointRecord<dim>       &point,
+          const dealii::Tensor<1, dim> &du,
+          const dealii::Tensor<2, dim> &delta_F,
+          const double                  mu) const;
+
+    /**
+     * Whether the contact condition is active at the surface point @p point of a free piece for
+     * any obstacle, and its largest penetration max(g) over them (which may be negative: the
+     * distance to the nearest).
+     */
+    std::pair<bool, double>
+    state(const PointRecord<dim>       &point,
+          const dealii::Tensor<1, dim> &du,
+          const dealii::Tensor<2, dim> &delta_F,
+          const double                  mu) const;
+
+    /** Whether the term applies at @p point at all (contact on, a free piece). */
+    bool
+    applies(const PointRecord<dim> &point) const;
+
+    /** The terms of the obstacle @p k (all obstacles, the grid sides first) at @p point. */
+    void
+    assemble_obstacle(const unsigned int      k,
+                      const PointRecord<dim> &point,
+                      const bool              with_matrix,
+                      AssemblyScratch<dim>   &scratch,
+                      AssemblyCopy           &copy) const;
+
+    /** The index among all obstacles of the rigid obstacle @p k. */
+    unsigned int
+    index_of_rigid(const unsigned int k) const;
+
+    void
+    assemble(const PointRecord<dim> &point,
+             const double            dt,
+             const bool              with_matrix,
+             AssemblyScratch<dim>   &scratch,
+             AssemblyCopy           &copy) const override;
+
+  private:
+    /** The terms of @p obstacle at @p point, with the point's traction P_n N (Nitsche). */
+    void
+    add_obstacle(const Obstacle<dim>          &obstacle,
+                 const PointRecord<dim>       &point,
+                 const dealii::Tensor<1, dim> &traction,
+                 const bool                    with_matrix,
+                 AssemblyScratch<dim>         &scratch,
+                 AssemblyCopy                 &copy) const;
+
+    /** The contact penalty beta_c at @p point. */
+    double
+    penalty(const PointRecord<dim> &point) const;
+
+    /** The current position x_n + du of @p point. */
+    static dealii::Point<dim>
+    position(const PointRecord<dim> &point, const dealii::Tensor<1, dim> &du);
+
+    ContactSettings            contact;
+    std::vector<Obstacle<dim>> obstacles;
+    /** The number of grid sides at the front of obstacles. */
+    unsigned int n_sides = 0;
+  };
+} // namespace GelMPM
+
+#endif
