@@ -61,9 +61,11 @@ namespace GelMPM
             "is axisymmetric in a 3D scene: a body of revolution is modelled in its meridian "
             "plane",
             "set 'Dimension = 2' for an axisymmetric scene, or 'Coordinate system = Cartesian'");
+    std::ostringstream lower_x;
+    lower_x << lo[0];
     require(!axisymmetric || lo[0] == 0.,
             "Background grid/Lower corner",
-            "has x = " + std::to_string(lo[0]) +
+            "has x = " + lower_x.str() +
               " in an axisymmetric scene, whose grid starts on the axis R = 0",
             "give 'Lower corner = 0, <z_min>' and keep the body at R >= 0");
     check_memory(n);

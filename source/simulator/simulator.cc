@@ -394,9 +394,14 @@ namespace GelMPM
   Simulator<dim>::print_header()
   {
     pcout << "GelMPM: hydrogel scene '" << std::filesystem::path(scene_file).filename().string()
-          << "', " << dim << "D" << (dim == 2 ? " (plane strain)" : "") << ", "
-          << scene.discretisation.name()
+          << "', " << dim << "D"
+          << (dim == 2 ? (scene.grid.axisymmetric ? " (axisymmetric)" : " (plane strain)") : "")
+          << ", " << scene.discretisation.name()
           << (scene.discretisation.extension ? ", extended B-splines" : "") << '\n';
+    // The unknowns are those of the meridian plane: every mode the analysis can find is one.
+    if (scene.grid.axisymmetric && stability.enabled())
+      pcout << "  stability: axisymmetric modes only (a body of revolution may lose stability "
+               "first in a mode that varies with the angle, which this analysis does not see)\n";
     if (!output_settings.test_mode)
       pcout << "  GelMPM " << GELMPM_VERSION << " (" << GELMPM_GIT_REVISION << "), deal.II "
             << DEAL_II_PACKAGE_VERSION << ", "

@@ -164,4 +164,5 @@ main()
                  "tau_d: "
               << close << std::endl;
   }
+  return 0;
 }

@@ -16,6 +16,9 @@
 //    lambda_0 (3D: (W a/lambda_0)^2) within 1e-4, the reaction is the force of the pressed top
 //    piece with the opposite sign (1e-10), and the sum of the other pieces' forces (1e-8: the
 //    Newton tolerance).
+//    The same as an axisymmetric scene (obstacle_block_axisymmetric_scene.prm: the block is a
+//    cylinder of radius W, its left side the axis): the state and the closed forms are the 3D
+//    block's, the areas the revolved ones (pi W^2 instead of W^2).
 // 2. A rigid circle (2D, penalty) pressed into the same block's top at the plane of symmetry:
 //    its reaction in x and y equals the sum of the forces of the pieces it does not touch within
 //    1e-8 of its force, and it is in contact over part of the top only.
@@ -54,23 +57,27 @@ namespace
   /** The plane-press checks of one run of dimension @p dim, @p drained or not. */
   template <int dim>
   void
-  check_press(const bool drained)
+  check_press(const bool drained, const bool axisymmetric = false)
   {
-    const std::string name =
-      std::string(dim == 2 ? "2D" : "3D") + (drained ? " drained" : " undrained");
-    const double J_0  = std::pow(lambda_0, 3);
-    const double mu_0 = stress_times_stretch(lambda_0, J_0, 0.) / (G / N_nu * J_0);
-    const double b    = lambda_0 * (1. - delta / H);
+    const std::string name = std::string(axisymmetric ? "axisymmetric"
+                                         : dim == 2   ? "2D"
+                                                      : "3D") +
+                             (drained ? " drained" : " undrained");
+    // An axisymmetric block deforms as the 3D one.
+    const bool   three_dimensional = dim == 3 || axisymmetric;
+    const double J_0               = std::pow(lambda_0, 3);
+    const double mu_0              = stress_times_stretch(lambda_0, J_0, 0.) / (G / N_nu * J_0);
+    const double b                 = lambda_0 * (1. - delta / H);
     double       a, P_bb;
     if (!drained)
       {
-        a    = dim == 2 ? J_0 / (b * lambda_0) : std::sqrt(J_0 / b);
+        a    = !three_dimensional ? J_0 / (b * lambda_0) : std::sqrt(J_0 / b);
         P_bb = G * (b * b - a * a) / b;
       }
     else
       {
         const auto J = [&](const double s) {
-          return dim == 2 ? s * b * lambda_0 : s * s * b;
+          return !three_dimensional ? s * b * lambda_0 : s * s * b;
         };
         a = GelMPMTests::bisect(
           [&](const double s) {
@@ -82,8 +89,10 @@ namespace
       }
     // P_bb per dry area; the top's dry area W/lambda_0 by 1/lambda_0 of the unit initial
     // thickness (2D), (W/lambda_0)^2 (3D).
-    const double expected = -P_bb * std::pow(W, dim - 1) / (lambda_0 * lambda_0);
-    const double area     = std::pow(W * a / lambda_0, dim - 1);
+    const double revolution = axisymmetric ? M_PI : 1.;
+    const double expected =
+      -P_bb * revolution * std::pow(W, three_dimensional ? 2 : 1) / (lambda_0 * lambda_0);
+    const double area = revolution * std::pow(W * a / lambda_0, three_dimensional ? 2 : 1);
 
     std::ostringstream bath;
     bath.precision(17);
@@ -103,11 +112,13 @@ namespace
         overrides.push_back("Time stepping/End time=100");
         overrides.push_back("Time stepping/Growth factor=2");
       }
-    const auto run = GelMPMTests::run_scene<dim>(std::string(SOURCE_DIR) +
-                                                   (dim == 2 ? "/obstacle_block_scene.prm"
-                                                             : "/obstacle_block_3d_scene.prm"),
-                                                 "obstacle_block",
-                                                 overrides);
+    const auto run =
+      GelMPMTests::run_scene<dim>(std::string(SOURCE_DIR) +
+                                    (axisymmetric ? "/obstacle_block_axisymmetric_scene.prm"
+                                     : dim == 2   ? "/obstacle_block_scene.prm"
+                                                  : "/obstacle_block_3d_scene.prm"),
+                                  "obstacle_block",
+                                  overrides);
     std::cout << name << ": run completed: " << (run.status == 0) << std::endl;
     const std::string axis   = dim == 2 ? "y" : "z";
     const double      force  = run.statistics.at("press_force_" + axis).back();
@@ -147,6 +158,8 @@ main(int argc, char **argv)
   check_press<2>(true);
   check_press<3>(false);
   check_press<3>(true);
+  check_press<2>(false, true);
+  check_press<2>(true, true);
 
   // 2. The circle.
   {

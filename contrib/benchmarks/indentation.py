@@ -1,0 +1,178 @@
+#!/usr/bin/python3
+"""Indentation of a swollen gel layer by a rigid sphere or a flat-ended cylinder, axisymmetric
+(prm/indentation_sphere.prm, doc/indentation.md): the force F(t) against Hertz's (sphere) or
+Boussinesq's (flat punch) undrained and drained limits, on several grids and depths, and the
+normalised relaxation against Hu, Zhao, Vlassak & Suo's fits for linear poroelasticity.
+
+  /usr/bin/python3 contrib/benchmarks/indentation.py [--gelmpm build/gelmpm]
+      [--output output/indentation] [--shape sphere|flat] [--cells 50,75,100] [--depths 0.02]
+      [--end 2000] [--plot doc/figures/indentation_sphere.png]
+
+Each run is the scene with 'Background grid/Cells' = n x (n + n/25) (h = 2.5/n), the depth delta
+(the sphere's contact radius a = sqrt(R delta)) and 'End time'. The limits use the swollen gel's
+shear modulus G_s and drained Poisson ratio nu, both computed here from the Flory-Rehner free
+energy at the scene's swollen state (mu = 0; small shear and uniaxial stretches at fixed mu):
+  sphere:     F = (4/3) E* sqrt(R) delta^(3/2),   E*(0+) = 4 G_s,   E*(inf) = 2 G_s/(1 - nu);
+  flat punch: F = 2 E* a delta  (a the punch radius).
+F(0+) is the force at the end of the loading (1e-4 of the poroelastic time a^2/c), F(inf) the
+force at the end time. The relaxation g = (F(t) - F(inf))/(F(0+) - F(inf)) is plotted against
+tau = c t / a^2 with c = 2 (1 - nu)/(1 - 2 nu) G_s kappa the layer's consolidation coefficient
+(kappa = (J - 1)/J D N nu the permeability in the model's units); the published fits of linear
+poroelasticity (Hu et al., Appl. Phys. Lett. 96, 121904, 2010) are
+  sphere:     g = 0.491 exp(-0.908 sqrt(tau)) + 0.509 exp(-1.679 tau),
+  flat punch: g = 1.304 exp(-sqrt(tau)) - 0.304 exp(-0.254 tau).
+Prints a Markdown table; writes <output>/indentation.csv and the plot.
+"""
+import argparse
+import math
+import os
+import subprocess
+import time
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
+SCENE = os.path.join(ROOT, "prm", "indentation_sphere.prm")
+CHI, N_NU, RADIUS, HEIGHT = 0.1, 7.299e-3, 1.0, 2.5
+
+
+def bisect(f, lo, hi):
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if (f(mid) < 0.) == (f(lo) < 0.):
+            lo = mid
+        else:
+            hi = mid
+    return 0.5 * (lo + hi)
+
+
+def gel_constants():
+    """lambda_s at mu = 0 (eq. (22)), G_s, the drained nu and the consolidation coefficient c/D."""
+    def mu0(l):
+        l3 = l ** 3
+        return N_NU * (1 / l - 1 / l3) + math.log1p(-1 / l3) + 1 / l3 + CHI / l3 ** 2
+    ls = bisect(mu0, 1.01, 10.)
+
+    def stress(F):
+        J = np.linalg.det(F)
+        dpsi = (math.log1p(-1 / J) + 1 / J + CHI / J ** 2) / N_NU
+        Fit = np.linalg.inv(F).T
+        return (F - Fit) + dpsi * J * Fit
+    eps = 1e-6
+    lateral = lambda e: stress(ls * np.diag([1 + eps, 1 + e, 1 + e]))[1, 1]
+    nu = -bisect(lateral, -1e-5, 1e-5) / eps
+    F = ls * np.eye(3)
+    F[0, 1] = ls * eps
+    G_s = (stress(F) @ F.T / np.linalg.det(F))[0, 1] / eps
+    J = ls ** 3
+    c = 2 * (1 - nu) / (1 - 2 * nu) * G_s * (J - 1) / J * N_NU
+    return ls, G_s, nu, c
+
+
+def limits(shape, depth, G_s, nu):
+    if shape == "sphere":
+        a = math.sqrt(RADIUS * depth)
+        hertz = 4. / 3. * math.sqrt(RADIUS) * depth ** 1.5
+        return a, hertz * 4 * G_s, hertz * 2 * G_s / (1 - nu)
+    a = RADIUS
+    return a, 2 * a * depth * 4 * G_s, 2 * a * depth * 2 * G_s / (1 - nu)
+
+
+def fit(shape, tau):
+    tau = np.asarray(tau)
+    if shape == "sphere":
+        return 0.491 * np.exp(-0.908 * np.sqrt(tau)) + 0.509 * np.exp(-1.679 * tau)
+    return 1.304 * np.exp(-np.sqrt(tau)) - 0.304 * np.exp(-0.254 * tau)
+
+
+def run(args, shape, n, depth, c):
+    a, _, _ = limits(shape, depth, 1., 0.)
+    t_load = 1e-4 * a * a / c
+    directory = os.path.join(args.output, "%s_n%d_d%g" % (shape, n, depth))
+    os.makedirs(directory, exist_ok=True)
+    sets = ["Output/Directory=" + directory, "Output/Write particles=false",
+            "Background grid/Cells=%d, %d" % (n, n + n // 25),
+            "Contact/indenter/Motion/Function expression=0; -%.12g * min(t / %.12g, 1)"
+            % (depth, t_load),
+            "Time stepping/Initial step=%.12g" % (t_load / 10),
+            "Time stepping/Step caps=%.12g: %.12g" % (t_load, t_load / 10),
+            "Time stepping/Stop at times=%.12g" % t_load,
+            "Time stepping/End time=%g" % args.end]
+    if shape == "flat":
+        sets += ["Contact/indenter/Shape=flat punch", "Contact/indenter/Radius=%g" % RADIUS,
+                 "Contact/indenter/Center=0, %g" % HEIGHT,
+                 "Background grid/Upper corner=%g, 2.6" % (2.5 * RADIUS)]
+    command = [args.gelmpm]
+    for s in sets:
+        command += ["--set", s]
+    command.append(SCENE)
+    start = time.time()
+    with open(os.path.join(directory, "log.txt"), "w") as log:
+        subprocess.run(command, check=True, stdout=log, stderr=subprocess.STDOUT)
+    data = np.genfromtxt(os.path.join(directory, "statistics.csv"), delimiter=",", names=True)
+    t, F = data["t_over_tau_d"], data["indenter_force_y"]
+    i0 = int(np.argmin(np.abs(t - t_load)))
+    return dict(t=t, F=F, t_load=t_load, F0=F[i0], Finf=F[-1], a=a, wall=time.time() - start,
+                radius=data["indenter_contact_radius"][i0])
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--gelmpm", default=os.path.join(ROOT, "build", "gelmpm"))
+    parser.add_argument("--output", default=os.path.join(ROOT, "output", "indentation"))
+    parser.add_argument("--shape", default="sphere", choices=["sphere", "flat"])
+    parser.add_argument("--cells", default="50,75,100")
+    parser.add_argument("--depths", default="0.02")
+    parser.add_argument("--end", type=float, default=2000.)
+    parser.add_argument("--plot", default="")
+    args = parser.parse_args()
+    ls, G_s, nu, c = gel_constants()
+    print("swollen stretch %.6f, G_s = %.6f G, drained nu = %.6f, c = %.6g D, 2(1 - nu) = %.4f"
+          % (ls, G_s, nu, c, 2 * (1 - nu)))
+    results = []
+    print("| h | delta | F(0+) | /closed form | F(end) | /closed form | F(0+)/F(end) | contact "
+          "radius at 0+ / a | wall |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    for depth in [float(d) for d in args.depths.split(",")]:
+        for n in [int(k) for k in args.cells.split(",")]:
+            r = run(args, args.shape, n, depth, c)
+            a, F0, Finf = limits(args.shape, depth, G_s, nu)
+            r.update(n=n, depth=depth)
+            results.append(r)
+            print("| %.4f | %g | %.6g | %.4f | %.6g | %.4f | %.4f | %.3f | %.0f s |"
+                  % (2.5 / n, depth, r["F0"], r["F0"] / F0, r["Finf"], r["Finf"] / Finf,
+                     r["F0"] / r["Finf"], r["radius"] / a, r["wall"]), flush=True)
+    with open(os.path.join(args.output, "indentation.csv"), "w") as out:
+        out.write("n,depth,t_over_tau_d,tau,force,g\n")
+        for r in results:
+            for t, F in zip(r["t"], r["F"]):
+                if t >= r["t_load"]:
+                    out.write("%d,%g,%.10g,%.10g,%.10g,%.10g\n" % (
+                        r["n"], r["depth"], t, c * (t - r["t_load"]) / r["a"] ** 2, F,
+                        (F - r["Finf"]) / (r["F0"] - r["Finf"])))
+    if args.plot:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        fig, ax = plt.subplots(figsize=(6, 4))
+        for r in results:
+            keep = r["t"] >= r["t_load"]
+            tau = c * (r["t"][keep] - r["t_load"]) / r["a"] ** 2
+            g = (r["F"][keep] - r["Finf"]) / (r["F0"] - r["Finf"])
+            ax.semilogx(np.maximum(tau, 1e-5), g, marker=".",
+                        label="MPM h = %.4f, delta = %g" % (2.5 / r["n"], r["depth"]))
+        tau = np.logspace(-5, 2, 200)
+        ax.semilogx(tau, fit(args.shape, tau), "k--", label="Hu et al. 2010 (linear poroelasticity)")
+        ax.set_xlabel("c t / a^2")
+        ax.set_ylabel("(F(t) - F(inf)) / (F(0+) - F(inf))")
+        ax.set_title("%s indentation of a swollen layer" % ("Sphere" if args.shape == "sphere"
+                                                              else "Flat punch"))
+        ax.legend(fontsize=7)
+        fig.tight_layout()
+        fig.savefig(args.plot, dpi=120)
+        print("plot:", args.plot)
+
+
+if __name__ == "__main__":
+    main()
