@@ -5,11 +5,12 @@ Boussinesq's (flat punch) undrained and drained limits, on several grids and dep
 normalised relaxation against Hu, Zhao, Vlassak & Suo's fits for linear poroelasticity.
 
   /usr/bin/python3 contrib/benchmarks/indentation.py [--gelmpm build/gelmpm]
-      [--output output/indentation] [--shape sphere|flat] [--cells 50,75,100] [--depths 0.02]
-      [--end 2000] [--plot doc/figures/indentation_sphere.png]
+      [--output output/indentation] [--shape sphere|flat] [--size 5] [--cells 100,150,200]
+      [--depths 0.02] [--end 2000] [--plot doc/figures/indentation_sphere.png]
 
-Each run is the scene with 'Background grid/Cells' = n x (n + n/25) (h = 2.5/n), the depth delta
-(the sphere's contact radius a = sqrt(R delta)) and 'End time'. The limits use the swollen gel's
+Each run is the scene with a layer of radius and thickness S (--size; the scene's is 2.5) on
+'Background grid/Cells' = n x (n + 2) (h = S/n, even n), the depth delta (the sphere's contact
+radius a = sqrt(R delta)) and 'End time'. The limits use the swollen gel's
 shear modulus G_s and drained Poisson ratio nu, both computed here from the Flory-Rehner free
 energy at the scene's swollen state (mu = 0; small shear and uniaxial stretches at fixed mu):
   sphere:     F = (4/3) E* sqrt(R) delta^(3/2),   E*(0+) = 4 G_s,   E*(inf) = 2 G_s/(1 - nu);
@@ -34,7 +35,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
 SCENE = os.path.join(ROOT, "prm", "indentation_sphere.prm")
-CHI, N_NU, RADIUS, HEIGHT = 0.1, 7.299e-3, 1.0, 2.5
+CHI, N_NU, RADIUS = 0.1, 7.299e-3, 1.0
 
 
 def bisect(f, lo, hi):
@@ -89,10 +90,14 @@ def fit(shape, tau):
 def run(args, shape, n, depth, c):
     a, _, _ = limits(shape, depth, 1., 0.)
     t_load = 1e-4 * a * a / c
-    directory = os.path.join(args.output, "%s_n%d_d%g" % (shape, n, depth))
+    size = args.size
+    directory = os.path.join(args.output, "%s_s%g_n%d_d%g" % (shape, size, n, depth))
     os.makedirs(directory, exist_ok=True)
     sets = ["Output/Directory=" + directory, "Output/Write particles=false",
-            "Background grid/Cells=%d, %d" % (n, n + n // 25),
+            "Background grid/Cells=%d, %d" % (n, n + 2),
+            "Background grid/Upper corner=%.12g, %.12g" % (size, size * (n + 2) / n),
+            "Geometry/Boxes=0, 0 : %g, %g" % (size, size),
+            "Contact/indenter/Center=0, %g" % (size + (RADIUS if shape == "sphere" else 0.)),
             "Contact/indenter/Motion/Function expression=0; -%.12g * min(t / %.12g, 1)"
             % (depth, t_load),
             "Time stepping/Initial step=%.12g" % (t_load / 10),
@@ -100,9 +105,7 @@ def run(args, shape, n, depth, c):
             "Time stepping/Stop at times=%.12g" % t_load,
             "Time stepping/End time=%g" % args.end]
     if shape == "flat":
-        sets += ["Contact/indenter/Shape=flat punch", "Contact/indenter/Radius=%g" % RADIUS,
-                 "Contact/indenter/Center=0, %g" % HEIGHT,
-                 "Background grid/Upper corner=%g, 2.6" % (2.5 * RADIUS)]
+        sets += ["Contact/indenter/Shape=flat punch", "Contact/indenter/Radius=%g" % RADIUS]
     command = [args.gelmpm]
     for s in sets:
         command += ["--set", s]
@@ -122,7 +125,8 @@ def main():
     parser.add_argument("--gelmpm", default=os.path.join(ROOT, "build", "gelmpm"))
     parser.add_argument("--output", default=os.path.join(ROOT, "output", "indentation"))
     parser.add_argument("--shape", default="sphere", choices=["sphere", "flat"])
-    parser.add_argument("--cells", default="50,75,100")
+    parser.add_argument("--size", type=float, default=5.)
+    parser.add_argument("--cells", default="100,150,200")
     parser.add_argument("--depths", default="0.02")
     parser.add_argument("--end", type=float, default=2000.)
     parser.add_argument("--plot", default="")
@@ -131,6 +135,7 @@ def main():
     print("swollen stretch %.6f, G_s = %.6f G, drained nu = %.6f, c = %.6g D, 2(1 - nu) = %.4f"
           % (ls, G_s, nu, c, 2 * (1 - nu)))
     results = []
+    print("layer radius and thickness %g" % args.size)
     print("| h | delta | F(0+) | /closed form | F(end) | /closed form | F(0+)/F(end) | contact "
           "radius at 0+ / a | wall |")
     print("|---|---|---|---|---|---|---|---|---|")
@@ -141,7 +146,7 @@ def main():
             r.update(n=n, depth=depth)
             results.append(r)
             print("| %.4f | %g | %.6g | %.4f | %.6g | %.4f | %.4f | %.3f | %.0f s |"
-                  % (2.5 / n, depth, r["F0"], r["F0"] / F0, r["Finf"], r["Finf"] / Finf,
+                  % (args.size / n, depth, r["F0"], r["F0"] / F0, r["Finf"], r["Finf"] / Finf,
                      r["F0"] / r["Finf"], r["radius"] / a, r["wall"]), flush=True)
     with open(os.path.join(args.output, "indentation.csv"), "w") as out:
         out.write("n,depth,t_over_tau_d,tau,force,g\n")
@@ -161,7 +166,7 @@ def main():
             tau = c * (r["t"][keep] - r["t_load"]) / r["a"] ** 2
             g = (r["F"][keep] - r["Finf"]) / (r["F0"] - r["Finf"])
             ax.semilogx(np.maximum(tau, 1e-5), g, marker=".",
-                        label="MPM h = %.4f, delta = %g" % (2.5 / r["n"], r["depth"]))
+                        label="MPM h = %.4f, delta = %g" % (args.size / r["n"], r["depth"]))
         tau = np.logspace(-5, 2, 200)
         ax.semilogx(tau, fit(args.shape, tau), "k--", label="Hu et al. 2010 (linear poroelasticity)")
         ax.set_xlabel("c t / a^2")
