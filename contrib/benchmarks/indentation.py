@@ -6,7 +6,7 @@ normalised relaxation against Hu, Zhao, Vlassak & Suo's fits for linear poroelas
 
   /usr/bin/python3 contrib/benchmarks/indentation.py [--gelmpm build/gelmpm]
       [--output output/indentation] [--shape sphere|flat] [--size 5] [--cells 100,150,200]
-      [--depths 0.02] [--end 2000] [--plot doc/figures/indentation_sphere.png]
+      [--depths 0.02] [--end 2000] [--plot doc/figures/indentation_sphere.png] [--reuse [--existing-only]]
 
 Each run is the scene with a layer of radius and thickness S (--size; the scene's is 2.5) on
 'Background grid/Cells' = n x (n + 2) (h = S/n, even n), the depth delta (the sphere's contact
@@ -28,7 +28,6 @@ import argparse
 import math
 import os
 import subprocess
-import time
 
 import numpy as np
 
@@ -110,13 +109,17 @@ def run(args, shape, n, depth, c):
     for s in sets:
         command += ["--set", s]
     command.append(SCENE)
-    start = time.time()
-    with open(os.path.join(directory, "log.txt"), "w") as log:
-        subprocess.run(command, check=True, stdout=log, stderr=subprocess.STDOUT)
+    log_file = os.path.join(directory, "log.txt")
+    done = args.reuse and os.path.exists(log_file) and "reached t/tau_d" in open(log_file).read()
+    if not done and args.existing_only:
+        return None
+    if not done:
+        with open(log_file, "w") as log:
+            subprocess.run(command, check=True, stdout=log, stderr=subprocess.STDOUT)
     data = np.genfromtxt(os.path.join(directory, "statistics.csv"), delimiter=",", names=True)
     t, F = data["t_over_tau_d"], data["indenter_force_y"]
     i0 = int(np.argmin(np.abs(t - t_load)))
-    return dict(t=t, F=F, t_load=t_load, F0=F[i0], Finf=F[-1], a=a, wall=time.time() - start,
+    return dict(t=t, F=F, t_load=t_load, F0=F[i0], Finf=F[-1], a=a, wall=data["wall_time"][-1],
                 radius=data["indenter_contact_radius"][i0])
 
 
@@ -130,6 +133,10 @@ def main():
     parser.add_argument("--depths", default="0.02")
     parser.add_argument("--end", type=float, default=2000.)
     parser.add_argument("--plot", default="")
+    parser.add_argument("--reuse", action="store_true",
+                        help="take the results of runs already completed in --output")
+    parser.add_argument("--existing-only", action="store_true",
+                        help="with --reuse: leave out the runs not completed in --output")
     args = parser.parse_args()
     ls, G_s, nu, c = gel_constants()
     print("swollen stretch %.6f, G_s = %.6f G, drained nu = %.6f, c = %.6g D, 2(1 - nu) = %.4f"
@@ -142,6 +149,8 @@ def main():
     for depth in [float(d) for d in args.depths.split(",")]:
         for n in [int(k) for k in args.cells.split(",")]:
             r = run(args, args.shape, n, depth, c)
+            if r is None:
+                continue
             a, F0, Finf = limits(args.shape, depth, G_s, nu)
             r.update(n=n, depth=depth)
             results.append(r)
