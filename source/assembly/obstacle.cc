@@ -23,6 +23,23 @@ namespace GelMPM
       text << x;
       return text.str();
     }
+
+
+    /** The gap of a point at @p e from the centre of a ball of radius @p R into @p result (not
+     * possible at the centre): g = R - |e|, m = -e/|e|, dm/dx = -(I - m (x) m)/|e|. */
+    template <typename Gap, int dim>
+    void
+    ball_gap(const dealii::Tensor<1, dim> &e, const double R, Gap &result)
+    {
+      const double d = e.norm();
+      if (d == 0.)
+        return;
+      result.possible = true;
+      result.g        = R - d;
+      result.m        = -e / d;
+      result.dm_dx =
+        -(dealii::unit_symmetric_tensor<dim>() - dealii::outer_product(result.m, result.m)) / d;
+    }
   } // namespace
 
 
@@ -225,15 +242,7 @@ namespace GelMPM
     Gap result;
     if (shape == Shape::sphere)
       {
-        const dealii::Tensor<1, dim> e = x - current_center;
-        const double                 d = e.norm();
-        if (d == 0.)
-          return result;
-        result.possible = true;
-        result.g        = radius - d;
-        result.m        = -e / d;
-        result.dm_dx =
-          -(dealii::unit_symmetric_tensor<dim>() - dealii::outer_product(result.m, result.m)) / d;
+        ball_gap(dealii::Tensor<1, dim>(x - current_center), radius, result);
         return result;
       }
     // A plane or a punch's face: m = -nu. For a grid side nu = -sign e_axis, so that m and g are
@@ -260,16 +269,10 @@ namespace GelMPM
       return result;
     const dealii::Tensor<1, dim> e_r = radial / r;
     const dealii::Tensor<1, dim> v   = e - radius * e_r + edge_radius * normal;
-    const double                 d   = v.norm();
-    if (d == 0.)
-      return result;
-    result.possible = true;
-    result.g        = edge_radius - d;
-    result.m        = -v / d;
-    result.dm_dx =
-      -(dealii::unit_symmetric_tensor<dim>() - dealii::outer_product(result.m, result.m)) / d;
+    ball_gap(v, edge_radius, result);
     // In 3D the centre q turns with e_r: dq/dx = R (I - nu (x) nu - e_r (x) e_r)/r.
-    if (dim == 3)
+    const double d = v.norm();
+    if (dim == 3 && result.possible)
       result.dm_dx += radius / (r * d) *
                       (dealii::Tensor<2, dim>(dealii::unit_symmetric_tensor<dim>()) -
                        dealii::outer_product(normal, normal) - dealii::outer_product(e_r, e_r));
