@@ -121,7 +121,9 @@ namespace GelMPM
     if (contact.method == ContactSettings::Method::nitsche)
       {
         const auto state = point_state(r, delta_F, du, mu, false);
-        return {penalty(r) * gap.g - gap.m * (state.P_n * r.normal) > 0., gap.g};
+        return {contact.active_set_factor * penalty(r) * gap.g - gap.m * (state.P_n * r.normal) >
+                  0.,
+                gap.g};
       }
     return {gap.g > 0., gap.g};
   }
@@ -163,9 +165,9 @@ namespace GelMPM
     const Tensor<1, dim> &n    = gap.m;
     if (contact.method == ContactSettings::Method::nitsche)
       {
-        // Nitsche's active set: the augmented normal traction sigma_n - beta g < 0.
+        // Nitsche's active set: the augmented normal traction sigma_n - f beta g < 0.
         const double sigma_n = n * traction;
-        if (beta * g - sigma_n > 0.)
+        if (contact.active_set_factor * beta * g - sigma_n > 0.)
           {
             add_displacement_nitsche(point,
                                      outer(n, n),
@@ -175,8 +177,9 @@ namespace GelMPM
                                      with_matrix,
                                      s,
                                      copy);
-            // The curvature of a sphere: beta g dm/dx, the derivative of g m beyond m (x) m.
-            if (with_matrix && obstacle.shape == Obstacle<dim>::Shape::sphere)
+            // The curvature of a sphere or a punch's rounded edge: beta g dm/dx, the derivative
+            // of g m beyond m (x) m.
+            if (with_matrix && gap.dm_dx != Tensor<2, dim>())
               for (unsigned int a = 0; a < s.n_u; ++a)
                 for (unsigned int c = 0; c < s.n_u; ++c)
                   for (unsigned int k = 0; k < dim; ++k)

@@ -40,6 +40,17 @@ namespace GelMPM
                       Patterns::Double(0.),
                       "gamma_c: the contact penalty is beta_c = gamma_c G / h_u (both methods). At "
                       "most 1e8.");
+    prm.declare_entry(
+      "Active set factor",
+      "1",
+      Patterns::Double(0., 1.),
+      "nitsche: a surface point is in contact where f beta_c g - sigma_n > 0, f this factor "
+      "(sigma_n the normal traction, negative in compression; g the penetration). 1: Nitsche's "
+      "augmented active set. Where the gel is pressed over a whole face by a stiff beta_c, the "
+      "weakly imposed gap wiggles from point to point by more than sigma_n/beta_c and the points "
+      "switch in and out from one Newton iteration to the next; a smaller factor (e.g. 0.01) "
+      "lets the traction decide within that noise (doc/flat_punch.md, \"A rigid punch\"). "
+      "The terms of an active point are the same. Not used by the penalty method.");
     prm.leave_subsection();
   }
 
@@ -56,6 +67,7 @@ namespace GelMPM
                              : name == "nitsche" ? Method::nitsche
                                                  : Method::none;
     penalty                = prm.get_double("Penalty");
+    active_set_factor      = prm.get_double("Active set factor");
     sides                  = dealii::Utilities::split_string_list(prm.get("Grid sides"), ',');
     prm.leave_subsection();
 
@@ -80,6 +92,11 @@ namespace GelMPM
                 "list each side once");
       }
     require(penalty > 0., "Contact/Penalty", "must be positive", "give gamma_c > 0 (e.g. 1000)");
+    require(active_set_factor > 0.,
+            "Contact/Active set factor",
+            "is 0, which would make every surface point under compression a contact point "
+            "whatever its distance from the obstacle",
+            "give a factor in (0, 1], e.g. 1 (Nitsche's active set) or 0.01");
     if (penalty > largest_penalty)
       {
         std::ostringstream problem;

@@ -4,6 +4,7 @@
 #include <gelmpm/core/parameters.h>
 #include <gelmpm/scene/expression.h>
 
+#include <deal.II/base/utilities.h>
 #include <deal.II/lac/vector.h>
 
 #include <cmath>
@@ -21,6 +22,23 @@ namespace GelMPM
       std::ostringstream text;
       text << x;
       return text.str();
+    }
+
+
+    /** The gap of a point at @p e from the centre of a ball of radius @p R into @p result (not
+     * possible at the centre): g = R - |e|, m = -e/|e|, dm/dx = -(I - m (x) m)/|e|. */
+    template <typename Gap, int dim>
+    void
+    ball_gap(const dealii::Tensor<1, dim> &e, const double R, Gap &result)
+    {
+      const double d = e.norm();
+      if (d == 0.)
+        return;
+      result.possible = true;
+      result.g        = R - d;
+      result.m        = -e / d;
+      result.dm_dx =
+        -(dealii::unit_symmetric_tensor<dim>() - dealii::outer_product(result.m, result.m)) / d;
     }
   } // namespace
 
@@ -57,9 +75,9 @@ namespace GelMPM
                         "outward normal 'Normal'; sphere: the ball (a disk in 2D) of 'Radius' "
                         "about 'Center'; flat punch: a rigid punch whose flat face, centred at "
                         "'Center' with the outward normal 'Normal', has the radius 'Radius' (a "
-                        "half-width in 2D); beyond the face's edge it has no contact (a sharp "
-                        "edge). Frictionless, imposed as 'Method' says (doc/method.md, "
-                        "\"Contact\").");
+                        "half-width in 2D), its edge rounded by a quarter circle of 'Edge "
+                        "radius' beyond it. Frictionless, imposed as 'Method' says "
+                        "(doc/method.md, \"Contact\").");
     prm.declare_entry("Center",
                       dim == 2 ? "0, 0" : "0, 0, 0",
                       Patterns::Anything(),
@@ -72,6 +90,17 @@ namespace GelMPM
                       Patterns::Anything(),
                       "Sphere: its radius; flat punch: the radius of its face (in 2D its "
                       "half-width). Not used by a plane.");
+    prm.declare_entry("Edge radius",
+                      "",
+                      Patterns::Anything(),
+                      "Flat punch: the radius of its rounded edge, a quarter circle (3D: a quarter "
+                      "torus) beyond the face's edge that meets the face tangentially, so that the "
+                      "gap and the contact direction of a point sliding off the face are "
+                      "continuous. The face stays flat out to 'Radius'. Empty: " +
+                        number(100. * default_edge_fraction) +
+                        " % of 'Radius'; 0: a sharp edge (no contact beyond 'Radius', the contact "
+                        "force jumps there and Newton can cycle: doc/flat_punch.md, \"A rigid "
+                        "punch\"). Not used by a plane or a sphere.");
     prm.declare_entry("Normal",
                       dim == 2 ? "0, -1" : "0, 0, -1",
                       Patterns::Anything(),
@@ -126,6 +155,21 @@ namespace GelMPM
                 where + "/Radius",
                 "is " + number(radius) + ", but a " + prm.get("Shape") + " needs a positive radius",
                 "give the radius (half-width in 2D) of the obstacle, e.g. 0.5");
+        edge_radius = 0.;
+        if (shape == Shape::flat_punch)
+          {
+            if (dealii::Utilities::trim(prm.get("Edge radius")).empty())
+              edge_radius = default_edge_fraction * radius;
+            else
+              edge_radius = get_double_list(prm, "Edge radius", where + "/Edge radius", 1)[0];
+            require(std::isfinite(edge_radius) && edge_radius >= 0.,
+                    where + "/Edge radius",
+                    "is " + number(edge_radius) +
+                      ", but the radius of a punch's rounded edge cannot be negative",
+                    "give 0 for a sharp edge, a small positive length for a rounded one, or "
+                    "leave it empty (" +
+                      number(100. * default_edge_fraction) + " % of 'Radius')");
+          }
 
         prm.enter_subsection("Motion");
         motion = std::make_shared<dealii::Functions::ParsedFunction<dim>>(dim);
@@ -198,23 +242,40 @@ namespace GelMPM
     Gap result;
     if (shape == Shape::sphere)
       {
-        const dealii::Tensor<1, dim> e = x - current_center;
-        const double                 d = e.norm();
-        if (d == 0.)
-          return result;
-        result.possible = true;
-        result.g        = radius - d;
-        result.m        = -e / d;
-        result.dm_dx =
-          -(dealii::unit_symmetric_tensor<dim>() - dealii::outer_product(result.m, result.m)) / d;
+        ball_gap(dealii::Tensor<1, dim>(x - current_center), radius, result);
         return result;
       }
     // A plane or a punch's face: m = -nu. For a grid side nu = -sign e_axis, so that m and g are
     // the side's sign e_axis and sign (x - value)[axis] exactly.
     for (unsigned int d = 0; d < dim; ++d)
       result.m[d] = 0. - normal[d]; // not -0 where normal[d] = 0
-    result.g        = (x - current_center) * result.m;
-    result.possible = shape == Shape::plane || distance_from_axis(x) <= radius * (1. + 1e-12);
+    result.g = (x - current_center) * result.m;
+    if (shape == Shape::plane)
+      {
+        result.possible = true;
+        return result;
+      }
+    const dealii::Tensor<1, dim> e      = x - current_center;
+    const dealii::Tensor<1, dim> radial = e - (e * normal) * normal;
+    const double                 r      = radial.norm();
+    if (r <= radius * (1. + 1e-12))
+      {
+        result.possible = true;
+        return result;
+      }
+    // Beyond the face's edge: the quarter circle of radius rho about q = c + R e_r - rho nu, on
+    // the side of the gel of its centre, (x - c).nu >= -rho.
+    if (edge_radius == 0. || e * normal < -edge_radius)
+      return result;
+    const dealii::Tensor<1, dim> e_r = radial / r;
+    const dealii::Tensor<1, dim> v   = e - radius * e_r + edge_radius * normal;
+    ball_gap(v, edge_radius, result);
+    // In 3D the centre q turns with e_r: dq/dx = R (I - nu (x) nu - e_r (x) e_r)/r.
+    const double d = v.norm();
+    if (dim == 3 && result.possible)
+      result.dm_dx += radius / (r * d) *
+                      (dealii::Tensor<2, dim>(dealii::unit_symmetric_tensor<dim>()) -
+                       dealii::outer_product(normal, normal) - dealii::outer_product(e_r, e_r));
     return result;
   }
 
@@ -233,7 +294,7 @@ namespace GelMPM
   Obstacle<dim>::check_inside_grid(const dealii::Point<dim> &lower, const dealii::Point<dim> &upper)
   {
     set_time(0.);
-    const double reach  = shape == Shape::plane ? 0. : radius;
+    const double reach  = shape == Shape::plane ? 0. : radius + edge_radius;
     bool         inside = true;
     for (unsigned int d = 0; d < dim; ++d)
       inside =

@@ -20,8 +20,8 @@ namespace GelMPM
    * - by a penalty: R_u[w] += A_s beta_c max(g, 0) m . w, beta_c = gamma_c G / h_u, with its
    *   exact tangent (including the curvature of a sphere);
    * - or by Nitsche's method: the terms of a roller on the obstacle's surface
-   *   (add_displacement_nitsche() with Pi = m (x) m, g m and beta_c) where beta_c g - m . (P_n N)
-   *   > 0, Nitsche's active set.
+   *   (add_displacement_nitsche() with Pi = m (x) m, g m and beta_c) where f beta_c g -
+   *   m . (P_n N) > 0, Nitsche's active set (f = 'Active set factor', 1: the augmented one).
    * The active set is that of the Newton iterate (semi-smooth Newton). The obstacles are summed
    * in their order, the grid sides first. Off (nothing added) until set_settings() enables it.
    */

@@ -19,9 +19,10 @@ namespace GelMPM
    * surface point of a piece whose displacement is free:
    * - penalty: beta_c max(g, 0) n on the points that penetrate (beta_c = gamma_c G / h_u); the
    *   penetration of a loaded contact is of order (normal stress)/beta_c;
-   * - nitsche: the symmetric Nitsche terms of a roller on the points where beta_c g - sigma_n > 0
-   *   (sigma_n = n.(P_n N) the normal traction, negative in compression), the active set of
-   *   Nitsche's method for contact; consistent, so the penetration vanishes with the mesh.
+   * - nitsche: the symmetric Nitsche terms of a roller on the points where f beta_c g - sigma_n >
+   *   0 (sigma_n = n.(P_n N) the normal traction, negative in compression; f = 'Active set
+   *   factor', 1 for the augmented active set of Nitsche's method for contact); consistent, so
+   *   the penetration vanishes with the mesh.
    * Either way the active set is that of the current Newton iterate (semi-smooth Newton).
    *
    * The same terms keep the free surfaces out of the rigid obstacles named in 'Obstacles'
@@ -48,6 +49,9 @@ namespace GelMPM
     Method method = Method::none;
     /** gamma_c: beta_c = gamma_c G / h_u. */
     double penalty = 1000.;
+    /** f of Nitsche's active set f beta_c g - sigma_n > 0 ('Active set factor'; 1: the augmented
+     * active set). */
+    double active_set_factor = 1.;
     /** The sides of the background grid that are contact planes (left, right, bottom, top,
      * front, back). */
     std::vector<std::string> sides;

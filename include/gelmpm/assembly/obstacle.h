@@ -25,10 +25,16 @@ namespace GelMPM
    * - sphere: the ball |x - c| < R; g = R - |x - c|;
    * - flat punch: the half-space behind its face, (x - c).nu < 0, within the distance R of the
    *   axis through c along nu (a strip of half-width R in 2D, a disk of radius R in 3D); g =
-   *   -(x - c).nu there, and no contact beyond the face's edge (a sharp edge).
-   * The gap g is the penetration (positive inside) and m = -nu (plane, punch) or (c - x)/|x - c|
-   * (sphere) the direction of penetration, the obstacle's inward normal at the closest point of
-   * its surface: the force on the gel at a penetrating point is along -m.
+   *   -(x - c).nu there. Beyond the face's edge (r > R, r the distance from the axis) the edge is
+   *   rounded by a quarter circle of radius rho ('Edge radius'; a quarter torus in 3D) whose
+   *   centre q = c + R e_r - rho nu lies at depth rho behind the edge (e_r the radial
+   *   direction): g = rho - |x - q| and m = (q - x)/|x - q| there, as long as x lies in front of
+   *   the centre, (x - c).nu >= -rho; no contact elsewhere beyond the edge (the punch's side is
+   *   not modelled). g and m are continuous across r = R; rho = 0 is a sharp edge (no contact
+   *   beyond r = R, g and m jump there).
+   * The gap g is the penetration (positive inside) and m = -nu (plane, punch face) or
+   * (c - x)/|x - c| (sphere) the direction of penetration, the obstacle's inward normal at the
+   * closest point of its surface: the force on the gel at a penetrating point is along -m.
    */
   template <int dim>
   class Obstacle
@@ -51,7 +57,8 @@ namespace GelMPM
       /** The unit direction m of penetration. */
       dealii::Tensor<1, dim> m;
       /** The derivative of m with respect to the point's position: -(I - m (x) m)/|x - c| for
-       * a sphere, zero otherwise. */
+       * a sphere, -(I - m (x) m)/|x - q| + R (I - nu (x) nu - e_r (x) e_r)/(r |x - q|) on a
+       * punch's rounded edge (the second term the turn of e_r in 3D), zero on flat faces. */
       dealii::Tensor<2, dim> dm_dx;
     };
 
@@ -106,6 +113,10 @@ namespace GelMPM
     dealii::Point<dim> center;
     /** Radius of a sphere, of a punch's face (half-width in 2D). */
     double radius = 1.;
+    /** The radius rho of the rounded edge of a flat punch ('Edge radius'); 0: a sharp edge. */
+    double edge_radius = 0.;
+    /** The default 'Edge radius' of a flat punch, as a fraction of its 'Radius'. */
+    static constexpr double default_edge_fraction = 0.05;
     /** The unit outward normal nu of the face (plane, punch), the axis of a sphere. */
     dealii::Tensor<1, dim> normal;
 
