@@ -14,7 +14,7 @@ radius a = sqrt(R delta)) and 'End time'. The limits use the swollen gel's
 shear modulus G_s and drained Poisson ratio nu, both computed here from the Flory-Rehner free
 energy at the scene's swollen state (mu = 0; small shear and uniaxial stretches at fixed mu):
   sphere:     F = (4/3) E* sqrt(R) delta^(3/2),   E*(0+) = 4 G_s,   E*(inf) = 2 G_s/(1 - nu);
-  flat punch: F = 2 E* a delta  (a the punch radius).
+  flat punch: F = 2 E* a delta  (a = 0.25 the punch radius, its edge rounded by 'Edge radius').
 F(0+) is the force at the end of the loading (1e-4 of the poroelastic time a^2/c), F(inf) the
 force at the end time. The relaxation g = (F(t) - F(inf))/(F(0+) - F(inf)) is plotted against
 tau = c t / a^2 with c = 2 (1 - nu)/(1 - 2 nu) G_s kappa the layer's consolidation coefficient
@@ -70,12 +70,15 @@ def gel_constants():
     return ls, G_s, nu, c
 
 
+PUNCH_RADIUS = 0.25
+
+
 def limits(shape, depth, G_s, nu):
     if shape == "sphere":
         a = math.sqrt(RADIUS * depth)
         hertz = 4. / 3. * math.sqrt(RADIUS) * depth ** 1.5
         return a, hertz * 4 * G_s, hertz * 2 * G_s / (1 - nu)
-    a = RADIUS
+    a = PUNCH_RADIUS
     return a, 2 * a * depth * 4 * G_s, 2 * a * depth * 2 * G_s / (1 - nu)
 
 
@@ -104,7 +107,10 @@ def run(args, shape, n, depth, c):
             "Time stepping/Stop at times=%.12g" % t_load,
             "Time stepping/End time=%g" % args.end]
     if shape == "flat":
-        sets += ["Contact/indenter/Shape=flat punch", "Contact/indenter/Radius=%g" % RADIUS]
+        # Nitsche with the traction deciding the active set under the face (doc/flat_punch.md,
+        # "A rigid punch").
+        sets += ["Contact/indenter/Shape=flat punch", "Contact/indenter/Radius=%g" % PUNCH_RADIUS,
+                 "Contact/Method=nitsche", "Contact/Active set factor=0.01"]
     command = [args.gelmpm]
     for s in sets:
         command += ["--set", s]

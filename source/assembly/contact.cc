@@ -222,6 +222,17 @@ namespace GelMPM
 
 
   template <int dim>
+  Tensor<1, dim>
+  ContactAssembler<dim>::nitsche_traction(const PointRecord<dim>     &point,
+                                          const AssemblyScratch<dim> &s) const
+  {
+    if (contact.method != ContactSettings::Method::nitsche)
+      return Tensor<1, dim>();
+    return point_state(point, s.delta_F, s.du_at_point, s.mu_at_point, false).P_n * point.normal;
+  }
+
+
+  template <int dim>
   void
   ContactAssembler<dim>::assemble_obstacle(const unsigned int      k,
                                            const PointRecord<dim> &point,
@@ -231,11 +242,7 @@ namespace GelMPM
   {
     if (!applies(point))
       return;
-    Tensor<1, dim> traction;
-    if (contact.method == ContactSettings::Method::nitsche)
-      traction =
-        point_state(point, s.delta_F, s.du_at_point, s.mu_at_point, false).P_n * point.normal;
-    add_obstacle(obstacles[k], point, traction, with_matrix, s, copy);
+    add_obstacle(obstacles[k], point, nitsche_traction(point, s), with_matrix, s, copy);
   }
 
 
@@ -249,11 +256,8 @@ namespace GelMPM
   {
     if (!applies(point))
       return;
-    // The traction P_n N, once per point for all obstacles (Nitsche only).
-    Tensor<1, dim> traction;
-    if (contact.method == ContactSettings::Method::nitsche)
-      traction =
-        point_state(point, s.delta_F, s.du_at_point, s.mu_at_point, false).P_n * point.normal;
+    // Once per point for all obstacles.
+    const Tensor<1, dim> traction = nitsche_traction(point, s);
     for (const auto &obstacle : obstacles)
       add_obstacle(obstacle, point, traction, with_matrix, s, copy);
   }

@@ -22,9 +22,10 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const auto run = GelMPMTests::run_scene(std::string(SOURCE_DIR) + "/../../prm/swelling_sphere.prm",
-                                          "results",
-                                          {"Time stepping/Stop at times="});
+  const auto                               run =
+    GelMPMTests::run_scene(std::string(SOURCE_DIR) + "/../../prm/swelling_sphere.prm",
+                           "results",
+                           {"Time stepping/Stop at times="});
   std::cout << std::boolalpha << "run completed: " << (run.status == 0) << std::endl;
 
   GelMPM::FreeSwellingSphere1D::Parameters parameters;

@@ -104,6 +104,11 @@ namespace GelMPM
              AssemblyCopy           &copy) const override;
 
   private:
+    /** The traction P_n N at @p point for Nitsche's method (zero for the penalty, which needs
+     * none). */
+    dealii::Tensor<1, dim>
+    nitsche_traction(const PointRecord<dim> &point, const AssemblyScratch<dim> &scratch) const;
+
     /** The terms of @p obstacle at @p point, with the point's traction P_n N (Nitsche). */
     void
     add_obstacle(const Obstacle<dim>          &obstacle,
