@@ -1,9 +1,9 @@
 // The volume points' tangent contracted with the structure of A_n (the default) equals the
 // contraction with the entries of A_n (the former assembly, MixedSystem::
 // set_generic_volume_tangent()) to round-off, and the residual is the same bit for bit: on the
-// 2D scene of the assembly tests (Q2-Q2SD, every kind of boundary term) and on a small 3D cube
-// (Q2-Q2SD, 3 x 3 x 3 points per cell, rollers and a prescribed chemical potential), at a
-// perturbed state. Set VOLUME_TANGENT_PRINT to print the largest differences.
+// 2D scene of the assembly tests (Q2-Q2SD, every kind of boundary term) and on a small 3D cube [0,
+// 1]^3 (16^3 grid) (Q2-Q2SD, 3 x 3 x 3 points per cell, rollers and a prescribed chemical
+// potential), at a perturbed state. Set VOLUME_TANGENT_PRINT to print the largest differences.
 #include <gelmpm/simulator/scene.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -22,7 +22,7 @@ namespace
 {
   const std::vector<std::string> cube_pieces = {"symmetry", "outer"};
 
-  /** A cube [0, 0.6]^3 cut by a 6^3 grid of [-0.25, 1.25]^3. */
+  /** A cube [0, 1]^3 on a 16^3 grid of [-0.5, 1.5]^3. */
   struct CubeParameters
   {
     ParameterHandler prm;
@@ -32,12 +32,12 @@ namespace
       GelMPM::Scene<3>::declare_parameters(prm, cube_pieces);
       prm.parse_input_from_string(R"(
       subsection Background grid
-        set Lower corner = -0.25, -0.25, -0.25
-        set Upper corner = 1.25, 1.25, 1.25
-        set Cells = 6, 6, 6
+        set Lower corner = -0.5, -0.5, -0.5
+        set Upper corner = 1.5, 1.5, 1.5
+        set Cells = 16, 16, 16
       end
       subsection Geometry
-        set Boxes = 0, 0, 0 : 0.6, 0.6, 0.6
+        set Boxes = 0, 0, 0 : 1, 1, 1
       end
       subsection Material points
         set Points per cell = 3
@@ -94,8 +94,8 @@ namespace
     system.assemble(state, dt, true);
     const Vector<double> residual = system.residual();
     // The entries of the sparsity pattern, row by row (the same pattern for both).
-    const auto          &matrix = system.matrix();
-    std::vector<double>  K;
+    const auto         &matrix = system.matrix();
+    std::vector<double> K;
     for (unsigned int i = 0; i < n; ++i)
       for (auto it = matrix.begin(i); it != matrix.end(i); ++it)
         K.push_back(it->value());
@@ -115,7 +115,8 @@ namespace
         }
     double residual_difference = 0.;
     for (unsigned int i = 0; i < n; ++i)
-      residual_difference = std::max(residual_difference, std::abs(system.residual()(i) - residual(i)));
+      residual_difference =
+        std::max(residual_difference, std::abs(system.residual()(i) - residual(i)));
 
     if (std::getenv("VOLUME_TANGENT_PRINT"))
       std::cerr << name << ": max |K - K_generic| / max |K_generic| = " << difference / largest
