@@ -461,8 +461,6 @@ namespace GelMPM
       copy.matrix.reinit(n, n);
 
     scratch.gather_block_coefficients(block, spaces_, solution);
-    if (with_matrix && scratch.A_dot_G.size() < n_u)
-      scratch.A_dot_G.resize(n_u);
     if (with_matrix)
       scratch.volume_lower.reinit(n, n);
 

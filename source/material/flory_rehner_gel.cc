@@ -414,6 +414,10 @@ namespace GelMPM
             result.A_n[i][Jj][k][L] = (i == k ? shear_modulus_ * C_p[Jj][L] / J_p : 0.) +
                                       a * dFit[i][L] * dFit[k][Jj] + b * dFit[i][Jj] * dFit[k][L];
     result.dP_n_dmu = -kT_over_nu() * result.delta_J * dFit;
+    result.S        = (shear_modulus_ / J_p) * C_p;
+    result.dFit     = dFit;
+    result.a        = a;
+    result.b        = b;
     return result;
   }
 

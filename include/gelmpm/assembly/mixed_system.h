@@ -301,6 +301,18 @@ namespace GelMPM
     const DiscreteSpaces<dim> &
     spaces() const;
 
+    /**
+     * Contract the volume points' tangent with the entries of A_n (@p generic true, the former
+     * assembly, kept as the reference) instead of its structure (VolumeTermAssembler). The
+     * environment variable GELMPM_GENERIC_VOLUME_TANGENT (any value) sets it at construction, to
+     * time both with one binary (doc/performance.md, "Assembly at its flop limit").
+     */
+    void
+    set_generic_volume_tangent(const bool generic)
+    {
+      volume_term.set_generic_tangent(generic);
+    }
+
   private:
     /** Add a block's local matrix to the tangent (the copier of the assembly). */
     void

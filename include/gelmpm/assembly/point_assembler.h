@@ -41,6 +41,9 @@ namespace GelMPM
     dealii::Tensor<1, dim>              grad_mu;
     // Work arrays for the tangent.
     std::vector<dealii::Tensor<3, dim>> A_dot_G;      // [c][i][J][k] = sum_L A_iJkL G_c[L]
+    std::vector<double>                 h;            // [dim c + i] = (dF^{-T} G_c)_i
+    std::vector<double>                 SG;           // [dim c + J] = V (S G_c)_J
+    std::vector<double>                 s_row;        // [c] = G_a . V S G_c, one a at a time
     dealii::FullMatrix<double>          volume_lower; // the volume points' sum, lower triangle
 
     /** The first chemical-potential row of the block. */

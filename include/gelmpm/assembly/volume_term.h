@@ -3,6 +3,8 @@
 
 #include <gelmpm/assembly/point_assembler.h>
 
+#include <cstdlib>
+
 namespace GelMPM
 {
   /**
@@ -20,6 +22,13 @@ namespace GelMPM
    * The tangent of a volume point is symmetric (A has the major symmetry and K_mu,u = K_u,mu^T):
    * only its lower triangle is summed, into AssemblyScratch::volume_lower, which the caller
    * mirrors once per block (MixedSystem::assemble_block()).
+   *
+   * The displacement block of the tangent is contracted with the structure of A_n
+   * (FloryRehnerGel::Incremental::S, dFit, a, b) rather than with its dim^4 entries:
+   *   K(a,i; c,k) = V_p [delta_ik G_a . S G_c + a h_a[k] h_c[i] + b h_a[i] h_c[k]],
+   * h_a = dF^{-T} G_a, two products per entry instead of dim (doc/performance.md, "Assembly at its
+   * flop limit"). The contraction with A_n (the former assembly) is kept as the reference this is
+   * tested against (tests/assembly/volume_tangent), selected by set_generic_tangent().
    */
   template <int dim>
   class VolumeTermAssembler final : public PointAssembler<dim>
@@ -31,6 +40,33 @@ namespace GelMPM
              const bool              with_matrix,
              AssemblyScratch<dim>   &scratch,
              AssemblyCopy           &copy) const override;
+
+    /**
+     * Whether the tangent is contracted with the entries of A_n (@p generic true: the reference,
+     * about twice the flops and not vectorised) or with its structure (the default).
+     */
+    void
+    set_generic_tangent(const bool generic)
+    {
+      generic_tangent = generic;
+    }
+
+  private:
+    /** The lower triangle of the point's tangent from the structure of A_n. */
+    void
+    add_structured_tangent(const PointRecord<dim>                          &point,
+                           const typename FloryRehnerGel<dim>::Incremental &state,
+                           const double                                     dt,
+                           AssemblyScratch<dim>                            &scratch) const;
+
+    /** The lower triangle of the point's tangent from the entries of A_n (the reference). */
+    void
+    add_generic_tangent(const PointRecord<dim>                          &point,
+                        const typename FloryRehnerGel<dim>::Incremental &state,
+                        const double                                     dt,
+                        AssemblyScratch<dim>                            &scratch) const;
+
+    bool generic_tangent = std::getenv("GELMPM_GENERIC_VOLUME_TANGENT") != nullptr;
   };
 } // namespace GelMPM
 

@@ -130,6 +130,17 @@ namespace GelMPM
       double delta_J;
       /** Total J = dJ J_p. */
       double J;
+      /**
+       * The structure of A_n, which the volume term's tangent contracts instead of its dim^4
+       * entries (doc/performance.md, "Assembly at its flop limit"):
+       *   A_n_iJkL = delta_ik S_JL + a dF^{-T}_iL dF^{-T}_kJ + b dF^{-T}_iJ dF^{-T}_kL,
+       * with S = G F_p F_p^T / J_p (G the shear modulus). Set with the tangent only.
+       */
+      dealii::Tensor<2, dim> S;
+      /** dF^{-T}, of the structure of A_n. */
+      dealii::Tensor<2, dim> dFit;
+      /** The coefficients a and b of the structure of A_n. */
+      double a = 0., b = 0.;
     };
 
     /**
