@@ -140,8 +140,9 @@ namespace GelMPM
     if (!with_matrix)
       return;
 
-    auto                     &L = s.volume_lower;
-    std::vector<Tensor<2, 3>> AB(2 * s.n_u);
+    auto &L  = s.volume_lower;
+    auto &AB = s.hoop_products;
+    AB.resize(2 * s.n_u);
     for (unsigned int c = 0; c < s.n_u; ++c)
       for (unsigned int k = 0; k < 2; ++k)
         AB[2 * c + k] = B.apply(state.A_n, c, k);
@@ -243,10 +244,12 @@ namespace GelMPM
                 DW[k][L] += W[i][J] * (mu_plus.A_n[i][J][k][L] - state.A_n[i][J][k][L]);
       }
 
-    std::vector<Tensor<2, 3>> HB(W_norm > 0. ? 2 * s.n_u : 0);
-    for (unsigned int c = 0; c < HB.size() / 2; ++c)
-      for (unsigned int m = 0; m < 2; ++m)
-        HB[2 * c + m] = B.apply(H, c, m);
+    auto &HB = s.hoop_products;
+    HB.resize(2 * s.n_u);
+    if (W_norm > 0.)
+      for (unsigned int c = 0; c < s.n_u; ++c)
+        for (unsigned int m = 0; m < 2; ++m)
+          HB[2 * c + m] = B.apply(H, c, m);
     for (unsigned int a = 0; a < s.n_u; ++a)
       for (unsigned int c = 0; c < s.n_u; ++c)
         for (unsigned int k = 0; k < 2; ++k)

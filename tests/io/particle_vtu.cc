@@ -45,10 +45,10 @@ main(int argc, char **argv)
       props[Layout::mu]   = gel.mu_0();
       props[Layout::F] = props[Layout::F + 3] = gel.lambda_0() * (1. + 0.01 * i);
       // Plane strain: the out-of-plane stretch stays lambda_0.
-      props[Layout::out_of_plane] = gel.lambda_0();
-      props[Layout::position_0]               = x[0] - 0.01 * i;
-      props[Layout::position_0 + 1]           = x[1];
-      const auto cell                         = GridTools::find_active_cell_around_point(tria, x);
+      props[Layout::out_of_plane]   = gel.lambda_0();
+      props[Layout::position_0]     = x[0] - 0.01 * i;
+      props[Layout::position_0 + 1] = x[1];
+      const auto cell               = GridTools::find_active_cell_around_point(tria, x);
       particles.insert_particle(x,
                                 mapping.transform_real_to_unit_cell(cell, x),
                                 i,

@@ -45,6 +45,9 @@ namespace GelMPM
     std::vector<double>                 SG;           // [dim c + J] = V (S G_c)_J
     std::vector<double>                 s_row;        // [c] = G_a . V S G_c, one a at a time
     dealii::FullMatrix<double>          volume_lower; // the volume points' sum, lower triangle
+    // Axisymmetric points: A : B(c, k) per test function (axisymmetric_terms.cc), kept here so
+    // that no point allocates.
+    std::vector<dealii::Tensor<2, 3>> hoop_products;
 
     /** The first chemical-potential row of the block. */
     unsigned int
