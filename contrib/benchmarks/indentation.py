@@ -6,11 +6,13 @@ normalised relaxation against Hu, Zhao, Vlassak & Suo's fits for linear poroelas
 
   /usr/bin/python3 contrib/benchmarks/indentation.py [--gelmpm build/gelmpm]
       [--output output/indentation] [--shape sphere|flat] [--size 5] [--cells 100,150,200]
-      [--depths 0.02] [--end 2000] [--plot doc/figures/indentation_sphere.png] [--reuse [--existing-only]]
+      [--depths 0.02] [--end 2000] [--permeable] [--plot doc/figures/indentation_sphere.png]
+      [--reuse [--existing-only]]
 
 Each run is the scene with a layer of radius and thickness S (--size; the scene's is 2.5) on
 'Background grid/Cells' = n x (n + 2) (h = S/n, even n), the depth delta (the sphere's contact
-radius a = sqrt(R delta)) and 'End time'. The limits use the swollen gel's
+radius a = sqrt(R delta)) and 'End time'. The indenter is impermeable ('Permeable = false': no
+solvent crosses the contact) unless --permeable is given. The limits use the swollen gel's
 shear modulus G_s and drained Poisson ratio nu, both computed here from the Flory-Rehner free
 energy at the scene's swollen state (mu = 0; small shear and uniaxial stretches at fixed mu):
   sphere:     F = (4/3) E* sqrt(R) delta^(3/2),   E*(0+) = 4 G_s,   E*(inf) = 2 G_s/(1 - nu);
@@ -93,7 +95,8 @@ def run(args, shape, n, depth, c):
     a, _, _ = limits(shape, depth, 1., 0.)
     t_load = 1e-4 * a * a / c
     size = args.size
-    directory = os.path.join(args.output, "%s_s%g_n%d_d%g" % (shape, size, n, depth))
+    directory = os.path.join(args.output, "%s_s%g_n%d_d%g%s" % (
+        shape, size, n, depth, "_permeable" if args.permeable else ""))
     os.makedirs(directory, exist_ok=True)
     sets = ["Output/Directory=" + directory, "Output/Write particles=false",
             "Background grid/Cells=%d, %d" % (n, n + 2),
@@ -105,7 +108,8 @@ def run(args, shape, n, depth, c):
             "Time stepping/Initial step=%.12g" % (t_load / 10),
             "Time stepping/Step caps=%.12g: %.12g" % (t_load, t_load / 10),
             "Time stepping/Stop at times=%.12g" % t_load,
-            "Time stepping/End time=%g" % args.end]
+            "Time stepping/End time=%g" % args.end,
+            "Contact/indenter/Permeable=%s" % ("true" if args.permeable else "false")]
     if shape == "flat":
         # Nitsche with the traction deciding the active set under the face (doc/flat_punch.md,
         # "A rigid punch").
@@ -138,6 +142,9 @@ def main():
     parser.add_argument("--cells", default="100,150,200")
     parser.add_argument("--depths", default="0.02")
     parser.add_argument("--end", type=float, default=2000.)
+    parser.add_argument("--permeable", action="store_true",
+                        help="a permeable indenter (the bath reaches the contact); default: "
+                        "impermeable, as the published relaxation functions assume")
     parser.add_argument("--plot", default="")
     parser.add_argument("--reuse", action="store_true",
                         help="take the results of runs already completed in --output")

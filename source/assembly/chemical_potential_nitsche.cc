@@ -4,13 +4,22 @@ namespace GelMPM
 {
   template <int dim>
   void
+  ChemicalPotentialNitscheAssembler<dim>::set_contact(const ContactAssembler<dim> &assembler)
+  {
+    contact = &assembler;
+  }
+
+
+  template <int dim>
+  void
   ChemicalPotentialNitscheAssembler<dim>::assemble(const PointRecord<dim> &point,
                                                    const double            dt,
                                                    const bool              with_matrix,
                                                    AssemblyScratch<dim>   &s,
                                                    AssemblyCopy           &copy) const
   {
-    if (!this->piece(point).chemical_potential_prescribed())
+    if (!this->piece(point).chemical_potential_prescribed() ||
+        (contact != nullptr && contact->seals(point, s.du_at_point, s.delta_F, s.mu_at_point)))
       return;
     const double       area    = point.measure;
     const auto        &N       = point.normal;

@@ -29,6 +29,9 @@ namespace GelMPM
         Obstacle<dim>::grid_side("grid side", plane.axis, plane.value, plane.sign));
     n_sides = obstacles.size();
     obstacles.insert(obstacles.end(), rigid.begin(), rigid.end());
+    any_impermeable = std::any_of(rigid.begin(), rigid.end(), [](const auto &obstacle) {
+      return !obstacle.permeable;
+    });
   }
 
 
@@ -126,6 +129,22 @@ namespace GelMPM
                 gap.g};
       }
     return {gap.g > 0., gap.g};
+  }
+
+
+  template <int dim>
+  bool
+  ContactAssembler<dim>::seals(const PointRecord<dim> &point,
+                               const Tensor<1, dim>   &du,
+                               const Tensor<2, dim>   &delta_F,
+                               const double            mu) const
+  {
+    if (!any_impermeable || !applies(point))
+      return false;
+    for (unsigned int k = n_sides; k < obstacles.size(); ++k)
+      if (!obstacles[k].permeable && state(k, point, du, delta_F, mu).first)
+        return true;
+    return false;
   }
 
 

@@ -39,7 +39,9 @@ namespace GelMPM
     , solvent_flux(boundary_conditions, nitsche, spaces)
     , surface_terms{
         {&traction, &displacement_nitsche, &contact, &chemical_potential_nitsche, &solvent_flux}}
-  {}
+  {
+    chemical_potential_nitsche.set_contact(contact);
+  }
 
 
   template <int dim>

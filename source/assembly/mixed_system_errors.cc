@@ -24,7 +24,8 @@ namespace GelMPM
         const auto [du, delta_F, mu] = cache.fields_at(r, solution);
         if (r.projector.norm_square() > 0.)
           u_error = std::max(u_error, (r.projector * (r.u_n + du - r.u_bar)).norm());
-        if (boundary_conditions.piece(r.piece).chemical_potential_prescribed())
+        if (boundary_conditions.piece(r.piece).chemical_potential_prescribed() &&
+            !contact.seals(r, du, delta_F, mu))
           mu_error = std::max(mu_error, std::abs(mu - r.mu_bar));
       }
     return {dealii::Utilities::MPI::max(u_error, communicator),

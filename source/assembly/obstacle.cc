@@ -108,6 +108,16 @@ namespace GelMPM
                       "towards the gel (need not be of unit length): a plane or a punch pressing "
                       "down onto a gel below has '0, -1' (3D: '0, 0, -1'). For a sphere only the "
                       "axis of the contact radius.");
+    prm.declare_entry("Permeable",
+                      "true",
+                      Patterns::Bool(),
+                      "Whether solvent passes through the obstacle's surface where it touches the "
+                      "gel. true: a surface point in contact keeps its piece's chemical-potential "
+                      "condition (a porous tool, or a bath that reaches the contact). false: the "
+                      "contact seals the surface, no solvent flows through it where the contact "
+                      "is active (a glass or steel indenter), whatever the piece prescribes; the "
+                      "laboratory's indentation test and its published relaxation functions "
+                      "assume this (doc/indentation.md).");
     prm.enter_subsection("Motion");
     Functions::ParsedFunction<dim>::declare_parameters(prm, dim);
     prm.leave_subsection();
@@ -170,6 +180,8 @@ namespace GelMPM
                     "leave it empty (" +
                       number(100. * default_edge_fraction) + " % of 'Radius')");
           }
+
+        permeable = prm.get_bool("Permeable");
 
         prm.enter_subsection("Motion");
         motion = std::make_shared<dealii::Functions::ParsedFunction<dim>>(dim);

@@ -16,6 +16,10 @@
 //    lambda_0 (3D: (W a/lambda_0)^2) within 1e-4, the reaction is the force of the pressed top
 //    piece with the opposite sign (1e-10), and the sum of the other pieces' forces (1e-8: the
 //    Newton tolerance).
+//    With the bath on the pressed top instead: a permeable plane lets the block drain through
+//    it (the drained closed form), an impermeable one ('Permeable = false') seals it, so that
+//    the block keeps the undrained reaction and its solvent volume (to 1e-8) until 100 tau_d
+//    although the bath is prescribed on the top piece.
 //    The same as an axisymmetric scene (obstacle_block_axisymmetric_scene.prm: the block is a
 //    cylinder of radius W, its left side the axis): the state and the closed forms are the 3D
 //    block's, the areas the revolved ones (pi W^2 instead of W^2).
@@ -54,15 +58,33 @@ namespace
     return ok;
   }
 
-  /** The plane-press checks of one run of dimension @p dim, @p drained or not. */
+  /** Where the pressed block of check_press() meets the bath. */
+  enum class Bath
+  {
+    /** Nowhere: every side impermeable. */
+    none,
+    /** On the free side(s), not pressed. */
+    sides,
+    /** On the pressed top, under a permeable plane. */
+    top,
+    /** On the pressed top, under an impermeable plane ('Permeable = false'). */
+    sealed_top
+  };
+
+  /** The plane-press checks of one run of dimension @p dim with the bath @p bath. */
   template <int dim>
   void
-  check_press(const bool drained, const bool axisymmetric = false)
+  check_press(const Bath bath_at, const bool axisymmetric = false)
   {
-    const std::string name = std::string(axisymmetric ? "axisymmetric"
+    // A bath anywhere but under the sealing plane drains the block.
+    const bool        drained = bath_at == Bath::sides || bath_at == Bath::top;
+    const std::string name    = std::string(axisymmetric ? "axisymmetric"
                                          : dim == 2   ? "2D"
                                                       : "3D") +
-                             (drained ? " drained" : " undrained");
+                             (bath_at == Bath::top          ? " bath on the top"
+                              : bath_at == Bath::sealed_top ? " sealed bath on the top"
+                              : drained                     ? " drained"
+                                                            : " undrained");
     // An axisymmetric block deforms as the 3D one.
     const bool   three_dimensional = dim == 3 || axisymmetric;
     const double J_0               = std::pow(lambda_0, 3);
@@ -101,7 +123,11 @@ namespace
     std::vector<std::string> baths     = {"right"};
     if (dim == 3)
       baths.push_back("front");
-    if (drained)
+    if (bath_at == Bath::top || bath_at == Bath::sealed_top)
+      baths = {"top"};
+    if (bath_at == Bath::sealed_top)
+      overrides.push_back("Contact/press/Permeable=false");
+    if (bath_at != Bath::none)
       {
         for (const auto &piece : baths)
           {
@@ -144,6 +170,16 @@ namespace
            std::abs(force - others) <= 1e-8 * force,
            force,
            others);
+    if (bath_at == Bath::sealed_top)
+      {
+        // No solvent through the sealed top: the body's solvent stays what it was.
+        const auto  &solvent = run.statistics.at("solvent_volume");
+        const double change  = std::abs(solvent.back() - solvent.front());
+        report(name + ": solvent volume unchanged to 1e-8 of it",
+               change <= 1e-8 * solvent.front(),
+               change,
+               0.);
+      }
   }
 } // namespace
 
@@ -154,12 +190,14 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::cout << std::boolalpha;
 
-  check_press<2>(false);
-  check_press<2>(true);
-  check_press<3>(false);
-  check_press<3>(true);
-  check_press<2>(false, true);
-  check_press<2>(true, true);
+  check_press<2>(Bath::none);
+  check_press<2>(Bath::sides);
+  check_press<3>(Bath::none);
+  check_press<3>(Bath::sides);
+  check_press<2>(Bath::none, true);
+  check_press<2>(Bath::sides, true);
+  check_press<2>(Bath::top);
+  check_press<2>(Bath::sealed_top);
 
   // 2. The circle.
   {

@@ -1,6 +1,7 @@
 #ifndef gelmpm_assembly_chemical_potential_nitsche_h
 #define gelmpm_assembly_chemical_potential_nitsche_h
 
+#include <gelmpm/assembly/contact.h>
 #include <gelmpm/assembly/point_assembler.h>
 
 namespace GelMPM
@@ -17,6 +18,9 @@ namespace GelMPM
    *
    * The sign of the symmetry term is the one that makes the tangent symmetric for s = 1; with
    * the sign printed in eq. (32) the mu block would be skew.
+   *
+   * Where an impermeable obstacle touches the point (ContactAssembler::seals(), in the Newton
+   * iterate's active set) the condition is off: the contact seals the surface (zero flux).
    */
   template <int dim>
   class ChemicalPotentialNitscheAssembler final : public SurfaceTermAssembler<dim>
@@ -24,12 +28,19 @@ namespace GelMPM
   public:
     using SurfaceTermAssembler<dim>::SurfaceTermAssembler;
 
+    /** Take the obstacles that may seal the surface from @p contact (which must outlive this). */
+    void
+    set_contact(const ContactAssembler<dim> &contact);
+
     void
     assemble(const PointRecord<dim> &point,
              const double            dt,
              const bool              with_matrix,
              AssemblyScratch<dim>   &scratch,
              AssemblyCopy           &copy) const override;
+
+  private:
+    const ContactAssembler<dim> *contact = nullptr;
   };
 } // namespace GelMPM
 

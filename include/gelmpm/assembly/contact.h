@@ -80,6 +80,17 @@ namespace GelMPM
           const dealii::Tensor<2, dim> &delta_F,
           const double                  mu) const;
 
+    /**
+     * Whether an impermeable obstacle (Obstacle::permeable false) is in active contact with the
+     * surface point @p point with the fields @p du, @p delta_F and @p mu at it (the Newton
+     * iterate's active set): its chemical-potential condition is then off.
+     */
+    bool
+    seals(const PointRecord<dim>       &point,
+          const dealii::Tensor<1, dim> &du,
+          const dealii::Tensor<2, dim> &delta_F,
+          const double                  mu) const;
+
     /** Whether the term applies at @p point at all (contact on, a free piece). */
     bool
     applies(const PointRecord<dim> &point) const;
@@ -130,6 +141,8 @@ namespace GelMPM
     std::vector<Obstacle<dim>> obstacles;
     /** The number of grid sides at the front of obstacles. */
     unsigned int n_sides = 0;
+    /** Whether any obstacle is impermeable. */
+    bool any_impermeable = false;
   };
 } // namespace GelMPM
 

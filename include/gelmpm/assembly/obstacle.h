@@ -119,6 +119,10 @@ namespace GelMPM
     static constexpr double default_edge_fraction = 0.05;
     /** The unit outward normal nu of the face (plane, punch), the axis of a sphere. */
     dealii::Tensor<1, dim> normal;
+    /** Whether solvent passes through the obstacle where it touches the gel ('Permeable'):
+     * false seals the surface points in active contact (no chemical-potential condition there,
+     * hence no flux). */
+    bool permeable = true;
 
   private:
     /** The displacement of the reference point over time; none for a grid side. */
