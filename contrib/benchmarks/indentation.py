@@ -6,7 +6,7 @@ normalised relaxation against Hu, Zhao, Vlassak & Suo's fits for linear poroelas
 
   /usr/bin/python3 contrib/benchmarks/indentation.py [--gelmpm build/gelmpm]
       [--output output/indentation] [--shape sphere|flat] [--size 5] [--cells 100,150,200]
-      [--depths 0.02] [--end 2000] [--permeable] [--plot doc/figures/indentation_sphere.png]
+      [--depths 0.02] [--end 2000] [--radius 1] [--permeable] [--contact penalty|nitsche] [--plot doc/figures/indentation_sphere.png]
       [--reuse [--existing-only]]
 
 Each run is the scene with a layer of radius and thickness S (--size; the scene's is 2.5) on
@@ -91,18 +91,28 @@ def fit(shape, tau):
     return 1.304 * np.exp(-np.sqrt(tau)) - 0.304 * np.exp(-0.254 * tau)
 
 
+def default_contact(shape):
+    """The scene's penalty for both shapes. (Nitsche with the traction deciding the active set,
+    doc/flat_punch.md "A rigid punch", lifts the sealed face off near its edge here:
+    doc/indentation.md.)"""
+    return "penalty"
+
+
 def run(args, shape, n, depth, c):
     a, _, _ = limits(shape, depth, 1., 0.)
     t_load = 1e-4 * a * a / c
     size = args.size
-    directory = os.path.join(args.output, "%s_s%g_n%d_d%g%s" % (
-        shape, size, n, depth, "_permeable" if args.permeable else ""))
+    directory = os.path.join(args.output, "%s%s_s%g_n%d_d%g%s%s" % (
+        shape, "" if shape != "sphere" or RADIUS == 1. else "_R%g" % RADIUS, size, n, depth,
+        "_permeable" if args.permeable else "",
+        "" if args.contact == default_contact(shape) else "_" + args.contact))
     os.makedirs(directory, exist_ok=True)
     sets = ["Output/Directory=" + directory, "Output/Write particles=false",
             "Background grid/Cells=%d, %d" % (n, n + 2),
             "Background grid/Upper corner=%.12g, %.12g" % (size, size * (n + 2) / n),
             "Geometry/Boxes=0, 0 : %g, %g" % (size, size),
             "Contact/indenter/Center=0, %g" % (size + (RADIUS if shape == "sphere" else 0.)),
+            "Contact/indenter/Radius=%.12g" % RADIUS,
             "Contact/indenter/Motion/Function expression=0; -%.12g * min(t / %.12g, 1)"
             % (depth, t_load),
             "Time stepping/Initial step=%.12g" % (t_load / 10),
@@ -111,10 +121,12 @@ def run(args, shape, n, depth, c):
             "Time stepping/End time=%g" % args.end,
             "Contact/indenter/Permeable=%s" % ("true" if args.permeable else "false")]
     if shape == "flat":
-        # Nitsche with the traction deciding the active set under the face (doc/flat_punch.md,
-        # "A rigid punch").
-        sets += ["Contact/indenter/Shape=flat punch", "Contact/indenter/Radius=%g" % PUNCH_RADIUS,
-                 "Contact/Method=nitsche", "Contact/Active set factor=0.01"]
+        sets += ["Contact/indenter/Shape=flat punch", "Contact/indenter/Radius=%g" % PUNCH_RADIUS]
+    if args.contact == "nitsche":
+        # The traction decides the active set under a face (doc/flat_punch.md, "A rigid punch").
+        sets += ["Contact/Method=nitsche", "Contact/Active set factor=0.01"]
+    else:
+        sets += ["Contact/Method=penalty"]
     command = [args.gelmpm]
     for s in sets:
         command += ["--set", s]
@@ -134,6 +146,7 @@ def run(args, shape, n, depth, c):
 
 
 def main():
+    global RADIUS
     parser = argparse.ArgumentParser()
     parser.add_argument("--gelmpm", default=os.path.join(ROOT, "build", "gelmpm"))
     parser.add_argument("--output", default=os.path.join(ROOT, "output", "indentation"))
@@ -142,6 +155,11 @@ def main():
     parser.add_argument("--cells", default="100,150,200")
     parser.add_argument("--depths", default="0.02")
     parser.add_argument("--end", type=float, default=2000.)
+    parser.add_argument("--contact", choices=["penalty", "nitsche"],
+                        help="the contact method (default: penalty; nitsche: with 'Active set "
+                        "factor' 0.01)")
+    parser.add_argument("--radius", type=float, default=RADIUS,
+                        help="the sphere's radius R (default 1; the contact radius is sqrt(R delta))")
     parser.add_argument("--permeable", action="store_true",
                         help="a permeable indenter (the bath reaches the contact); default: "
                         "impermeable, as the published relaxation functions assume")
@@ -151,6 +169,9 @@ def main():
     parser.add_argument("--existing-only", action="store_true",
                         help="with --reuse: leave out the runs not completed in --output")
     args = parser.parse_args()
+    if args.contact is None:
+        args.contact = default_contact(args.shape)
+    RADIUS = args.radius
     ls, G_s, nu, c = gel_constants()
     print("swollen stretch %.6f, G_s = %.6f G, drained nu = %.6f, c = %.6g D, 2(1 - nu) = %.4f"
           % (ls, G_s, nu, c, 2 * (1 - nu)))
@@ -188,7 +209,10 @@ def main():
             tau = c * (r["t"][keep] - r["t_load"]) / r["a"] ** 2
             g = (r["F"][keep] - r["Finf"]) / (r["F0"] - r["Finf"])
             ax.semilogx(np.maximum(tau, 1e-5), g, marker=".",
-                        label="MPM h = %.4f, delta = %g" % (args.size / r["n"], r["depth"]))
+                        label="MPM h = %.4f, delta = %g%s" % (
+                            args.size / r["n"], r["depth"],
+                            ", R = %g (a/h = %.1f)" % (RADIUS, r["a"] * r["n"] / args.size)
+                            if RADIUS != 1. else ""))
         tau = np.logspace(-5, 2, 200)
         ax.semilogx(tau, fit(args.shape, tau), "k--", label="Hu et al. 2010 (linear poroelasticity)")
         ax.set_xlabel("c t / a^2")
