@@ -548,21 +548,23 @@ namespace GelMPM
       file.resume(path, file_columns, size->second);
     };
     open(statistics, "statistics.csv", columns);
-    if (stability.inertia)
+    if (stability.detects_onset())
       {
         std::vector<std::string> bracket_columns = {"t_stable",
                                                     "t_unstable",
                                                     "n_dofs_u",
-                                                    "n_dofs_mu",
-                                                    "n_neg_stable",
-                                                    "n_neg_unstable",
-                                                    "n_zero_unstable"};
+                                                    "n_dofs_mu"};
+        if (stability.inertia)
+          for (const char *name : {"n_neg_stable", "n_neg_unstable", "n_zero_unstable"})
+            bracket_columns.push_back(name);
         if (stability.n_eigenvalues > 0)
           for (const char *name : {"eig_1_stable", "eig_1_unstable"})
             bracket_columns.push_back(name);
+        if (stability.iterative_drained())
+          bracket_columns.push_back("drained_eig_1_unstable");
         open(stability_file, "stability.csv", bracket_columns);
       }
-    if (stability.inertia || observables.writes_events())
+    if (stability.detects_onset() || observables.writes_events())
       open(events_file, "events.csv", {"event", "time", "t_over_tau_d", "mu_boundary", "pore"});
   }
 

@@ -51,14 +51,20 @@ namespace GelMPM
           loop.count_factorization();
           factorization = linear_solver.symmetric_factorization();
         }
-      last_result = analyse_stability(
+      // The iterative drained criterion's AMG takes the rigid-body modes from these points.
+      const std::vector<double> points = settings.iterative_drained()
+                                           ? scene.spaces->u_dof_greville_points()
+                                           : std::vector<double>();
+      last_result                      = analyse_stability(
         scene.system->matrix(),
         scene.spaces->n_u_dofs(),
         settings,
         [this]() {
           return scene.system->mu_mass_matrix();
         },
-        factorization);
+        factorization,
+        dim,
+        &points);
     }
     const auto verdict = judge_signature(last_result);
     if (verdict == StepControl::Verdict::retake || verdict == StepControl::Verdict::shorten)
@@ -70,7 +76,8 @@ namespace GelMPM
     ended_at_onset = verdict == StepControl::Verdict::onset && settings.end_at_onset;
     perturb        = verdict == StepControl::Verdict::onset && !ended_at_onset &&
               settings.perturbation_amplitude > 0. &&
-              last_result.mode.size() == scene.spaces->n_u_dofs();
+              (last_result.mode.size() == scene.spaces->n_u_dofs() ||
+               last_result.drained_mode.size() == scene.spaces->n_u_dofs());
     return verdict;
   }
 
@@ -115,9 +122,11 @@ namespace GelMPM
         statistics.set("n_pos", result.inertia.n_positive);
         statistics.set("n_neg", result.inertia.n_negative);
         statistics.set("n_zero", result.inertia.n_zero);
-        if (settings.drained_onset)
+        if (settings.drained_onset && !settings.iterative_drained())
           statistics.set("n_neg_uu", result.drained_inertia.n_negative);
       }
+    for (unsigned int k = 0; k < result.drained_eigenvalues.size(); ++k)
+      statistics.set("drained_eig_" + std::to_string(k + 1), result.drained_eigenvalues[k]);
     for (unsigned int k = 0; k < result.eigenvalues.size(); ++k)
       statistics.set("eig_" + std::to_string(k + 1), result.eigenvalues[k]);
     if (settings.inf_sup)
@@ -131,18 +140,22 @@ namespace GelMPM
   StepControl::Verdict
   StabilityMonitor<dim>::judge_signature(const StabilityReport &result)
   {
-    if (!settings.inertia)
+    if (!settings.detects_onset())
       return StepControl::Verdict::accept;
     const bool tangent_stable = result.inertia.n_positive == scene.spaces->n_u_dofs() &&
                                 result.inertia.n_negative == scene.spaces->n_mu_dofs() &&
                                 result.inertia.n_zero == 0;
     // Until the first onset the drained criterion (K_uu positive definite: no mode grows) brackets
     // it independently of the step; from then on the tangent's signature (no mode grows faster
-    // than 1/dt) controls the steps.
-    const bool use_drained = settings.drained_onset && !loop.control().onset_seen();
-    const bool stable =
-      use_drained ? (result.drained_inertia.n_negative == 0 && result.drained_inertia.n_zero == 0)
-                  : tangent_stable;
+    // than 1/dt) controls the steps. Without the tangent's signature (the iterative drained
+    // criterion alone) the drained criterion judges every state.
+    const bool use_drained =
+      settings.drained_onset && (!loop.control().onset_seen() || !settings.inertia);
+    const bool drained_stable =
+      settings.iterative_drained()
+        ? result.drained_eigenvalues.empty() || result.drained_eigenvalues[0] > 0.
+        : result.drained_inertia.n_negative == 0 && result.drained_inertia.n_zero == 0;
+    const bool   stable  = use_drained ? drained_stable : tangent_stable;
     const double t_end   = loop.control().time() + loop.control().attempt_size();
     const auto   verdict = loop.control().judge_signature(stable);
     switch (verdict)
@@ -179,7 +192,7 @@ namespace GelMPM
           break;
       }
     announced_bracketing = loop.control().bracketing();
-    if (tangent_stable)
+    if (settings.inertia ? tangent_stable : stable)
       {
         last_stable_inertia = result.inertia;
         last_eigenvalue     = result.eigenvalues.empty() ? 0. : result.eigenvalues[0];
@@ -194,18 +207,29 @@ namespace GelMPM
   {
     const auto &bracket = loop.control().bracket();
     log << "    loss of stability between t/tau_d = " << bracket.t_stable << " (stable) and "
-        << bracket.t_unstable << ": signature (" << result.inertia.n_positive << ", "
-        << result.inertia.n_negative << ", " << result.inertia.n_zero << "), expected ("
-        << scene.spaces->n_u_dofs() << ", " << scene.spaces->n_mu_dofs() << ", 0)";
-    if (settings.drained_onset)
+        << bracket.t_unstable;
+    if (settings.inertia)
+      log << ": signature (" << result.inertia.n_positive << ", " << result.inertia.n_negative
+          << ", " << result.inertia.n_zero << "), expected (" << scene.spaces->n_u_dofs() << ", "
+          << scene.spaces->n_mu_dofs() << ", 0)";
+    if (settings.iterative_drained() && !result.drained_eigenvalues.empty())
+      log << (settings.inertia ? "; " : ": ")
+          << "lambda_min(K_uu) = " << result.drained_eigenvalues[0]
+          << " (drained criterion, LOBPCG)";
+    else if (settings.drained_onset)
       log << "; K_uu has " << result.drained_inertia.n_negative
           << " negative eigenvalue(s) (drained criterion)";
     log << std::endl;
     stability_file.set("t_stable", bracket.t_stable);
     stability_file.set("t_unstable", bracket.t_unstable);
-    stability_file.set("n_neg_stable", last_stable_inertia.n_negative);
-    stability_file.set("n_neg_unstable", result.inertia.n_negative);
-    stability_file.set("n_zero_unstable", result.inertia.n_zero);
+    if (settings.inertia)
+      {
+        stability_file.set("n_neg_stable", last_stable_inertia.n_negative);
+        stability_file.set("n_neg_unstable", result.inertia.n_negative);
+        stability_file.set("n_zero_unstable", result.inertia.n_zero);
+      }
+    if (settings.iterative_drained() && !result.drained_eigenvalues.empty())
+      stability_file.set("drained_eig_1_unstable", result.drained_eigenvalues[0]);
     stability_file.set("n_dofs_u", scene.spaces->n_u_dofs());
     stability_file.set("n_dofs_mu", scene.spaces->n_mu_dofs());
     if (!result.eigenvalues.empty())

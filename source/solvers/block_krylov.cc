@@ -5,11 +5,8 @@
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
 
-#include <Teuchos_ParameterList.hpp>
-#include <array>
 #include <cmath>
 #include <map>
-#include <ml_MultiLevelPreconditioner.h>
 #include <sstream>
 #include <stdexcept>
 
@@ -43,8 +40,8 @@ namespace GelMPM
   BlockKrylov::setup(const dealii::TrilinosWrappers::SparseMatrix &K, const Settings &new_settings)
   {
     built = false;
-    // The old hierarchy refers to the old A and null space: it goes before they change.
-    amg.clear();
+    // The old hierarchy refers to the old A: it goes before the block changes.
+    displacement.clear();
     settings                = new_settings;
     matrix                  = &K;
     const unsigned int n    = K.m();
@@ -52,16 +49,15 @@ namespace GelMPM
     if (n_u == 0 || n_u > n || K.trilinos_matrix().Comm().NumProc() != 1)
       throw std::logic_error("BlockKrylov: set_structure() first; one process only");
 
-    // The blocks, from the rows of K (each stored entry is visited once). A is copied in two
-    // passes, pattern then values, so that no second copy of its entries is held on the way.
-    dealii::DynamicSparsityPattern a_pattern(n_u, n_u), b_pattern(n_mu, n_u);
+    // The coupling blocks and A's diagonal, from the rows of K (each stored entry is visited
+    // once); A itself and its AMG are DisplacementBlockAMG's.
+    dealii::DynamicSparsityPattern                            b_pattern(n_mu, n_u);
     std::vector<std::vector<std::pair<unsigned int, double>>> b_rows(n_mu), bt_rows(n_u);
     std::vector<std::map<unsigned int, double>>               c_rows(n_mu);
     std::vector<double>                                       inverse_diagonal(n_u, 0.);
     for_each_entry(K, n, [&](const unsigned int i, const unsigned int j, const double v) {
       if (i < n_u && j < n_u)
         {
-          a_pattern.add(i, j);
           if (i == j)
             inverse_diagonal[i] = v;
         }
@@ -83,61 +79,7 @@ namespace GelMPM
                                    std::to_string(i) + ")");
         inverse_diagonal[i] = 1. / std::abs(inverse_diagonal[i]);
       }
-    A.reinit(a_pattern);
-    a_pattern.reinit(0, 0);
-    for_each_entry(K, n_u, [&](const unsigned int i, const unsigned int j, const double v) {
-      if (j < n_u)
-        A.set(i, j, v);
-    });
-    A.compress(dealii::VectorOperation::insert);
-
-    // Rigid-body modes about the points' centroid: dim translations and dim(dim-1)/2 rotations.
-    const unsigned int  n_nodes = n_u / dim, n_modes = dim == 2 ? 3 : 6;
-    std::vector<double> centre(dim, 0.);
-    for (unsigned int k = 0; k < n_nodes; ++k)
-      for (unsigned int d = 0; d < dim; ++d)
-        centre[d] += points[k * dim + d] / n_nodes;
-    modes.assign(n_modes * n_u, 0.);
-    const auto mode = [&](const unsigned int m, const unsigned int row) -> double & {
-      return modes[m * n_u + row];
-    };
-    for (unsigned int k = 0; k < n_nodes; ++k)
-      {
-        std::array<double, 3> x = {{0., 0., 0.}};
-        for (unsigned int d = 0; d < dim; ++d)
-          x[d] = points[k * dim + d] - centre[d];
-        for (unsigned int d = 0; d < dim; ++d)
-          mode(d, k * dim + d) = 1.;
-        // Rotation about axis a: u = e_a x x.
-        const unsigned int n_rotations = dim == 2 ? 1 : 3;
-        for (unsigned int r = 0; r < n_rotations; ++r)
-          {
-            const unsigned int a = dim == 2 ? 2 : r, b = (a + 1) % 3, c = (a + 2) % 3;
-            if (b < dim)
-              mode(dim + r, k * dim + b) = -x[c];
-            if (c < dim)
-              mode(dim + r, k * dim + c) = x[b];
-          }
-      }
-    Teuchos::ParameterList parameters;
-    ML_Epetra::SetDefaults("SA", parameters);
-    parameters.set("ML output", 0);
-    parameters.set("PDE equations", static_cast<int>(dim));
-    // On the wide stencils of B-splines in 3D, symmetric Gauss-Seidel smooths better than
-    // Chebyshev at the same cost (cube at 26^3: 114 against 290 iterations per solve).
-    // On the wide stencils of B-splines, symmetric Gauss-Seidel smooths better than Chebyshev
-    // at the same cost (§4.1 at 40 x 320 cells: 95 against 144 iterations per solve; cube at
-    // 26^3: 114 against 290).
-    parameters.set("smoother: type", "symmetric Gauss-Seidel");
-    parameters.set("smoother: sweeps", 2);
-    parameters.set("aggregation: threshold", 0.02);
-    parameters.set("coarse: type", "Amesos-KLU");
-    parameters.set("coarse: max size", 2000);
-    parameters.set("null space: type", "pre-computed");
-    parameters.set("null space: dimension", static_cast<int>(n_modes));
-    parameters.set("null space: vectors", modes.data());
-    amg.initialize(A, parameters);
-
+    displacement.setup(K, n_u, dim, points);
 
     // The coupling B = K_mu,u and the approximate Schur complement
     // S = C - B diag(A)^{-1} K_u,mu.
@@ -187,7 +129,7 @@ namespace GelMPM
   {
     for (unsigned int i = 0; i < n_u; ++i)
       r_u[i] = src[i];
-    amg.vmult(y_u, r_u);
+    displacement.preconditioner().vmult(y_u, r_u);
     B.vmult(r_mu, y_u);
     for (unsigned int i = 0; i < r_mu.size(); ++i)
       r_mu[i] = src[n_u + i] - r_mu[i];

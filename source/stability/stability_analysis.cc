@@ -1,5 +1,7 @@
 #include <gelmpm/core/input_error.h>
 #include <gelmpm/stability/condition_number.h>
+#include <gelmpm/stability/displacement_block_amg.h>
+#include <gelmpm/stability/drained_eigenvalues.h>
 #include <gelmpm/stability/inf_sup.h>
 #include <gelmpm/stability/schur_eigenvalues.h>
 #include <gelmpm/stability/stability_analysis.h>
@@ -34,14 +36,15 @@ namespace GelMPM
                       "eigenvalue of K_muu K_uu^-1 K_umu q = beta^2 M q, M the mass matrix of the "
                       "mu basis (column inf_sup). Dense LAPACK: for grids with at most 8000 "
                       "displacement unknowns (the inf-sup study of doc/inf_sup.md).");
-    prm.declare_entry("Bisection tolerance",
-                      "0",
-                      dealii::Patterns::Double(0.),
-                      "With 'Inertia': when the signature leaves (n_dofs_u, n_dofs_mu, 0) within a "
-                      "step, retake the step from the last stable state with halved steps until "
-                      "the critical time is bracketed to this width (in tau_d); the bracket goes "
-                      "to the log and to stability.csv. 0: no bisection (the bracket is the step "
-                      "that lost stability).");
+    prm.declare_entry(
+      "Bisection tolerance",
+      "0",
+      dealii::Patterns::Double(0.),
+      "With 'Inertia' (or the iterative drained criterion, 'Eigensolver'): when "
+      "the signature leaves (n_dofs_u, n_dofs_mu, 0) within a step, retake the step from the last stable state with halved steps until "
+      "the critical time is bracketed to this width (in tau_d); the bracket goes "
+      "to the log and to stability.csv. 0: no bisection (the bracket is the step "
+      "that lost stability).");
     prm.declare_entry("Write mode",
                       "false",
                       dealii::Patterns::Bool(),
@@ -50,16 +53,40 @@ namespace GelMPM
                       "field on the background grid (mode-NNNNN.vtu, mode.pvd; field "
                       "displacement_increment, scaled to a largest coefficient of 1): the shape in "
                       "which the gel is about to lose, or has lost, stability.");
-    prm.declare_entry("Onset criterion",
-                      "tangent",
-                      dealii::Patterns::Selection("tangent|drained"),
-                      "With 'Inertia': what brackets a loss of stability. 'tangent': the signature "
-                      "of the tangent K(dt), which leaves (n_dofs_u, n_dofs_mu, 0) when some mode "
-                      "grows faster than 1/dt, so the time found depends on the step. 'drained': "
-                      "the inertia of its displacement block K_uu (mu held), which has a negative "
-                      "eigenvalue exactly when some mode grows at all (sigma > 0), independent of "
-                      "the step: one more LDL^T factorisation per step, column n_neg_uu "
-                      "(doc/method.md, 'Going through an instability').");
+    prm.declare_entry(
+      "Onset criterion",
+      "tangent",
+      dealii::Patterns::Selection("tangent|drained"),
+      "What brackets a loss of stability. 'tangent' (needs 'Inertia'): the signature "
+      "of the tangent K(dt), which leaves (n_dofs_u, n_dofs_mu, 0) when some mode "
+      "grows faster than 1/dt, so the time found depends on the step. 'drained': "
+      "its displacement block K_uu (mu held), which has a negative eigenvalue "
+      "exactly when some mode grows at all (sigma > 0), independent of the step; "
+      "with 'Eigensolver' by factorisation (needs 'Inertia') one more LDL^T per "
+      "step, column n_neg_uu, iteratively the smallest eigenvalues of K_uu, "
+      "columns drained_eig_1 ... (doc/method.md, 'Going through an "
+      "instability').");
+    prm.declare_entry(
+      "Eigensolver",
+      "automatic",
+      dealii::Patterns::Selection("automatic|factorisation|iterative"),
+      "How 'Onset criterion = drained' looks at K_uu. 'factorisation': its inertia from "
+      "an LDL^T factorisation (MUMPS), column n_neg_uu; unstable when it has a negative "
+      "or a zero pivot. 'iterative': no factorisation: the 'Drained eigenvalues' "
+      "smallest eigenvalues of K_uu by LOBPCG (Trilinos Anasazi) preconditioned by the "
+      "algebraic multigrid of K_uu that 'Linear solver/Solver = Krylov' uses, columns "
+      "drained_eig_1 ... drained_eig_k; unstable when lambda_min < 0, and the "
+      "perturbation follows lambda_min's eigenvector. 'Inertia' is then not needed; "
+      "if it or 'Schur eigenvalues' is asked for, the whole tangent is still "
+      "factorised for it. 'automatic': iterative with 'Linear solver/Solver = Krylov', "
+      "factorisation otherwise (doc/method.md, 'Stability without a factorisation').");
+    prm.declare_entry("Drained eigenvalues",
+                      "3",
+                      dealii::Patterns::Integer(1, 20),
+                      "With 'Eigensolver' iterative and 'Onset criterion = drained': how many of "
+                      "the smallest (algebraic) eigenvalues of K_uu are computed and recorded "
+                      "(columns drained_eig_1 ... drained_eig_k). One is the criterion; a few "
+                      "more show which modes approach zero next (a 3D column's two sways).");
     prm.declare_entry("Signature step control",
                       "false",
                       dealii::Patterns::Bool(),
@@ -83,8 +110,8 @@ namespace GelMPM
       "Perturbation amplitude",
       "0",
       dealii::Patterns::Double(0.),
-      "With 'Inertia' and 'Schur eigenvalues' >= 1: when a loss of stability has "
-      "been bracketed, the displacement of the unstable state is perturbed along "
+      "With 'Inertia' and 'Schur eigenvalues' >= 1, or the iterative drained "
+      "criterion: when a loss of stability has been bracketed, the displacement of the unstable state is perturbed along "
       "the critical mode (with 'Onset criterion = drained' the eigenvector of the "
       "negative eigenvalue of K_uu, otherwise that of the smallest Schur eigenvalue), "
       "scaled so that its largest control-point displacement is this amplitude (in the "
@@ -101,7 +128,8 @@ namespace GelMPM
     prm.declare_entry("End at onset",
                       "false",
                       dealii::Patterns::Bool(),
-                      "With 'Inertia' and a 'Bisection tolerance': end the run (exit status 0, "
+                      "With 'Inertia' (or the iterative drained criterion) and a 'Bisection "
+                      "tolerance': end the run (exit status 0, "
                       "the state at the bracket's unstable end written) once the first loss of "
                       "stability is bracketed. For onset studies, which need nothing after it "
                       "(contrib/benchmarks/column_onset_convergence.py).");
@@ -133,24 +161,47 @@ namespace GelMPM
     perturbation_direction.clear();
     for (const auto &item : dealii::Utilities::split_string_list(prm.get("Perturbation direction")))
       perturbation_direction.push_back(dealii::Utilities::string_to_double(item));
+    const std::string eigensolver_choice = prm.get("Eigensolver");
+    n_drained_eigenvalues                = prm.get_integer("Drained eigenvalues");
     prm.leave_subsection();
+    // 'automatic' follows the linear solver: a run that solves by Krylov has no factorisation to
+    // spare, one that factorises anyway keeps the inertia.
+    bool krylov = false;
+    if (prm.subsection_path_exists({"Linear solver"}))
+      {
+        prm.enter_subsection("Linear solver");
+        krylov = prm.get("Solver") == "Krylov";
+        prm.leave_subsection();
+      }
+    eigensolver = eigensolver_choice == "iterative" || (eigensolver_choice == "automatic" && krylov)
+                    ? Eigensolver::iterative
+                    : Eigensolver::factorisation;
+    require(eigensolver_choice != "iterative" || drained_onset,
+            "Stability/Eigensolver",
+            "is 'iterative', which computes the smallest eigenvalues of K_uu for 'Onset criterion "
+            "= drained', but the criterion is 'tangent' (the signature of the whole tangent, "
+            "which only its factorisation gives)",
+            "set 'Onset criterion = drained', or 'Eigensolver = automatic' or 'factorisation'");
     require(unstable_step == 0. || inertia,
             "Stability/Step while unstable",
             "needs the signature of the tangent, but 'Stability/Inertia = false'",
             "set 'Inertia = true' or the step to 0");
-    require(!drained_onset || inertia,
+    require(!drained_onset || inertia || eigensolver == Eigensolver::iterative,
             "Stability/Onset criterion",
-            "'drained' needs the signature of the tangent, but 'Stability/Inertia = false'",
-            "set 'Inertia = true' or 'Onset criterion = tangent'");
+            "'drained' by factorisation needs the signature of the tangent, but "
+            "'Stability/Inertia = false'",
+            "set 'Inertia = true', or 'Eigensolver = iterative' (no factorisation), or 'Onset "
+            "criterion = tangent'");
     require(!signature_control || inertia,
             "Stability/Signature step control",
             "needs the signature of the tangent, but 'Stability/Inertia = false'",
             "set 'Inertia = true' or 'Signature step control = false'");
-    require(perturbation_amplitude == 0. || (inertia && n_eigenvalues > 0),
+    require(perturbation_amplitude == 0. || (inertia && n_eigenvalues > 0) || iterative_drained(),
             "Stability/Perturbation amplitude",
             "needs the signature and the critical mode, but 'Inertia' is false or 'Schur "
-            "eigenvalues' is 0",
-            "set 'Inertia = true' and 'Schur eigenvalues' to at least 1, or the amplitude to 0");
+            "eigenvalues' is 0 (and the drained criterion is not iterative)",
+            "set 'Inertia = true' and 'Schur eigenvalues' to at least 1, or 'Onset criterion = "
+            "drained' with 'Eigensolver = iterative', or the amplitude to 0");
     double direction_norm = 0.;
     for (const double d : perturbation_direction)
       direction_norm += d * d;
@@ -158,14 +209,16 @@ namespace GelMPM
             "Stability/Perturbation direction",
             "is the zero vector",
             "give the direction the gel is to leave the unstable branch in, e.g. '1, 0'");
-    require(bisection_tolerance == 0. || inertia,
+    require(bisection_tolerance == 0. || detects_onset(),
             "Stability/Bisection tolerance",
             "needs the signature of the tangent, but 'Stability/Inertia = false'",
-            "set 'Inertia = true' or the tolerance to 0");
-    require(!end_at_onset || inertia,
+            "set 'Inertia = true' (or the iterative drained criterion: 'Onset criterion = "
+            "drained', 'Eigensolver = iterative'), or the tolerance to 0");
+    require(!end_at_onset || detects_onset(),
             "Stability/End at onset",
             "needs the signature of the tangent, but 'Stability/Inertia = false'",
-            "set 'Inertia = true' or 'End at onset = false'");
+            "set 'Inertia = true' (or the iterative drained criterion: 'Onset criterion = "
+            "drained', 'Eigensolver = iterative'), or 'End at onset = false'");
     require(!write_mode || n_eigenvalues > 0,
             "Stability/Write mode",
             "needs the eigenvector of the smallest Schur eigenvalue, but 'Schur eigenvalues' is 0",
@@ -174,9 +227,23 @@ namespace GelMPM
 
 
   bool
+  StabilitySettings::iterative_drained() const
+  {
+    return drained_onset && eigensolver == Eigensolver::iterative;
+  }
+
+
+  bool
+  StabilitySettings::detects_onset() const
+  {
+    return inertia || iterative_drained();
+  }
+
+
+  bool
   StabilitySettings::enabled() const
   {
-    return inertia || n_eigenvalues > 0 || inf_sup || condition;
+    return inertia || n_eigenvalues > 0 || inf_sup || condition || iterative_drained();
   }
 
 
@@ -193,8 +260,11 @@ namespace GelMPM
     std::vector<std::string> c;
     if (inertia)
       c = {"n_pos", "n_neg", "n_zero"};
-    if (drained_onset)
+    if (drained_onset && !iterative_drained())
       c.push_back("n_neg_uu");
+    if (iterative_drained())
+      for (unsigned int k = 0; k < n_drained_eigenvalues; ++k)
+        c.push_back("drained_eig_" + std::to_string(k + 1));
     for (unsigned int k = 0; k < n_eigenvalues; ++k)
       c.push_back("eig_" + std::to_string(k + 1));
     if (inf_sup)
@@ -210,7 +280,9 @@ namespace GelMPM
                     const unsigned int                                 n_u,
                     const StabilitySettings                           &settings,
                     const std::function<dealii::FullMatrix<double>()> &mass_mu,
-                    const SymmetricFactorization                      *given_factorization)
+                    const SymmetricFactorization                      *given_factorization,
+                    const unsigned int                                 dim,
+                    const std::vector<double>                         *u_dof_points)
   {
     StabilityReport report;
     if (settings.inertia || settings.n_eigenvalues > 0)
@@ -221,7 +293,7 @@ namespace GelMPM
         const SymmetricFactorization &factorization =
           given_factorization ? *given_factorization : own_factorization;
         report.inertia = factorization.inertia();
-        if (settings.drained_onset)
+        if (settings.drained_onset && !settings.iterative_drained())
           {
             SymmetricFactorization displacement_block;
             displacement_block.factorize(K, n_u);
@@ -248,6 +320,24 @@ namespace GelMPM
             if (!eigen.vectors.empty())
               report.mode = std::move(eigen.vectors[0]);
           }
+      }
+    if (settings.iterative_drained())
+      {
+        if (!u_dof_points)
+          throw std::logic_error("analyse_stability(): the iterative drained criterion needs the "
+                                 "points of the displacement unknowns");
+        // No factorisation: LOBPCG with the AMG of K_uu. Every row of K_uu takes part, the
+        // diagonal-only ones (held on the axis) with their diagonal as eigenvalue, as their 1 x 1
+        // pivots do in the inertia of the factorisation path.
+        DisplacementBlockAMG block;
+        block.setup(K, n_u, dim, *u_dof_points);
+        const bool want_mode = settings.perturbation_amplitude > 0.;
+        auto       drained =
+          smallest_drained_eigenvalues(block, settings.n_drained_eigenvalues, want_mode);
+        report.drained_eigenvalues = drained.values;
+        report.drained_iterations  = drained.iterations;
+        if (want_mode && drained.values[0] < 0.)
+          report.drained_mode = std::move(drained.vectors[0]);
       }
     if (settings.inf_sup)
       report.inf_sup = discrete_inf_sup_constant(K, n_u, mass_mu());

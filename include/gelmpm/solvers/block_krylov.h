@@ -1,6 +1,8 @@
 #ifndef gelmpm_solvers_block_krylov_h
 #define gelmpm_solvers_block_krylov_h
 
+#include <gelmpm/stability/displacement_block_amg.h>
+
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
@@ -15,7 +17,8 @@ namespace GelMPM
 {
   /**
    * @brief GMRES on the u–mu Newton system with a block-triangular preconditioner: algebraic
-   * multigrid (Trilinos ML) on the displacement block, given the rigid-body modes, and a direct
+   * multigrid (Trilinos ML) on the displacement block, given the rigid-body modes
+   * (DisplacementBlockAMG, shared with the iterative stability analysis), and a direct
    * solve with an approximate Schur complement of the chemical potential.
    *
    * With K = [A B^T'; B C] (A = K_uu, B = K_mu,u, B^T' = K_u,mu, C = K_mu,mu) the preconditioner
@@ -86,10 +89,8 @@ namespace GelMPM
     Settings            settings;
 
     const dealii::TrilinosWrappers::SparseMatrix *matrix = nullptr;
-    dealii::TrilinosWrappers::SparseMatrix        A;
-    dealii::TrilinosWrappers::PreconditionAMG     amg;
-    // The rigid-body modes, column by column; ML reads them while it builds the hierarchy.
-    std::vector<double>            modes;
+    // A = K_uu and its AMG hierarchy.
+    DisplacementBlockAMG           displacement;
     dealii::SparsityPattern        coupling_pattern, schur_pattern;
     dealii::SparseMatrix<double>   B, S;
     dealii::SparseDirectUMFPACK    schur;

@@ -32,9 +32,25 @@ namespace GelMPM
    *   of stability (StepControl; Simulator; doc/method.md, "Going through an instability").
    * - Condition number: LAPACK's 1-norm estimate for the tangent (column condition_number);
    *   dense, for small discretisations.
+   * - Eigensolver: how the drained criterion ('Onset criterion = drained') looks at K_uu. By
+   *   factorisation, its inertia from a second LDL^T (column n_neg_uu); iteratively, its
+   *   'Drained eigenvalues' smallest eigenvalues by LOBPCG with the AMG of K_uu
+   *   (smallest_drained_eigenvalues(); columns drained_eig_1 ... drained_eig_k), lambda_min < 0
+   *   being the criterion and its eigenvector the perturbation. Iteratively, the drained onset
+   *   needs no factorisation at all: 'Inertia' and 'Schur eigenvalues', if asked for explicitly,
+   *   still factorise the whole tangent. 'automatic' (default): iterative when 'Linear
+   *   solver/Solver = Krylov', by factorisation otherwise (doc/method.md, "Stability without a
+   *   factorisation").
    */
   struct StabilitySettings
   {
+    /** How the drained criterion analyses K_uu (automatic is resolved by parse_parameters()). */
+    enum class Eigensolver
+    {
+      factorisation,
+      iterative
+    };
+
     bool         inertia       = false;
     unsigned int n_eigenvalues = 0;
     bool         inf_sup       = false;
@@ -57,12 +73,26 @@ namespace GelMPM
     /** End the run once the first loss of stability is bracketed (an onset study needs no
      * more). */
     bool end_at_onset = false;
+    /** With 'Onset criterion = drained': the inertia of K_uu (LDL^T) or its smallest eigenvalues
+     * (LOBPCG). */
+    Eigensolver eigensolver = Eigensolver::factorisation;
+    /** Iterative drained criterion: how many of the smallest eigenvalues of K_uu. */
+    unsigned int n_drained_eigenvalues = 3;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 
     void
     parse_parameters(dealii::ParameterHandler &prm);
+
+    /** Whether the drained criterion takes the smallest eigenvalues of K_uu by LOBPCG. */
+    bool
+    iterative_drained() const;
+
+    /** Whether a loss of stability is detected (and bracketed): the tangent's signature or the
+     * iterative drained criterion. */
+    bool
+    detects_onset() const;
 
     /** Whether anything is to be computed. */
     bool
@@ -82,17 +112,22 @@ namespace GelMPM
   struct StabilityReport
   {
     Inertia inertia;
-    /** With 'Onset criterion = drained': the inertia of the displacement block K_uu. */
-    Inertia             drained_inertia;
+    /** With 'Onset criterion = drained' by factorisation: the inertia of the displacement block
+     * K_uu. */
+    Inertia drained_inertia;
+    /** With the iterative drained criterion: the smallest eigenvalues of K_uu, ascending. */
+    std::vector<double> drained_eigenvalues;
+    /** Their LOBPCG iterations. */
+    unsigned int        drained_iterations = 0;
     std::vector<double> eigenvalues;
     double              inf_sup = 0.;
     /** With 'Write mode': the eigenvector of eigenvalues[0] (displacement unknowns). */
     dealii::Vector<double> mode;
     /**
      * With 'Onset criterion = drained' and a perturbation, when K_uu is indefinite: the
-     * eigenvector of the lowest of the three eigenvalues of K_uu nearest zero (at a bracketed
-     * onset, its small negative eigenvalue), the mode that grows at a drained onset
-     * (displacement unknowns; empty otherwise).
+     * eigenvector of the lowest of the three eigenvalues of K_uu nearest zero (by factorisation)
+     * or of lambda_min (iterative); at a bracketed onset, its small negative eigenvalue: the mode
+     * that grows at a drained onset (displacement unknowns; empty otherwise).
      */
     dealii::Vector<double> drained_mode;
     double                 condition_number = 0.;
@@ -104,14 +139,18 @@ namespace GelMPM
    * @p n_u of them): the LDL^T factorisation for the inertia and the Schur eigenvalues, and, with
    * the mass matrix of the mu basis that @p mass_mu returns (called only then), the inf-sup
    * constant. @p factorization, if given, is an LDL^T factorisation of @p K already made (the
-   * Newton solver's), used instead of factorising @p K again.
+   * Newton solver's), used instead of factorising @p K again. The iterative drained criterion
+   * needs the layout of the displacement unknowns for the AMG's rigid-body modes: @p dim
+   * components per DoF and @p u_dof_points (DisplacementBlockAMG::setup()).
    */
   StabilityReport
   analyse_stability(const dealii::TrilinosWrappers::SparseMatrix      &K,
                     const unsigned int                                 n_u,
                     const StabilitySettings                           &settings,
                     const std::function<dealii::FullMatrix<double>()> &mass_mu,
-                    const SymmetricFactorization                      *factorization = nullptr);
+                    const SymmetricFactorization                      *factorization = nullptr,
+                    const unsigned int                                 dim           = 2,
+                    const std::vector<double>                         *u_dof_points  = nullptr);
 } // namespace GelMPM
 
 #endif
