@@ -220,7 +220,7 @@ namespace GelMPM
               C[k][m][L] += Pi[k][i] * state.A_n[i][J][m][L] * N[J];
 
     // The third derivative of the energy contracted with W, by a central difference of the
-    // tangent along W, symmetrised (as add_displacement_nitsche()).
+    // tangent along W, symmetrised (as add_displacement_nitsche_reference()).
     Tensor<4, 3> H;
     Tensor<2, 3> DW; // d(W : dP_n/dmu)/d(dF)
     const double W_norm = W.norm();

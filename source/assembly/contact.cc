@@ -195,7 +195,8 @@ namespace GelMPM
                                      this->nitsche.symmetry,
                                      with_matrix,
                                      s,
-                                     copy);
+                                     copy,
+                                     this->reference_nitsche_tangent);
             // The curvature of a sphere or a punch's rounded edge: beta g dm/dx, the derivative
             // of g m beyond m (x) m.
             if (with_matrix && gap.dm_dx != Tensor<2, dim>())

@@ -418,6 +418,11 @@ namespace GelMPM
     result.dFit     = dFit;
     result.a        = a;
     result.b        = b;
+    // b J_p = psi'' J^2 + psi' J, so J db/dJ = b + (psi''' J + 2 psi'') J^2 / J_p.
+    const double Jt    = result.J;
+    const double d3psi = kT_over_nu() * (-(2. * Jt - 1.) / (Jt * Jt * (Jt - 1.) * (Jt - 1.)) +
+                                         2. / (Jt * Jt * Jt) + 6. * chi_ / (Jt * Jt * Jt * Jt));
+    result.c           = b + (d3psi * Jt + 2. * d2psi) * Jt * Jt / J_p;
     return result;
   }
 

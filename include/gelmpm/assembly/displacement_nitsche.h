@@ -13,10 +13,19 @@ namespace GelMPM
    * -s (g (x) N) : dP_n/dmu q:
    *   R_u[w]  += A_s [ beta g . w - Pi(P_n N) . w - s W : A_n : grad_n w ],  W = g (x) N,
    *   R_mu[q] -= s A_s (W : dP_n/dmu) q.
-   * The exact tangent includes the third derivative of the energy contracted with W (a central
-   * difference of A_n along W), so that it is the Jacobian of the residual. Shared by the
+   * The exact tangent includes the third derivative of the energy contracted with W, so that it
+   * is the Jacobian of the residual. It is taken in closed form from the structure of A_n
+   * (FloryRehnerGel::Incremental: A_n,iJkL = delta_ik S_JL + a D_iL D_kJ + b D_iJ D_kL,
+   * D = dF^{-T}): along W, dD = -D W^T D, d ln dJ = D : W = w, da = -b w, db = c w, so that with
+   * h_a = D G_a, n = D N, p_a = g . h_a
+   *   sum_LQ G_a[L] H_kLmQ G_c[Q] = -b w h_c[k] h_a[m] + c w h_a[k] h_c[m]
+   *        - a (p_c n[k] h_a[m] + p_a h_c[k] n[m]) - b (p_a n[k] h_c[m] + p_c h_a[k] n[m])
+   * for H = dA_n/d(dF) : W (H_kLmQ = sum_iJ dA_n,kLmQ/d(dF)_iJ W_iJ),
+   * a few products per entry, and d(W : dP_n/dmu)/d(dF) G_a = (k_BT/nu) dJ (p_a n - w h_a).
+   * With @p reference_tangent it is add_displacement_nitsche_reference() instead. Shared by the
    * prescribed displacements (DisplacementNitscheAssembler) and the Nitsche variant of plane
-   * contact (ContactAssembler: a roller on the obstacle while active).
+   * contact (ContactAssembler: a roller on the obstacle while active). Axisymmetric points go to
+   * add_axisymmetric_displacement_nitsche().
    */
   template <int dim>
   void
@@ -27,7 +36,27 @@ namespace GelMPM
                            const double                  symmetry,
                            const bool                    with_matrix,
                            AssemblyScratch<dim>         &scratch,
-                           AssemblyCopy                 &copy);
+                           AssemblyCopy                 &copy,
+                           const bool                    reference_tangent = false);
+
+
+  /**
+   * add_displacement_nitsche() with the third-derivative term of the tangent by a central
+   * difference of A_n along W (two more evaluations of the gel, step 1e-5 / |W|, symmetrised;
+   * about 1e-9 accurate) and d(W : dP_n/dmu)/d(dF) by a difference in mu (exact, P_n is affine
+   * in mu), contracted with the dim^4 entries: the former assembly, kept as the reference the
+   * closed form is tested against (tests/assembly/nitsche_tangent). The same residual.
+   */
+  template <int dim>
+  void
+  add_displacement_nitsche_reference(const PointRecord<dim>       &point,
+                                     const dealii::Tensor<2, dim> &Pi,
+                                     const dealii::Tensor<1, dim> &g,
+                                     const double                  beta,
+                                     const double                  symmetry,
+                                     const bool                    with_matrix,
+                                     AssemblyScratch<dim>         &scratch,
+                                     AssemblyCopy                 &copy);
 
 
   /**

@@ -313,6 +313,20 @@ namespace GelMPM
       volume_term.set_generic_tangent(generic);
     }
 
+    /**
+     * Take the displacement Nitsche tangent's third-derivative term by a central difference of A_n
+     * (@p reference true, the former assembly, kept as the reference) instead of in closed form,
+     * at the prescribed displacements and Nitsche contact (add_displacement_nitsche()). The
+     * environment variable GELMPM_REFERENCE_NITSCHE_TANGENT (any value) sets it at construction,
+     * to time both with one binary (doc/performance.md, "Assembly at its flop limit").
+     */
+    void
+    set_reference_nitsche_tangent(const bool reference)
+    {
+      displacement_nitsche.set_reference_nitsche_tangent(reference);
+      contact.set_reference_nitsche_tangent(reference);
+    }
+
   private:
     /** Add a block's local matrix to the tangent (the copier of the assembly). */
     void

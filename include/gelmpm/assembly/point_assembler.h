@@ -11,6 +11,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,8 @@ namespace GelMPM
     std::vector<double>                 SG;           // [dim c + J] = V (S G_c)_J
     std::vector<double>                 s_row;        // [c] = G_a . V S G_c, one a at a time
     dealii::FullMatrix<double>          volume_lower; // the volume points' sum, lower triangle
+    // The displacement Nitsche tangent's vectors per function (add_displacement_nitsche()).
+    std::vector<double> nitsche_work;
     // Axisymmetric points: A : B(c, k) per test function (axisymmetric_terms.cc), kept here so
     // that no point allocates.
     std::vector<dealii::Tensor<2, 3>> hoop_products;
@@ -128,6 +131,20 @@ namespace GelMPM
       , spaces(spaces)
     {}
 
+    /**
+     * Whether the terms that call add_displacement_nitsche() (the prescribed displacements and
+     * Nitsche contact) take its tangent's third-derivative term by a central difference
+     * (@p reference true: add_displacement_nitsche_reference(), the former assembly, kept as the
+     * reference) instead of in closed form (the default). The environment variable
+     * GELMPM_REFERENCE_NITSCHE_TANGENT (any value) sets it at construction, to time both with
+     * one binary (doc/performance.md, "Assembly at its flop limit").
+     */
+    void
+    set_reference_nitsche_tangent(const bool reference)
+    {
+      reference_nitsche_tangent = reference;
+    }
+
   protected:
     /** The piece of the surface point @p point. */
     const BoundaryPiece<dim> &
@@ -139,6 +156,7 @@ namespace GelMPM
     const BoundaryConditions<dim> &boundary_conditions;
     const NitscheSettings         &nitsche;
     const DiscreteSpaces<dim>     &spaces;
+    bool reference_nitsche_tangent = std::getenv("GELMPM_REFERENCE_NITSCHE_TANGENT") != nullptr;
   };
 } // namespace GelMPM
 

@@ -141,6 +141,12 @@ namespace GelMPM
       dealii::Tensor<2, dim> dFit;
       /** The coefficients a and b of the structure of A_n. */
       double a = 0., b = 0.;
+      /**
+       * db/d(ln J) = J db/dJ: the derivative of b along a direction W of dF is c dF^{-T}:W (and
+       * that of a is -b dF^{-T}:W, since d ln J = dF^{-T}:W), so that the derivative of A_n along W
+       * has a closed form (add_displacement_nitsche()). Set with the tangent only.
+       */
+      double c = 0.;
     };
 
     /**
