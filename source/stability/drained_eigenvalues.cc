@@ -42,9 +42,10 @@ namespace GelMPM
     auto x0 = Teuchos::rcp(new MV(A.RowMap(), block_size));
     for (int j = 0; j < block_size; ++j)
       for (int i = 0; i < A.NumMyRows(); ++i)
-        (*x0)[j][i] = j < static_cast<int>(start.size()) && start[j].size() == static_cast<unsigned>(n)
-                        ? start[j](A.GRID(i))
-                        : 1. + 0.1 * std::sin(1. + A.GRID(i) * (1. + 0.37 * j));
+        (*x0)[j][i] =
+          j < static_cast<int>(start.size()) && start[j].size() == static_cast<unsigned>(n)
+            ? start[j](A.GRID(i))
+            : 1. + 0.1 * std::sin(1. + A.GRID(i) * (1. + 0.37 * j));
 
     // ML's operator applies its approximate inverse with ApplyInverse(); Anasazi calls Apply().
     auto preconditioner = Teuchos::rcp(new Epetra_InvOperator(
@@ -72,14 +73,14 @@ namespace GelMPM
     const Anasazi::ReturnType             outcome = solver.solve();
 
     DrainedEigenvalues result;
-    result.iterations     = solver.getNumIters();
+    result.iterations    = solver.getNumIters();
     const auto &solution = problem->getSolution();
     if (outcome != Anasazi::Converged || solution.numVecs < static_cast<int>(n_eigenvalues))
       {
         std::ostringstream why;
         why << "LOBPCG found " << solution.numVecs << " of the " << n_eigenvalues
-            << " smallest eigenvalues of K_uu to the residual " << tolerance
-            << " ||K_uu|| in " << result.iterations << " iterations";
+            << " smallest eigenvalues of K_uu to the residual " << tolerance << " ||K_uu|| in "
+            << result.iterations << " iterations";
         throw std::runtime_error(why.str());
       }
 

@@ -5,7 +5,8 @@
 // shifted to positive definite, and shifted by sigma between its second and third eigenvalue
 // (two negative eigenvalues near zero, as at a drained onset), each an AMG of the shifted matrix;
 // and the axisymmetric version of the scene, whose radial unknowns on the axis are diagonal-only
-// rows (their diagonal is an eigenvalue of K_uu, which both solvers must see). The k = 4 smallest eigenvalues agree to 1e-6 relative, each eigenvector has
+// rows (their diagonal is an eigenvalue of K_uu, which both solvers must see). The k = 4 smallest
+// eigenvalues agree to 1e-6 relative, each eigenvector has
 // ||K_uu v - lambda v|| <= 1e-7 ||K_uu||_inf ||v||, and analyse_stability() with
 // 'Eigensolver = iterative' reports the same values and, at the shifted block, the eigenvector of
 // lambda_min as the drained mode.
@@ -39,7 +40,8 @@ namespace
   }
 
 
-  /** Compare the iterative eigenpairs of K_uu with LAPACK's; print and return whether they agree. */
+  /** Compare the iterative eigenpairs of K_uu with LAPACK's; print and return whether they agree.
+   */
   bool
   check(const std::string                    &name,
         const TrilinosWrappers::SparseMatrix &K,
@@ -88,8 +90,16 @@ namespace
     settings.eigensolver            = GelMPM::StabilitySettings::Eigensolver::iterative;
     settings.n_drained_eigenvalues  = k;
     settings.perturbation_amplitude = 1e-2;
-    const auto report = GelMPM::analyse_stability(
-      K, n_u, settings, []() { return FullMatrix<double>(); }, nullptr, 2, &points);
+    const auto report               = GelMPM::analyse_stability(
+      K,
+      n_u,
+      settings,
+      []() {
+        return FullMatrix<double>();
+      },
+      nullptr,
+      2,
+      &points);
     bool report_ok = report.drained_eigenvalues.size() == k;
     for (unsigned int i = 0; i < k && report_ok; ++i)
       report_ok &= std::abs(report.drained_eigenvalues[i] - dense[i]) < 1e-6 * std::abs(dense[i]);
@@ -122,10 +132,10 @@ namespace
    * situation at a drained onset).
    */
   bool
-  check_scene(const std::string  &name,
-              const std::string  &overrides,
-              const std::string  &shift,
-              const unsigned int  k = 4)
+  check_scene(const std::string &name,
+              const std::string &overrides,
+              const std::string &shift,
+              const unsigned int k = 4)
   {
     SceneFixture       scene("symmetric", overrides);
     auto              &system = *scene.system;
