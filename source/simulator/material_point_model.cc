@@ -47,7 +47,7 @@ namespace GelMPM
           linear_solver.new_pattern();
         }))
       ++n_new_patterns;
-    if (linear_solver.iterative())
+    if (linear_solver.may_iterate())
       linear_solver.set_block_structure(scene.spaces->n_u_dofs(),
                                         dim,
                                         scene.spaces->u_dof_greville_points());

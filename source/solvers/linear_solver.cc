@@ -1,3 +1,4 @@
+#include <gelmpm/core/available_memory.h>
 #include <gelmpm/core/collective.h>
 #include <gelmpm/solvers/linear_solver.h>
 #include <gelmpm/stability/matrix_entries.h>
@@ -9,6 +10,7 @@
 #include <Epetra_MpiComm.h>
 #include <Epetra_Vector.h>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 namespace GelMPM
@@ -24,10 +26,15 @@ namespace GelMPM
   {
     prm.enter_subsection("Linear solver");
     prm.declare_entry("Solver",
-                      "MUMPS",
-                      dealii::Patterns::Selection("KLU|MUMPS|Krylov"),
-                      "Solver for the Newton system: MUMPS (sparse direct, multifrontal, fast "
-                      "with an optimised BLAS such as OpenBLAS; the default; LDL^T for the "
+                      "automatic",
+                      dealii::Patterns::Selection("automatic|KLU|MUMPS|Krylov"),
+                      "Solver for the Newton system: automatic (the default: MUMPS where MUMPS's "
+                      "own estimate of its factorisation, from an analysis of the first tangent, "
+                      "fits in 'Automatic memory share' of the memory available, Krylov "
+                      "otherwise; MUMPS on several MPI ranks. MUMPS was the faster at every size "
+                      "measured, Krylov the smaller in 3D: doc/performance.md, 'Iterative "
+                      "solver'), MUMPS (sparse direct, multifrontal, fast "
+                      "with an optimised BLAS such as OpenBLAS; LDL^T for the "
                       "symmetric tangent of the symmetric Nitsche variant, LU otherwise), KLU "
                       "(LU, no BLAS; slower on the wide stencils of B-splines, "
                       "doc/performance.md), or Krylov: GMRES with algebraic multigrid on the "
@@ -35,6 +42,13 @@ namespace GelMPM
                       "approximate Schur complement of mu (one MPI rank; doc/performance.md, "
                       "'Iterative solver'). With 'Stability' on, the analysis factorises the "
                       "tangent itself.");
+    prm.declare_entry("Automatic memory share",
+                      "0.5",
+                      dealii::Patterns::Double(0., 1.),
+                      "automatic: the share of the memory available when the first tangent is "
+                      "factorised (Linux's MemAvailable) that MUMPS's estimate of its "
+                      "factorisation (LU: twice the LDL^T estimate) may take; beyond it the run "
+                      "solves by Krylov. The rest is for the points, the matrix and the output.");
     prm.declare_entry("Krylov tolerance",
                       "1e-8",
                       dealii::Patterns::Double(1e-14, 0.1),
@@ -59,7 +73,14 @@ namespace GelMPM
   {
     prm.enter_subsection("Linear solver");
     const std::string solver = prm.get("Solver");
-    solver_type = solver == "MUMPS" ? "Amesos_Mumps" : solver == "KLU" ? "Amesos_Klu" : "Krylov";
+    automatic                = solver == "automatic";
+    decided                  = !automatic;
+    choice.clear();
+    // automatic starts as MUMPS and may turn to Krylov at the first factorisation (decide()).
+    solver_type                        = solver == "MUMPS" || automatic ? "Amesos_Mumps"
+                                         : solver == "KLU"              ? "Amesos_Klu"
+                                                                        : "Krylov";
+    memory_share                       = prm.get_double("Automatic memory share");
     krylov_settings.relative_tolerance = prm.get_double("Krylov tolerance");
     krylov_settings.max_iterations     = prm.get_integer("Krylov iterations");
     krylov_settings.restart            = prm.get_integer("Krylov restart");
@@ -86,6 +107,49 @@ namespace GelMPM
   LinearSolver::iterative() const
   {
     return solver_type == "Krylov";
+  }
+
+
+  bool
+  LinearSolver::may_iterate() const
+  {
+    return iterative() || !decided;
+  }
+
+
+  void
+  LinearSolver::decide(const dealii::TrilinosWrappers::SparseMatrix &K) const
+  {
+    decided = true;
+    if (Collective::is_parallel(K.get_mpi_communicator()))
+      {
+        choice = "MUMPS on several MPI ranks";
+        return;
+      }
+    // The analysis alone (ordering and symbolic factorisation) is cheap against the numeric
+    // factorisation; its estimate covers LDL^T, and LU keeps both triangles.
+    SymmetricFactorization analysis;
+    const double           estimate  = (symmetric ? 1. : 2.) * analysis.estimated_memory(K);
+    const double           available = available_memory();
+    const double           limit     = memory_share * available;
+    std::ostringstream     why;
+    why.precision(3);
+    why << "the factorisation's estimate " << estimate / 1e6 << " MB against " << limit / 1e6
+        << " MB (" << memory_share << " of " << available / 1e6 << " MB available)";
+    if (available > 0. && estimate > limit)
+      {
+        solver_type = "Krylov";
+        choice      = "Krylov: " + why.str();
+      }
+    else
+      choice = "MUMPS: " + why.str();
+  }
+
+
+  std::string
+  LinearSolver::automatic_choice() const
+  {
+    return choice;
   }
 
 
@@ -121,6 +185,8 @@ namespace GelMPM
   void
   LinearSolver::factorize(const dealii::TrilinosWrappers::SparseMatrix &K) const
   {
+    if (!decided)
+      decide(K);
     const Epetra_CrsMatrix &matrix = K.trilinos_matrix();
     factorized                     = false;
     if (iterative())
@@ -314,6 +380,9 @@ namespace GelMPM
   std::string
   LinearSolver::name() const
   {
-    return uses_ldlt() ? "MUMPS LDL^T" : iterative() ? "GMRES with AMG and Schur" : solver_type;
+    const std::string used = uses_ldlt()   ? "MUMPS LDL^T"
+                             : iterative() ? "GMRES with AMG and Schur"
+                                           : solver_type;
+    return automatic ? "automatic: " + used + (choice.empty() ? "" : "; " + choice) : used;
   }
 } // namespace GelMPM

@@ -122,6 +122,19 @@ namespace GelMPM
   }
 
 
+  double
+  SymmetricFactorization::estimated_memory(const dealii::TrilinosWrappers::SparseMatrix &K)
+  {
+    data->factorized = false;
+    if (!data->initialized)
+      data->start(K.get_mpi_communicator());
+    data->gather(K, K.m());
+    data->call(1);
+    // INFOG(17): MB (10^6 bytes) for the in-core factorisation, all ranks.
+    return 1e6 * data->mumps.infog[16];
+  }
+
+
   void
   SymmetricFactorization::factorize(const dealii::TrilinosWrappers::SparseMatrix &K,
                                     const unsigned int                            leading)

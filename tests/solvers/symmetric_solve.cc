@@ -86,6 +86,10 @@ main(int argc, char **argv)
 
   dealii::ParameterHandler prm;
   GelMPM::LinearSolver::declare_parameters(prm);
+  // MUMPS by name: 'automatic' would choose it too, but says so in name().
+  prm.enter_subsection("Linear solver");
+  prm.set("Solver", "MUMPS");
+  prm.leave_subsection();
   GelMPM::LinearSolver lu, ldlt;
   lu.parse_parameters(prm);
   ldlt.parse_parameters(prm);

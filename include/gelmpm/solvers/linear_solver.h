@@ -38,6 +38,11 @@ namespace GelMPM
    * and an approximate Schur complement of mu): factorize() builds the preconditioner, solve()
    * iterates. It needs the block structure (set_block_structure()) after every change of the
    * unknowns, and runs on one MPI rank.
+   *
+   * "automatic" (the default) decides at the first factorisation: MUMPS, unless MUMPS's own
+   * estimate of its factorisation (SymmetricFactorization::estimated_memory(), doubled for LU)
+   * exceeds 'Automatic memory share' of the memory available, then Krylov; MUMPS on several
+   * ranks. Until then may_iterate() is true, so the caller keeps the block structure set.
    */
   class LinearSolver
   {
@@ -131,6 +136,15 @@ namespace GelMPM
     bool
     iterative() const;
 
+    /** Whether the solve may still turn out iterative ('automatic' before its decision): the
+     * block structure must then be set. */
+    bool
+    may_iterate() const;
+
+    /** What 'automatic' chose and why (empty before the decision or without 'automatic'). */
+    std::string
+    automatic_choice() const;
+
     /**
      * For the iterative solver: the number of displacement unknowns (dim interleaved components
      * per DoF, before mu's) and each one's Greville-point coordinate (BlockKrylov::set_structure).
@@ -145,8 +159,16 @@ namespace GelMPM
     krylov_iterations() const;
 
   private:
-    std::string solver_type = "Amesos_Mumps";
-    bool        symmetric   = false;
+    /** 'automatic': choose MUMPS or Krylov at the first factorisation of @p K. */
+    void
+    decide(const dealii::TrilinosWrappers::SparseMatrix &K) const;
+
+    mutable std::string solver_type  = "Amesos_Mumps";
+    bool                automatic    = false;
+    mutable bool        decided      = true;
+    double              memory_share = 0.5;
+    mutable std::string choice;
+    bool                symmetric = false;
     // The kept factorisation: a cache, so solve() stays const for its callers.
     mutable std::unique_ptr<Epetra_LinearProblem>   problem;
     mutable std::unique_ptr<Amesos_BaseSolver>      factorisation;

@@ -66,6 +66,14 @@ namespace GelMPM
               const unsigned int leading = std::numeric_limits<unsigned int>::max());
 
     /**
+     * MUMPS's estimate, in bytes, of the memory an in-core LDL^T factorisation of @p K would take
+     * (INFOG(17), summed over the ranks), from its analysis alone: nothing is factorised. The
+     * object keeps no factorisation afterwards.
+     */
+    double
+    estimated_memory(const dealii::TrilinosWrappers::SparseMatrix &K);
+
+    /**
      * Factorise @p K (the same leading block as the last factorize()) numerically with the
      * analysis of the last factorize(): @p K must have the sparsity pattern of the matrix
      * analysed then. The Newton iterations of a step share one pattern.
