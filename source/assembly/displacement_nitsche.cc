@@ -46,6 +46,136 @@ namespace GelMPM
 
       return W;
     }
+
+    /** The tangent of add_displacement_nitsche() at the gel state @p state, in closed form. */
+    template <int dim>
+    void
+    add_closed_form_tangent(const PointRecord<dim>                          &point,
+                            const typename FloryRehnerGel<dim>::Incremental &state,
+                            const Tensor<2, dim>                            &Pi,
+                            const Tensor<1, dim>                            &g,
+                            const double                                     beta,
+                            const double                                     symmetry,
+                            AssemblyScratch<dim>                            &s,
+                            AssemblyCopy                                    &copy)
+    {
+      // With D = dF^{-T}, h_a = D G_a, n = D N, p_a = g . h_a, w = g . n (= D : W) and the
+      // structure A_n,iJkL = delta_ik S_JL + a D_iL D_kJ + b D_iJ D_kL
+      // (FloryRehnerGel::Incremental):
+      //  - consistency, CG_a[k][m] = sum_iJL Pi_ki A_n,iJmL N_J G_a[L]
+      //      = Pi_km (S N . G_a) + a (Pi h_a)_k n[m] + b (Pi n)_k h_a[m];
+      //  - the third derivative along W (dD = -D W^T D, so dh_a = -p_a n; da = -b w, db = c w),
+      //    X(a,k; c,m) = sum_LQ G_a[L] (dA_n,kLmQ/d(dF) : W) G_c[Q]
+      //      = h_a[m] u_c[k] + v_a[k] h_c[m] + n[m] z_ac[k],
+      //    u_c = -b w h_c - a p_c n, v_a = c w h_a - b p_a n, z_ac = -a p_a h_c - b p_c h_a,
+      //    which has the major symmetry X(a,k; c,m) = X(c,m; a,k) exactly;
+      //  - d(W : dP_n/dmu)/d(dF) G_a = (k_BT/nu) dJ (p_a n - w h_a) (dP_n/dmu = -(k_BT/nu) dJ D).
+      // The pairs c <= a are computed and their mirror written with the same X, so that the
+      // symmetric variant's tangent is symmetric bit for bit.
+      const double          area = point.measure;
+      const auto           &N    = point.normal;
+      const double          sym  = symmetry;
+      const unsigned int    n_u = s.n_u, mu0 = dim * n_u;
+      auto                 &K    = copy.matrix;
+      const Tensor<2, dim> &D    = state.dFit;
+      const Tensor<1, dim>  n    = D * N;
+      const Tensor<1, dim>  SN   = state.S * N;
+      const Tensor<1, dim>  Pi_n = Pi * n;
+      const double          w    = g * n;
+      // X and the consistency term scaled by the area (and X by the symmetry) once per point.
+      const double as  = area * sym * state.a;
+      const double bs  = area * sym * state.b;
+      const double cs  = area * sym * state.c;
+      const double aA  = area * state.a;
+      const double bA  = area * state.b;
+      const double kdJ = point.gel->kT_over_nu() * state.delta_J;
+
+      // Per function: h[dim], u[dim], v[dim], p, CG[dim * dim] (area included), DWG[dim].
+      constexpr unsigned int stride = 4 * dim + 1 + dim * dim;
+      constexpr unsigned int u_ = dim, v_ = 2 * dim, p_ = 3 * dim, CG_ = 3 * dim + 1,
+                             DW_ = 3 * dim + 1 + dim * dim;
+      if (s.nitsche_work.size() < stride * n_u)
+        s.nitsche_work.resize(stride * n_u);
+      double *const work = s.nitsche_work.data();
+      for (unsigned int a = 0; a < n_u; ++a)
+        {
+          double *const         f  = work + stride * a;
+          const Tensor<1, dim> &Ga = s.G[a];
+          double                p = 0., sg = 0.;
+          for (unsigned int i = 0; i < dim; ++i)
+            {
+              double hi = 0.;
+              for (unsigned int L = 0; L < dim; ++L)
+                hi += D[i][L] * Ga[L];
+              f[i] = hi;
+              p += g[i] * hi;
+              sg += SN[i] * Ga[i];
+            }
+          f[p_] = p;
+          for (unsigned int k = 0; k < dim; ++k)
+            {
+              f[u_ + k]  = -bs * w * f[k] - as * p * n[k];
+              f[v_ + k]  = cs * w * f[k] - bs * p * n[k];
+              f[DW_ + k] = kdJ * (p * n[k] - w * f[k]);
+            }
+          for (unsigned int k = 0; k < dim; ++k)
+            {
+              double Pi_h = 0.;
+              for (unsigned int i = 0; i < dim; ++i)
+                Pi_h += Pi[k][i] * f[i];
+              for (unsigned int m = 0; m < dim; ++m)
+                f[CG_ + dim * k + m] =
+                  area * Pi[k][m] * sg + aA * Pi_h * n[m] + bA * Pi_n[k] * f[m];
+            }
+        }
+
+      const double beta_area = area * beta;
+      for (unsigned int a = 0; a < n_u; ++a)
+        {
+          const double *const fa  = work + stride * a;
+          const double        Na  = s.N[a];
+          const double        apa = as * fa[p_];
+          for (unsigned int c = 0; c <= a; ++c)
+            {
+              const double *const fc  = work + stride * c;
+              const double        Nc  = s.N[c];
+              const double        bNN = beta_area * Na * Nc;
+              const double        bpc = bs * fc[p_];
+              double              z[dim];
+              for (unsigned int k = 0; k < dim; ++k)
+                z[k] = -apa * fc[k] - bpc * fa[k];
+              for (unsigned int k = 0; k < dim; ++k)
+                {
+                  double *const row = &K(dim * a + k, dim * c);
+                  for (unsigned int m = 0; m < (c == a ? k + 1 : dim); ++m)
+                    {
+                      const double X  = fa[m] * fc[u_ + k] + fa[v_ + k] * fc[m] + n[m] * z[k];
+                      const double t1 = Na * fc[CG_ + dim * k + m];
+                      const double t2 = Nc * fa[CG_ + dim * m + k];
+                      row[m] += bNN * Pi[k][m] - X - (t1 + sym * t2);
+                      if (c != a || m != k)
+                        K(dim * c + m, dim * a + k) += bNN * Pi[m][k] - X - (t2 + sym * t1);
+                    }
+                }
+            }
+        }
+
+      const Tensor<1, dim> Pi_dPdmu_N = Pi * (state.dP_n_dmu * N);
+      for (unsigned int a = 0; a < n_u; ++a)
+        {
+          const double *const fa = work + stride * a;
+          for (unsigned int k = 0; k < dim; ++k)
+            {
+              const double x = s.N[a] * Pi_dPdmu_N[k];
+              const double y = fa[DW_ + k];
+              for (unsigned int b = 0; b < s.n_mu; ++b)
+                {
+                  K(dim * a + k, mu0 + b) -= area * s.M[b] * (x + sym * y);
+                  K(mu0 + b, dim * a + k) -= sym * area * s.M[b] * (x + y);
+                }
+            }
+        }
+    }
   } // namespace
 
 
@@ -78,120 +208,7 @@ namespace GelMPM
     if (!with_matrix)
       return;
 
-    // With D = dF^{-T}, h_a = D G_a, n = D N, p_a = g . h_a, w = g . n (= D : W) and the structure
-    // A_n,iJkL = delta_ik S_JL + a D_iL D_kJ + b D_iJ D_kL (FloryRehnerGel::Incremental):
-    //  - consistency, CG_a[k][m] = sum_iJL Pi_ki A_n,iJmL N_J G_a[L]
-    //      = Pi_km (S N . G_a) + a (Pi h_a)_k n[m] + b (Pi n)_k h_a[m];
-    //  - the third derivative along W (dD = -D W^T D, so dh_a = -p_a n; da = -b w, db = c w),
-    //    X(a,k; c,m) = sum_LQ G_a[L] (dA_n,kLmQ/d(dF) : W) G_c[Q]
-    //      = h_a[m] u_c[k] + v_a[k] h_c[m] + n[m] z_ac[k],
-    //    u_c = -b w h_c - a p_c n, v_a = c w h_a - b p_a n, z_ac = -a p_a h_c - b p_c h_a,
-    //    which has the major symmetry X(a,k; c,m) = X(c,m; a,k) exactly;
-    //  - d(W : dP_n/dmu)/d(dF) G_a = (k_BT/nu) dJ (p_a n - w h_a) (dP_n/dmu = -(k_BT/nu) dJ D).
-    // The pairs c <= a are computed and their mirror written with the same X, so that the
-    // symmetric variant's tangent is symmetric bit for bit.
-    const double          area = point.measure;
-    const auto           &N    = point.normal;
-    const double          sym  = symmetry;
-    const unsigned int    n_u = s.n_u, mu0 = dim * n_u;
-    auto                 &K    = copy.matrix;
-    const Tensor<2, dim> &D    = state.dFit;
-    const Tensor<1, dim>  n    = D * N;
-    const Tensor<1, dim>  SN   = state.S * N;
-    const Tensor<1, dim>  Pi_n = Pi * n;
-    const double          w    = g * n;
-    // X and the consistency term scaled by the area (and X by the symmetry) once per point.
-    const double as  = area * sym * state.a;
-    const double bs  = area * sym * state.b;
-    const double cs  = area * sym * state.c;
-    const double aA  = area * state.a;
-    const double bA  = area * state.b;
-    const double kdJ = point.gel->kT_over_nu() * state.delta_J;
-
-    // Per function: h[dim], u[dim], v[dim], p, CG[dim * dim] (area included), DWG[dim].
-    constexpr unsigned int stride = 4 * dim + 1 + dim * dim;
-    constexpr unsigned int u_ = dim, v_ = 2 * dim, p_ = 3 * dim, CG_ = 3 * dim + 1,
-                           DW_ = 3 * dim + 1 + dim * dim;
-    if (s.nitsche_work.size() < stride * n_u)
-      s.nitsche_work.resize(stride * n_u);
-    double *const work = s.nitsche_work.data();
-    for (unsigned int a = 0; a < n_u; ++a)
-      {
-        double *const         f  = work + stride * a;
-        const Tensor<1, dim> &Ga = s.G[a];
-        double                p = 0., sg = 0.;
-        for (unsigned int i = 0; i < dim; ++i)
-          {
-            double hi = 0.;
-            for (unsigned int L = 0; L < dim; ++L)
-              hi += D[i][L] * Ga[L];
-            f[i] = hi;
-            p += g[i] * hi;
-            sg += SN[i] * Ga[i];
-          }
-        f[p_] = p;
-        for (unsigned int k = 0; k < dim; ++k)
-          {
-            f[u_ + k]  = -bs * w * f[k] - as * p * n[k];
-            f[v_ + k]  = cs * w * f[k] - bs * p * n[k];
-            f[DW_ + k] = kdJ * (p * n[k] - w * f[k]);
-          }
-        for (unsigned int k = 0; k < dim; ++k)
-          {
-            double Pi_h = 0.;
-            for (unsigned int i = 0; i < dim; ++i)
-              Pi_h += Pi[k][i] * f[i];
-            for (unsigned int m = 0; m < dim; ++m)
-              f[CG_ + dim * k + m] = area * Pi[k][m] * sg + aA * Pi_h * n[m] + bA * Pi_n[k] * f[m];
-          }
-      }
-
-    const double beta_area = area * beta;
-    for (unsigned int a = 0; a < n_u; ++a)
-      {
-        const double *const fa  = work + stride * a;
-        const double        Na  = s.N[a];
-        const double        apa = as * fa[p_];
-        for (unsigned int c = 0; c <= a; ++c)
-          {
-            const double *const fc  = work + stride * c;
-            const double        Nc  = s.N[c];
-            const double        bNN = beta_area * Na * Nc;
-            const double        bpc = bs * fc[p_];
-            double              z[dim];
-            for (unsigned int k = 0; k < dim; ++k)
-              z[k] = -apa * fc[k] - bpc * fa[k];
-            for (unsigned int k = 0; k < dim; ++k)
-              {
-                double *const row = &K(dim * a + k, dim * c);
-                for (unsigned int m = 0; m < (c == a ? k + 1 : dim); ++m)
-                  {
-                    const double X  = fa[m] * fc[u_ + k] + fa[v_ + k] * fc[m] + n[m] * z[k];
-                    const double t1 = Na * fc[CG_ + dim * k + m];
-                    const double t2 = Nc * fa[CG_ + dim * m + k];
-                    row[m] += bNN * Pi[k][m] - X - (t1 + sym * t2);
-                    if (c != a || m != k)
-                      K(dim * c + m, dim * a + k) += bNN * Pi[m][k] - X - (t2 + sym * t1);
-                  }
-              }
-          }
-      }
-
-    const Tensor<1, dim> Pi_dPdmu_N = Pi * (state.dP_n_dmu * N);
-    for (unsigned int a = 0; a < n_u; ++a)
-      {
-        const double *const fa = work + stride * a;
-        for (unsigned int k = 0; k < dim; ++k)
-          {
-            const double x = s.N[a] * Pi_dPdmu_N[k];
-            const double y = fa[DW_ + k];
-            for (unsigned int b = 0; b < s.n_mu; ++b)
-              {
-                K(dim * a + k, mu0 + b) -= area * s.M[b] * (x + sym * y);
-                K(mu0 + b, dim * a + k) -= sym * area * s.M[b] * (x + y);
-              }
-          }
-      }
+    add_closed_form_tangent(point, state, Pi, g, beta, symmetry, s, copy);
   }
 
 
