@@ -139,27 +139,11 @@ namespace
 
   const std::vector<std::string> cube_pieces = {"symmetry", "top"};
 
-  /** A cube [0, 1]^3 on a 16^3 grid of [-0.5, 1.5]^3, its top pressed down. */
-  struct CubeParameters
+  /** The fixture's cube with the boundary conditions of this test. */
+  struct Cube : public CubeFixture
   {
-    ParameterHandler prm;
-
-    CubeParameters()
-    {
-      GelMPM::Scene<3>::declare_parameters(prm, cube_pieces);
-      prm.parse_input_from_string(R"(
-      subsection Background grid
-        set Lower corner = -0.5, -0.5, -0.5
-        set Upper corner = 1.5, 1.5, 1.5
-        set Cells = 16, 16, 16
-      end
-      subsection Geometry
-        set Boxes = 0, 0, 0 : 1, 1, 1
-      end
-      subsection Material points
-        set Points per cell = 3
-      end
-      subsection Boundary conditions
+    Cube()
+      : CubeFixture(cube_pieces, R"(
         subsection symmetry
           set Selector = nx < -0.5 || ny < -0.5 || nz < -0.5
           set Displacement = normal
@@ -175,20 +159,8 @@ namespace
             set Function expression = -0.1
           end
         end
-      end)");
-    }
-  };
-
-  struct Cube : private CubeParameters, public GelMPM::Scene<3>
-  {
-    Cube()
-      : GelMPM::Scene<3>(prm, cube_pieces)
-    {
-      create_material_points();
-      create_system();
-      system->setup(particles);
-      system->set_boundary_values(0.5, 0.);
-    }
+      )")
+    {}
   };
 
 

@@ -2,6 +2,7 @@
 // assembly tests: Q2-Q2SD on a 24 x 24 grid of [-1, 2]^2, a cut box [0, 1.3] x [0, 1.1], pieces
 // with fixed, normal, tangential and free displacement, prescribed mu and flux, time-dependent
 // values. It is a GelMPM::Scene, built as the simulator builds one; only the text is the test's.
+// Also a 3D cube (CubeFixture) whose boundary conditions are the test's.
 #ifndef gelmpm_tests_scene_fixture_h
 #define gelmpm_tests_scene_fixture_h
 
@@ -82,6 +83,34 @@ namespace scene_fixture
       end)" + overrides);
     }
   };
+
+
+  /** A cube's parameters: the text of cube(), with @p boundary_conditions (the subsections of
+   * @p pieces) in "Boundary conditions". */
+  struct CubeParameters
+  {
+    dealii::ParameterHandler prm;
+
+    CubeParameters(const std::vector<std::string> &pieces, const std::string &boundary_conditions)
+    {
+      GelMPM::Scene<3>::declare_parameters(prm, pieces);
+      prm.parse_input_from_string(R"(
+      subsection Background grid
+        set Lower corner = -0.5, -0.5, -0.5
+        set Upper corner = 1.5, 1.5, 1.5
+        set Cells = 16, 16, 16
+      end
+      subsection Geometry
+        set Boxes = 0, 0, 0 : 1, 1, 1
+      end
+      subsection Material points
+        set Points per cell = 3
+      end
+      subsection Boundary conditions
+      )" + boundary_conditions + R"(
+      end)");
+    }
+  };
 } // namespace scene_fixture
 
 /**
@@ -96,6 +125,24 @@ struct SceneFixture : private scene_fixture::Parameters, public GelMPM::Scene<2>
   explicit SceneFixture(const std::string &variant = "symmetric", const std::string &overrides = "")
     : scene_fixture::Parameters(variant, overrides)
     , GelMPM::Scene<2>(prm, scene_fixture::pieces)
+  {
+    create_material_points();
+    create_system();
+    system->setup(particles);
+    system->set_boundary_values(0.5, 0.);
+  }
+};
+
+
+/**
+ * A cube [0, 1]^3 on a 16^3 grid of [-0.5, 1.5]^3 (Q2-Q2SD, 27 points per cell) with the pieces
+ * @p pieces and their subsections @p boundary_conditions, set up as SceneFixture is.
+ */
+struct CubeFixture : private scene_fixture::CubeParameters, public GelMPM::Scene<3>
+{
+  CubeFixture(const std::vector<std::string> &pieces, const std::string &boundary_conditions)
+    : scene_fixture::CubeParameters(pieces, boundary_conditions)
+    , GelMPM::Scene<3>(prm, pieces)
   {
     create_material_points();
     create_system();
