@@ -49,6 +49,17 @@ namespace GelMPM
                       "factorised (Linux's MemAvailable) that MUMPS's estimate of its "
                       "factorisation (LU: twice the LDL^T estimate) may take; beyond it the run "
                       "solves by Krylov. The rest is for the points, the matrix and the output.");
+    prm.declare_entry("Ordering",
+                      "fewest flops",
+                      dealii::Patterns::Selection("fewest flops|nested dissection|MUMPS"),
+                      "MUMPS LDL^T (the symmetric Nitsche variant): the fill-reducing ordering of "
+                      "its analysis, made once per sparsity pattern. nested dissection: METIS's, "
+                      "computed here and handed to MUMPS. MUMPS: its own choice, approximate "
+                      "minimum fill in Debian's MUMPS (built without METIS). fewest flops (the "
+                      "default): both analysed, the one MUMPS estimates cheaper kept; on a compact "
+                      "3D body the nested dissection takes about half the flops, on a slender one "
+                      "about twice (doc/performance.md, 'The ordering of the direct solver'). On "
+                      "several MPI ranks MUMPS always orders by itself.");
     prm.declare_entry("Krylov tolerance",
                       "1e-8",
                       dealii::Patterns::Double(1e-14, 0.1),
@@ -77,10 +88,11 @@ namespace GelMPM
     decided                  = !automatic;
     choice.clear();
     // automatic starts as MUMPS and may turn to Krylov at the first factorisation (decide()).
-    solver_type                        = solver == "MUMPS" || automatic ? "Amesos_Mumps"
-                                         : solver == "KLU"              ? "Amesos_Klu"
-                                                                        : "Krylov";
-    memory_share                       = prm.get_double("Automatic memory share");
+    solver_type  = solver == "MUMPS" || automatic ? "Amesos_Mumps"
+                   : solver == "KLU"              ? "Amesos_Klu"
+                                                  : "Krylov";
+    memory_share = prm.get_double("Automatic memory share");
+    ordering     = SymmetricFactorization::parse_ordering(prm.get("Ordering"));
     krylov_settings.relative_tolerance = prm.get_double("Krylov tolerance");
     krylov_settings.max_iterations     = prm.get_integer("Krylov iterations");
     krylov_settings.restart            = prm.get_integer("Krylov restart");
@@ -129,10 +141,11 @@ namespace GelMPM
     // The analysis alone (ordering and symbolic factorisation) is cheap against the numeric
     // factorisation; its estimate covers LDL^T, and LU keeps both triangles.
     SymmetricFactorization analysis;
-    const double           estimate  = (symmetric ? 1. : 2.) * analysis.estimated_memory(K);
-    const double           available = available_memory();
-    const double           limit     = memory_share * available;
-    std::ostringstream     why;
+    analysis.set_ordering(ordering);
+    const double       estimate  = (symmetric ? 1. : 2.) * analysis.estimated_memory(K);
+    const double       available = available_memory();
+    const double       limit     = memory_share * available;
+    std::ostringstream why;
     why.precision(3);
     why << "the factorisation's estimate " << estimate / 1e6 << " MB against " << limit / 1e6
         << " MB (" << memory_share << " of " << available / 1e6 << " MB available)";
@@ -201,6 +214,7 @@ namespace GelMPM
             if (!ldlt || analysed_matrix != &matrix)
               {
                 ldlt = std::make_unique<SymmetricFactorization>();
+                ldlt->set_ordering(ordering);
                 ldlt->factorize(K);
                 analysed_matrix = &matrix;
                 ++symbolic_count;
@@ -380,9 +394,16 @@ namespace GelMPM
   std::string
   LinearSolver::name() const
   {
-    const std::string used = uses_ldlt()   ? "MUMPS LDL^T"
-                             : iterative() ? "GMRES with AMG and Schur"
-                                           : solver_type;
+    std::string used = uses_ldlt()   ? "MUMPS LDL^T"
+                       : iterative() ? "GMRES with AMG and Schur"
+                                     : solver_type;
+    if (uses_ldlt() && ldlt)
+      {
+        std::ostringstream flops;
+        flops.precision(3);
+        flops << ", " << ldlt->factorization_flops() << " flops the last";
+        used += ", " + ldlt->ordering_used() + flops.str();
+      }
     return automatic ? "automatic: " + used + (choice.empty() ? "" : "; " + choice) : used;
   }
 } // namespace GelMPM

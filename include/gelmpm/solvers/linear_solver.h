@@ -167,8 +167,10 @@ namespace GelMPM
     bool                automatic    = false;
     mutable bool        decided      = true;
     double              memory_share = 0.5;
-    mutable std::string choice;
-    bool                symmetric = false;
+    // The fill-reducing ordering of MUMPS's LDL^T analyses.
+    SymmetricFactorization::Ordering ordering = SymmetricFactorization::Ordering::fewest_flops;
+    mutable std::string              choice;
+    bool                             symmetric = false;
     // The kept factorisation: a cache, so solve() stays const for its callers.
     mutable std::unique_ptr<Epetra_LinearProblem>   problem;
     mutable std::unique_ptr<Amesos_BaseSolver>      factorisation;

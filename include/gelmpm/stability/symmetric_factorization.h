@@ -6,6 +6,7 @@
 
 #include <limits>
 #include <memory>
+#include <string>
 
 namespace GelMPM
 {
@@ -46,10 +47,32 @@ namespace GelMPM
    * rank factorises and solves together, with the right-hand side taken from rank 0 and the
    * solution given to all (the Newton vectors are whole on every rank, doc/architecture.md).
    * INFOG, and with it the inertia, is global and the same on every rank.
+   *
+   * The fill-reducing ordering: on one rank, by default, both a nested dissection of the matrix
+   * graph by METIS (METIS_NodeND) and MUMPS's own choice are analysed and the one with fewer
+   * estimated flops is kept. Debian's MUMPS has no METIS of its own; its choice is approximate
+   * minimum fill (AMF), which on a compact 3D body takes about twice the flops of the nested
+   * dissection and on a slender one about half (doc/performance.md, "The ordering of the direct
+   * solver"). On several ranks MUMPS orders by itself.
    */
   class SymmetricFactorization
   {
   public:
+    /** The fill-reducing ordering of the analysis. */
+    enum class Ordering
+    {
+      /** Both below analysed, the one with fewer estimated flops kept (the default). */
+      fewest_flops,
+      /** METIS's nested dissection of the matrix graph (one rank; several: MUMPS's choice). */
+      nested_dissection,
+      /** MUMPS's own choice (ICNTL(7) = 7: AMF with Debian's MUMPS). */
+      automatic
+    };
+
+    /** Parse the name of an Ordering ("fewest flops", "nested dissection" or "MUMPS"). */
+    static Ordering
+    parse_ordering(const std::string &name);
+
     SymmetricFactorization();
     ~SymmetricFactorization();
     SymmetricFactorization(const SymmetricFactorization &) = delete;
@@ -91,6 +114,21 @@ namespace GelMPM
      */
     void
     solve(dealii::Vector<double> &x) const;
+
+    /** Use @p ordering in the analyses from now on (the default: fewest flops). */
+    void
+    set_ordering(const Ordering ordering);
+
+    /**
+     * Floating-point operations of the last numeric factorisation (RINFOG(3)): the measure of the
+     * ordering's quality.
+     */
+    double
+    factorization_flops() const;
+
+    /** The ordering of the last analysis, by name (INFOG(7): "nested dissection" when ours). */
+    std::string
+    ordering_used() const;
 
     /** Size of the factorised matrix. */
     unsigned int
