@@ -464,7 +464,10 @@ namespace GelMPM
 
     scratch.gather_block_coefficients(block, spaces_, solution);
     if (with_matrix)
-      scratch.volume_lower.reinit(n, n);
+      {
+        scratch.volume_lower.reinit(n, n);
+        volume_term.start_block(scratch, block.end - block.first);
+      }
 
     unsigned int failed_point = block.first;
     try
@@ -482,6 +485,8 @@ namespace GelMPM
             else
               add_surface_point(point, dt, with_matrix, scratch, copy);
           }
+        if (with_matrix)
+          volume_term.add_block_tangent(scratch, copy);
         if (with_matrix)
           for (unsigned int r = 0; r < n; ++r)
             for (unsigned int c = 0; c <= r; ++c)

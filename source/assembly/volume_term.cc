@@ -1,6 +1,10 @@
 #include <gelmpm/assembly/axisymmetric_terms.h>
 #include <gelmpm/assembly/volume_term.h>
 
+#include <deal.II/lac/lapack_templates.h>
+
+#include <algorithm>
+
 namespace GelMPM
 {
   using dealii::Tensor;
@@ -41,8 +45,203 @@ namespace GelMPM
     // mirrors the block's sum once.
     if (generic_tangent)
       add_generic_tangent(point, state, dt, s);
+    else if (batched())
+      gather_tangent(point, state, dt, s);
     else
       add_structured_tangent(point, state, dt, s);
+  }
+
+
+  template <int dim>
+  void
+  VolumeTermAssembler<dim>::start_block(AssemblyScratch<dim> &s, const unsigned int n_points) const
+  {
+    auto &B    = s.batch;
+    B.n_points = 0;
+    if (!batched())
+      return;
+    B.capacity             = std::max(B.capacity, n_points);
+    const unsigned int n_u = s.n_u, n_mu = s.n_mu;
+    const auto         grow = [](std::vector<double> &v, const std::size_t size) {
+      if (v.size() < size)
+        v.resize(size);
+    };
+    for (auto *v : {&B.h, &B.ah, &B.bh, &B.G, &B.SG})
+      grow(*v, std::size_t(B.capacity) * dim * n_u);
+    grow(B.qM, std::size_t(B.capacity) * n_mu);
+    grow(B.GM, std::size_t(B.capacity) * dim * n_mu);
+    grow(B.wGM, std::size_t(B.capacity) * dim * n_mu);
+    grow(B.hbh, std::size_t(dim * n_u) * dim * n_u);
+    grow(B.hah, std::size_t(dim * n_u) * dim * n_u);
+    grow(B.s, std::size_t(n_u) * n_u);
+    grow(B.mu_u, std::size_t(n_mu) * dim * n_u);
+    grow(B.mu_mu, std::size_t(n_mu) * n_mu);
+  }
+
+
+  template <int dim>
+  void
+  VolumeTermAssembler<dim>::gather_tangent(const PointRecord<dim>                          &point,
+                                           const typename FloryRehnerGel<dim>::Incremental &state,
+                                           const double                                     dt,
+                                           AssemblyScratch<dim>                            &s) const
+  {
+    auto              &B   = s.batch;
+    const unsigned int p   = B.n_points++;
+    const unsigned int cap = B.capacity, n_u = s.n_u, n_mu = s.n_mu;
+    Assert(p < cap, dealii::ExcInternalError());
+    const double        V = point.measure, Va = V * state.a, Vb = V * state.b;
+    const double *const G = &s.G[0][0];
+    for (unsigned int i = 0; i < dim; ++i)
+      {
+        double *const h  = &B.h[p + cap * (n_u * i)];
+        double *const ah = &B.ah[p + cap * (n_u * i)];
+        double *const bh = &B.bh[p + cap * (n_u * i)];
+        double *const Gi = &B.G[n_u * (dim * p + i)];
+        double *const SG = &B.SG[n_u * (dim * p + i)];
+        for (unsigned int a = 0; a < n_u; ++a)
+          {
+            double hv = 0., sv = 0.;
+            for (unsigned int L = 0; L < dim; ++L)
+              {
+                hv += state.dFit[i][L] * G[dim * a + L];
+                sv += state.S[i][L] * G[dim * a + L];
+              }
+            h[cap * a]  = hv;
+            ah[cap * a] = Va * hv;
+            bh[cap * a] = Vb * hv;
+            Gi[a]       = G[dim * a + i];
+            SG[a]       = V * sv;
+          }
+      }
+    const double q    = -V * point.gel->kT_over_nu() * state.delta_J;
+    const double Vdtm = V * dt * point.mobility;
+    for (unsigned int b = 0; b < n_mu; ++b)
+      B.qM[p + cap * b] = q * s.M[b];
+    for (unsigned int J = 0; J < dim; ++J)
+      for (unsigned int b = 0; b < n_mu; ++b)
+        {
+          B.GM[b + n_mu * (dim * p + J)]  = s.GM[b][J];
+          B.wGM[b + n_mu * (dim * p + J)] = -Vdtm * s.GM[b][J];
+        }
+  }
+
+
+  template <int dim>
+  void
+  VolumeTermAssembler<dim>::add_block_tangent(AssemblyScratch<dim> &s, AssemblyCopy &copy) const
+  {
+    auto &B = s.batch;
+    if (!batched() || B.n_points == 0)
+      return;
+    using dealii::types::blas_int;
+    const unsigned int n_u = s.n_u, n_mu = s.n_mu, mu0 = dim * n_u;
+    const blas_int     P = B.n_points, ld = B.capacity, nu = n_u, nm = n_mu, nU = dim * n_u,
+                   Pd = dim * B.n_points;
+    const double one = 1., zero = 0.;
+    // hbh[(i a), (k c)] = sum_p V b_p h_p,a[i] h_p,c[k]; hah[(k a), (i c)] = sum_p V a_p h_p,a[k]
+    // h_p,c[i]; s[a, c] = sum_p G_p,a . V S_p G_p,c; mu_u[(k c), b] = sum_p q_p M_p,b h_p,c[k];
+    // mu_mu[b, d] = -sum_p V dt m GM_p,b . GM_p,d.
+    dealii::gemm("T",
+                 "N",
+                 &nU,
+                 &nU,
+                 &P,
+                 &one,
+                 B.h.data(),
+                 &ld,
+                 B.bh.data(),
+                 &ld,
+                 &zero,
+                 B.hbh.data(),
+                 &nU);
+    dealii::gemm("T",
+                 "N",
+                 &nU,
+                 &nU,
+                 &P,
+                 &one,
+                 B.h.data(),
+                 &ld,
+                 B.ah.data(),
+                 &ld,
+                 &zero,
+                 B.hah.data(),
+                 &nU);
+    dealii::gemm("N",
+                 "T",
+                 &nu,
+                 &nu,
+                 &Pd,
+                 &one,
+                 B.G.data(),
+                 &nu,
+                 B.SG.data(),
+                 &nu,
+                 &zero,
+                 B.s.data(),
+                 &nu);
+    dealii::gemm("T",
+                 "N",
+                 &nU,
+                 &nm,
+                 &P,
+                 &one,
+                 B.h.data(),
+                 &ld,
+                 B.qM.data(),
+                 &ld,
+                 &zero,
+                 B.mu_u.data(),
+                 &nU);
+    dealii::gemm("N",
+                 "T",
+                 &nm,
+                 &nm,
+                 &Pd,
+                 &one,
+                 B.GM.data(),
+                 &nm,
+                 B.wGM.data(),
+                 &nm,
+                 &zero,
+                 B.mu_mu.data(),
+                 &nm);
+
+    // hbh, hah and s are symmetric (sums of w_p x_p x_p^T): each row of the block reads them
+    // along their columns, which are contiguous.
+    for (unsigned int a = 0; a < n_u; ++a)
+      for (unsigned int i = 0; i < dim; ++i)
+        {
+          double *const       row = &copy.matrix(dim * a + i, 0);
+          const double *const s_a = &B.s[std::size_t(n_u) * a];
+          for (unsigned int k = 0; k < dim; ++k)
+            {
+              // hbh[(k c), (i a)] = b-term of ((a, i), (c, k)); hah[(i c), (k a)] its a-term.
+              const double *const hb = &B.hbh[n_u * k + std::size_t(nU) * (n_u * i + a)];
+              const double *const ha = &B.hah[n_u * i + std::size_t(nU) * (n_u * k + a)];
+              for (unsigned int c = 0; c < n_u; ++c)
+                row[dim * c + k] += hb[c] + ha[c];
+            }
+          for (unsigned int c = 0; c < n_u; ++c)
+            row[dim * c + i] += s_a[c];
+        }
+    for (unsigned int b = 0; b < n_mu; ++b)
+      {
+        double *const       row  = &copy.matrix(mu0 + b, 0);
+        const double *const u_mu = &B.mu_u[std::size_t(nU) * b];
+        for (unsigned int k = 0; k < dim; ++k)
+          for (unsigned int c = 0; c < n_u; ++c)
+            {
+              const double v = u_mu[n_u * k + c];
+              row[dim * c + k] += v;
+              copy.matrix(dim * c + k, mu0 + b) += v;
+            }
+        const double *const mm = &B.mu_mu[std::size_t(n_mu) * b];
+        for (unsigned int d = 0; d < n_mu; ++d)
+          row[mu0 + d] += mm[d];
+      }
+    B.n_points = 0;
   }
 
 

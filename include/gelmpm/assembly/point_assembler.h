@@ -46,6 +46,25 @@ namespace GelMPM
     std::vector<double>                 SG;           // [dim c + J] = V (S G_c)_J
     std::vector<double>                 s_row;        // [c] = G_a . V S G_c, one a at a time
     dealii::FullMatrix<double>          volume_lower; // the volume points' sum, lower triangle
+    /**
+     * The volume points' tangent factors of one block, gathered point by point and contracted
+     * once per block by BLAS (VolumeTermAssembler::add_block_tangent()). Column-major; the arrays
+     * indexed by point have the leading dimension capacity, those indexed by function n_u or n_mu.
+     */
+    struct VolumeTangentBatch
+    {
+      unsigned int n_points = 0, capacity = 0;
+      // [p + capacity (n_u i + a)] = h_p,a[i], and times V a_p, V b_p.
+      std::vector<double> h, ah, bh;
+      // [a + n_u (dim p + J)] = G_p,a[J] and V (S_p G_p,a)_J.
+      std::vector<double> G, SG;
+      // [p + capacity b] = -V (k_BT/nu) Delta J M_p,b.
+      std::vector<double> qM;
+      // [b + n_mu (dim p + J)] = GM_p,b[J] and -V dt m GM_p,b[J].
+      std::vector<double> GM, wGM;
+      // The products: Vb h h, Va h h, s, K_u,mu, K_mu,mu.
+      std::vector<double> hbh, hah, s, mu_u, mu_mu;
+    } batch;
     // The displacement Nitsche tangent's vectors per function (add_displacement_nitsche()).
     std::vector<double> nitsche_work;
     // Axisymmetric points: A : B(c, k) per test function (axisymmetric_terms.cc), kept here so

@@ -29,6 +29,11 @@ namespace GelMPM
    * h_a = dF^{-T} G_a, two products per entry instead of dim (doc/performance.md, "Assembly at its
    * flop limit"). The contraction with A_n (the former assembly) is kept as the reference this is
    * tested against (tests/assembly/volume_tangent), selected by set_generic_tangent().
+   *
+   * In 3D the points of a block (one background cell) share their functions, and the sums over
+   * the points are matrix products: the factors h_p, G_p, S_p G_p, M_p and grad M_p of the
+   * block's volume points are gathered (gather_tangent()) and contracted once per block by
+   * dgemm (add_block_tangent()), whose kernels use the machine's vector instructions.
    */
   template <int dim>
   class VolumeTermAssembler final : public PointAssembler<dim>
@@ -51,7 +56,46 @@ namespace GelMPM
       generic_tangent = generic;
     }
 
+    /**
+     * Whether the volume points' tangent is summed point by point (@p pointwise true:
+     * add_structured_tangent(), the former assembly) instead of gathered and contracted once per
+     * block (the default in 3D: start_block(), add_block_tangent()). The environment variable
+     * GELMPM_POINTWISE_VOLUME_TANGENT (any value) sets it at construction, to time both with one
+     * binary.
+     */
+    void
+    set_pointwise_tangent(const bool pointwise)
+    {
+      pointwise_tangent = pointwise;
+    }
+
+    /** Before the points of a block of at most @p n_points points: an empty batch. */
+    void
+    start_block(AssemblyScratch<dim> &scratch, const unsigned int n_points) const;
+
+    /**
+     * After the points of a block: the tangent of its volume points from the batch, by five
+     * matrix products (BLAS dgemm) over the points instead of one sum per point and entry,
+     * added to @p copy's matrix whole (both triangles).
+     */
+    void
+    add_block_tangent(AssemblyScratch<dim> &scratch, AssemblyCopy &copy) const;
+
   private:
+    /** Whether this assembler batches the tangent of the block's volume points. */
+    bool
+    batched() const
+    {
+      return dim == 3 && !generic_tangent && !pointwise_tangent;
+    }
+
+    /** The point's factors of the tangent into the block's batch (see add_block_tangent()). */
+    void
+    gather_tangent(const PointRecord<dim>                          &point,
+                   const typename FloryRehnerGel<dim>::Incremental &state,
+                   const double                                     dt,
+                   AssemblyScratch<dim>                            &scratch) const;
+
     /** The lower triangle of the point's tangent from the structure of A_n. */
     void
     add_structured_tangent(const PointRecord<dim>                          &point,
@@ -66,7 +110,8 @@ namespace GelMPM
                         const double                                     dt,
                         AssemblyScratch<dim>                            &scratch) const;
 
-    bool generic_tangent = std::getenv("GELMPM_GENERIC_VOLUME_TANGENT") != nullptr;
+    bool generic_tangent   = std::getenv("GELMPM_GENERIC_VOLUME_TANGENT") != nullptr;
+    bool pointwise_tangent = std::getenv("GELMPM_POINTWISE_VOLUME_TANGENT") != nullptr;
   };
 } // namespace GelMPM
 
