@@ -139,74 +139,39 @@ namespace GelMPM
     const blas_int     P = B.n_points, ld = B.capacity, nu = n_u, nm = n_mu, nU = dim * n_u,
                    Pd = dim * B.n_points;
     const double one = 1., zero = 0.;
+    // C = op(A) op(B), column-major (BLAS dgemm).
+    const auto product = [&](const char                *op_a,
+                             const char                *op_b,
+                             const blas_int             m,
+                             const blas_int             n,
+                             const blas_int             k,
+                             const std::vector<double> &A,
+                             const blas_int             lda,
+                             const std::vector<double> &B_,
+                             const blas_int             ldb,
+                             std::vector<double>       &C) {
+      dealii::gemm(op_a,
+                   op_b,
+                   &m,
+                   &n,
+                   &k,
+                   &one,
+                   A.data(),
+                   &lda,
+                   B_.data(),
+                   &ldb,
+                   &zero,
+                   C.data(),
+                   &m);
+    };
     // hbh[(i a), (k c)] = sum_p V b_p h_p,a[i] h_p,c[k]; hah[(k a), (i c)] = sum_p V a_p h_p,a[k]
     // h_p,c[i]; s[a, c] = sum_p G_p,a . V S_p G_p,c; mu_u[(k c), b] = sum_p q_p M_p,b h_p,c[k];
     // mu_mu[b, d] = -sum_p V dt m GM_p,b . GM_p,d.
-    dealii::gemm("T",
-                 "N",
-                 &nU,
-                 &nU,
-                 &P,
-                 &one,
-                 B.h.data(),
-                 &ld,
-                 B.bh.data(),
-                 &ld,
-                 &zero,
-                 B.hbh.data(),
-                 &nU);
-    dealii::gemm("T",
-                 "N",
-                 &nU,
-                 &nU,
-                 &P,
-                 &one,
-                 B.h.data(),
-                 &ld,
-                 B.ah.data(),
-                 &ld,
-                 &zero,
-                 B.hah.data(),
-                 &nU);
-    dealii::gemm("N",
-                 "T",
-                 &nu,
-                 &nu,
-                 &Pd,
-                 &one,
-                 B.G.data(),
-                 &nu,
-                 B.SG.data(),
-                 &nu,
-                 &zero,
-                 B.s.data(),
-                 &nu);
-    dealii::gemm("T",
-                 "N",
-                 &nU,
-                 &nm,
-                 &P,
-                 &one,
-                 B.h.data(),
-                 &ld,
-                 B.qM.data(),
-                 &ld,
-                 &zero,
-                 B.mu_u.data(),
-                 &nU);
-    dealii::gemm("N",
-                 "T",
-                 &nm,
-                 &nm,
-                 &Pd,
-                 &one,
-                 B.GM.data(),
-                 &nm,
-                 B.wGM.data(),
-                 &nm,
-                 &zero,
-                 B.mu_mu.data(),
-                 &nm);
+    product("T", "N", nU, nU, P, B.h, ld, B.bh, ld, B.hbh);
+    product("T", "N", nU, nU, P, B.h, ld, B.ah, ld, B.hah);
+    product("N", "T", nu, nu, Pd, B.G, nu, B.SG, nu, B.s);
+    product("T", "N", nU, nm, P, B.h, ld, B.qM, ld, B.mu_u);
+    product("N", "T", nm, nm, Pd, B.GM, nm, B.wGM, nm, B.mu_mu);
 
     // hbh, hah and s are symmetric (sums of w_p x_p x_p^T): each row of the block reads them
     // along their columns, which are contiguous.

@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <random>
+#include <utility>
 
 #include "scene_fixture.h"
 
@@ -23,35 +24,14 @@ using GelMPM::SymmetricFactorization;
 
 namespace
 {
-  const std::vector<std::string> cube_pieces = {"symmetry", "outer"};
-
-  /** The fixture's cube, rollers on three faces, mu prescribed on the others. */
-  struct Cube : public CubeFixture
-  {
-    Cube()
-      : CubeFixture(cube_pieces, R"(
-        subsection symmetry
-          set Selector = nx < -0.5 || ny < -0.5 || nz < -0.5
-          set Displacement = normal
-        end
-        subsection outer
-          set Selector = nx > 0.5 || ny > 0.5 || nz > 0.5
-          set Chemical potential = prescribed
-          subsection Chemical potential value
-            set Function expression = -0.1
-          end
-        end
-      )")
-    {}
-  };
 
 
   /** Solve K x = b with @p factorization; the relative residual. */
   double
-  solve(const SymmetricFactorization                 &factorization,
-        const TrilinosWrappers::SparseMatrix         &K,
-        const Vector<double>                         &b,
-        Vector<double>                               &x)
+  solve(const SymmetricFactorization         &factorization,
+        const TrilinosWrappers::SparseMatrix &K,
+        const Vector<double>                 &b,
+        Vector<double>                       &x)
   {
     x = b;
     factorization.solve(x);
@@ -88,15 +68,14 @@ namespace
     fewest.factorize(K);
     Vector<double> x_nested(n), x_automatic(n), x_fewest(n);
     const double   r_nested = solve(nested, K, b, x_nested),
-                 r_auto   = solve(automatic, K, b, x_automatic),
-                 r_fewest = solve(fewest, K, b, x_fewest);
+                 r_auto     = solve(automatic, K, b, x_automatic),
+                 r_fewest   = solve(fewest, K, b, x_fewest);
     x_automatic -= x_nested;
     x_fewest -= x_nested;
     const double difference =
       std::max(x_automatic.l2_norm(), x_fewest.l2_norm()) / x_nested.l2_norm();
-    const double ratio = nested.factorization_flops() / automatic.factorization_flops();
-    const double cheaper =
-      std::min(nested.factorization_flops(), automatic.factorization_flops());
+    const double ratio   = nested.factorization_flops() / automatic.factorization_flops();
+    const double cheaper = std::min(nested.factorization_flops(), automatic.factorization_flops());
     if (std::getenv("ORDERING_PRINT"))
       std::cerr << name << ": n = " << n << ", flops " << nested.factorization_flops()
                 << " (nested dissection) against " << automatic.factorization_flops()
@@ -113,11 +92,10 @@ namespace
     const bool solution_ok = difference < 1e-8;
     const bool flops_ok    = std::abs(fewest.factorization_flops() - cheaper) <= 1e-12 * cheaper;
     std::cout << "  same inertia: " << (inertia_ok ? "yes" : "no  FAIL") << std::endl
-              << "  relative residuals < 1e-9: " << (residual_ok ? "yes" : "no  FAIL")
-              << std::endl
+              << "  relative residuals < 1e-9: " << (residual_ok ? "yes" : "no  FAIL") << std::endl
               << "  solutions agree to 1e-8: " << (solution_ok ? "yes" : "no  FAIL") << std::endl
-              << "  the default takes the cheaper ordering's flops: " << (flops_ok ? "yes" : "no  FAIL")
-              << std::endl;
+              << "  the default takes the cheaper ordering's flops: "
+              << (flops_ok ? "yes" : "no  FAIL") << std::endl;
     return inertia_ok && residual_ok && solution_ok && flops_ok;
   }
 } // namespace
@@ -126,16 +104,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  bool                             ok = true;
-  {
-    SceneFixture scene("symmetric");
-    ok &= compare("2D", *scene.system, scene.material.mu_0());
-  }
-  {
-    Cube cube;
-    ok &= compare("3D", *cube.system, cube.material.mu_0());
-  }
-  std::cout << (ok ? "ordering checks passed" : "ORDERING CHECKS FAILED") << std::endl;
-  return ok ? 0 : 1;
+  return compare_2d_and_3d(argc, argv, "ordering", [](auto &&...args) {
+    return compare(std::forward<decltype(args)>(args)...);
+  });
 }

@@ -8,8 +8,11 @@
 
 #include <gelmpm/simulator/scene.h>
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <cctype>
+#include <iostream>
 #include <string>
 #include <vector>
 
@@ -150,5 +153,52 @@ struct CubeFixture : private scene_fixture::CubeParameters, public GelMPM::Scene
     system->set_boundary_values(0.5, 0.);
   }
 };
+
+
+/** The cube with rollers on its three faces at 0 and mu = -0.1 prescribed on the other three. */
+struct RollerCube : public CubeFixture
+{
+  RollerCube()
+    : CubeFixture({"symmetry", "outer"}, R"(
+        subsection symmetry
+          set Selector = nx < -0.5 || ny < -0.5 || nz < -0.5
+          set Displacement = normal
+        end
+        subsection outer
+          set Selector = nx > 0.5 || ny > 0.5 || nz > 0.5
+          set Chemical potential = prescribed
+          subsection Chemical potential value
+            set Function expression = -0.1
+          end
+        end
+      )")
+  {}
+};
+
+
+/**
+ * A test's main(): @p compare(name, system, mu_0) on the 2D scene (symmetric variant) and on the
+ * RollerCube, then "<what> checks passed" or "... FAILED"; the exit status says the same.
+ */
+template <typename Compare>
+int
+compare_2d_and_3d(int argc, char **argv, const std::string &what, const Compare &compare)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  bool                                     ok = true;
+  {
+    SceneFixture scene("symmetric");
+    ok &= compare("2D", *scene.system, scene.material.mu_0());
+  }
+  {
+    RollerCube cube;
+    ok &= compare("3D", *cube.system, cube.material.mu_0());
+  }
+  std::string upper = what;
+  for (char &c : upper)
+    c = std::toupper(c);
+  std::cout << (ok ? what + " checks passed" : upper + " CHECKS FAILED") << std::endl;
+  return ok ? 0 : 1;
+}
 
 #endif

@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <random>
+#include <utility>
 
 #include "scene_fixture.h"
 
@@ -20,27 +21,6 @@ using namespace dealii;
 
 namespace
 {
-  const std::vector<std::string> cube_pieces = {"symmetry", "outer"};
-
-  /** The fixture's cube with the boundary conditions of this test. */
-  struct Cube : public CubeFixture
-  {
-    Cube()
-      : CubeFixture(cube_pieces, R"(
-        subsection symmetry
-          set Selector = nx < -0.5 || ny < -0.5 || nz < -0.5
-          set Displacement = normal
-        end
-        subsection outer
-          set Selector = nx > 0.5 || ny > 0.5 || nz > 0.5
-          set Chemical potential = prescribed
-          subsection Chemical potential value
-            set Function expression = -0.1
-          end
-        end
-      )")
-    {}
-  };
 
 
   template <int dim>
@@ -106,16 +86,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  bool                             ok = true;
-  {
-    SceneFixture scene("symmetric");
-    ok &= compare("2D", *scene.system, scene.material.mu_0());
-  }
-  {
-    Cube cube;
-    ok &= compare("3D", *cube.system, cube.material.mu_0());
-  }
-  std::cout << (ok ? "volume tangent checks passed" : "VOLUME TANGENT CHECKS FAILED") << std::endl;
-  return ok ? 0 : 1;
+  return compare_2d_and_3d(argc, argv, "volume tangent", [](auto &&...args) {
+    return compare(std::forward<decltype(args)>(args)...);
+  });
 }
