@@ -1,0 +1,51 @@
+# The geometric multigrid on the displacement block (Linear solver/Displacement preconditioner =
+# geometric: the nested B-spline grids) inside the iterative solver, against MUMPS:
+# - §4.1 (prm/constrained_swelling.prm) on 40 x 320 cells, 3 points per cell, 3 steps of fixed dt
+#   in the undrained limit (dt = 1e-6 tau_d) and at dt = 1e2 tau_d;
+# - 3D, 2 steps of dt = 1e-3 of the free-swelling cube (prm/free_swelling_cube.prm) on 20^3 cells;
+# with 'Multigrid coarse size' low enough that every grid the cell counts allow is a level (40 x
+# 320: 4 levels; 20^3: 3). Each run must take the steps and Newton iterations of the MUMPS run
+# (within one) and give its statistics to 1e-6 of each column's largest value, and use at most
+# MAX Krylov iterations per solve (measured: MEASURED_2D_UNDRAINED, MEASURED_2D_DRAINED,
+# MEASURED_3D).
+# Same arguments as the MPI tests (gelmpm, compare tool, mpiexec, source directory).
+source "$(dirname "${BASH_SOURCE[0]}")/../mpi/common.sh"
+# run NAME MAX SCENE [--set ...]: MUMPS and Krylov with the geometric multigrid, compared.
+run() {
+  local name="$1" max="$2" scene="$3"
+  shift 3
+  "$gelmpm" "$source_dir/prm/$scene" --set "Output/Directory=${name}_MUMPS" \
+    --set "Output/Write particles=false" --set "Linear solver/Solver=MUMPS" "$@" \
+    > "${name}_MUMPS.log" 2>&1
+  check $? "$name with MUMPS finished ($(grep -m1 'reached\|error\|failed' "${name}_MUMPS.log"))"
+  "$gelmpm" "$source_dir/prm/$scene" --set "Output/Directory=${name}_GMG" \
+    --set "Output/Write particles=false" --set "Linear solver/Solver=Krylov" \
+    --set "Linear solver/Displacement preconditioner=geometric" \
+    --set "Linear solver/Multigrid coarse size=200" "$@" > "${name}_GMG.log" 2>&1
+  check $? "$name with the geometric multigrid finished ($(grep -m1 'reached\|error\|failed' "${name}_GMG.log"))"
+  "$compare" --relative 1e-6 --newton 1 "${name}_MUMPS/statistics.csv" "${name}_GMG/statistics.csv" \
+    > "${name}_compare.log"
+  check $? "$name: geometric multigrid and MUMPS statistics agree ($(tail -1 "${name}_compare.log"))"
+  local per_solve levels
+  per_solve=$(grep -o "([0-9.e+-]* per solve)" "${name}_GMG.log" | tr -d '(' | awk '{print $1}')
+  levels=$(grep -o "geometric multigrid, levels of [0-9, ]* unknowns" "${name}_GMG.log")
+  [[ -n $levels ]]
+  check $? "$name: the displacement block by the geometric multigrid (${levels:-not used})"
+  awk -v p="${per_solve:-1e9}" -v m="$max" 'BEGIN { exit !(p <= m) }'
+  check $? "$name: ${per_solve:-no} Krylov iterations per solve (at most $max)"
+}
+fixed_steps() { # fixed_steps DT STEPS: the entries for STEPS steps of DT, in ${steps[@]}
+  steps=(--set "Time stepping/Initial step=$1" --set "Time stepping/Growth factor=1"
+         --set "Time stepping/Step caps=" --set "Time stepping/Stop at times="
+         --set "Time stepping/Tolerance=0"
+         --set "Time stepping/End time=$(awk -v d="$1" -v n="$2" 'BEGIN { print d * n }')")
+}
+
+grid=(--set "Background grid/Cells=40, 320" --set "Material points/Points per cell=3")
+fixed_steps 1e-6 3
+run undrained MAX_2D_UNDRAINED constrained_swelling.prm "${steps[@]}" "${grid[@]}"
+fixed_steps 1e2 3
+run drained MAX_2D_DRAINED constrained_swelling.prm "${steps[@]}" "${grid[@]}"
+fixed_steps 1e-3 2
+run cube MAX_3D free_swelling_cube.prm "${steps[@]}" --set "Background grid/Cells=20, 20, 20"
+finish
