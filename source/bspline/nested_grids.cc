@@ -92,14 +92,15 @@ namespace GelMPM
     // cells it covers does.
     // The cells with material, grid by grid: a coarse cell holds material when one of the
     // cells it covers does.
-    std::vector<unsigned int>              cells;
-    std::vector<std::vector<unsigned int>> fine_blocks;
+    std::vector<unsigned int> cells;
     for (unsigned int c = 0; c < finest.n_cells(); ++c)
       if (u.cell_kind(c) != CellKind::outer)
-        {
-          cells.push_back(c);
-          fine_blocks.push_back(u.cell_dofs(c));
-        }
+        cells.push_back(c);
+    // On the finest grid the blocks hold the DoFs among each cell's B-splines. Adding per
+    // boundary control point the DoFs it is extrapolated from (the other couplings of a boundary
+    // cell) changed the iterations by less than 4 % (cube at 20^3: 26.3 against 27.3 per solve;
+    // §4.1 at 80 x 640: 17.3 against 17.6) at up to twice the smoothing work.
+    const std::vector<std::vector<unsigned int>> fine_blocks = cell_blocks(0, cells, functions);
 
     std::vector<NestedBSplineLevel> result;
     for (unsigned int level = 1; level <= spaces.size(); ++level)
@@ -120,7 +121,7 @@ namespace GelMPM
         std::sort(coarse_cells.begin(), coarse_cells.end());
         coarse_cells.erase(std::unique(coarse_cells.begin(), coarse_cells.end()),
                            coarse_cells.end());
-        cells = coarse_cells;
+        cells     = coarse_cells;
         functions = coarse.control_points;
         result.push_back(std::move(coarse));
       }
@@ -134,23 +135,41 @@ namespace GelMPM
                                        const std::vector<unsigned int> &cells,
                                        const std::vector<unsigned int> &functions) const
   {
-    const BSplineSpace<dim> &space = level == 0 ? finest : *spaces[level - 1];
+    const BSplineSpace<dim>  &space = level == 0 ? finest : *spaces[level - 1];
     std::vector<unsigned int> position(space.n_functions(), dealii::numbers::invalid_unsigned_int);
     for (unsigned int k = 0; k < functions.size(); ++k)
       position[functions[k]] = k;
+    // The cells with even indices first: their blocks overlap by one function per direction
+    // and cover all but the functions next to the edge of the material; then the other cells
+    // whose block holds a function not yet covered.
     std::vector<std::vector<unsigned int>> blocks;
+    std::vector<bool>                      covered(functions.size(), false);
     std::vector<unsigned int>              on_cell;
-    for (const unsigned int c : cells)
-      {
-        space.cell_functions(c, on_cell);
-        std::vector<unsigned int> block;
-        for (const unsigned int i : on_cell)
-          if (position[i] != dealii::numbers::invalid_unsigned_int)
-            block.push_back(position[i]);
-        std::sort(block.begin(), block.end());
-        if (!block.empty())
+    for (const bool even_pass : {true, false})
+      for (const unsigned int c : cells)
+        {
+          const auto index = space.cell_multi_index(c);
+          const bool even  = std::all_of(index.begin(), index.end(), [](const unsigned int i) {
+            return i % 2 == 0;
+          });
+          if (even != even_pass)
+            continue;
+          space.cell_functions(c, on_cell);
+          std::vector<unsigned int> block;
+          bool                      new_function = even;
+          for (const unsigned int i : on_cell)
+            if (position[i] != dealii::numbers::invalid_unsigned_int)
+              {
+                block.push_back(position[i]);
+                new_function = new_function || !covered[position[i]];
+              }
+          if (block.empty() || !new_function)
+            continue;
+          for (const unsigned int k : block)
+            covered[k] = true;
+          std::sort(block.begin(), block.end());
           blocks.push_back(std::move(block));
-      }
+        }
     return blocks;
   }
 

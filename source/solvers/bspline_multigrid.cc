@@ -121,7 +121,7 @@ namespace GelMPM
       }
 
     const dealii::TrilinosWrappers::SparseMatrix &A0 = matrices[0];
-    direct                                          = A0.m() <= settings.direct_coarse_size;
+    direct                                           = A0.m() <= settings.direct_coarse_size;
     if (direct)
       {
         dealii::DynamicSparsityPattern pattern(A0.m(), A0.n());
@@ -157,8 +157,7 @@ namespace GelMPM
       smoother = block_smoother(levels, dim, settings);
     else
       {
-        auto relaxation =
-          std::make_unique<Smoother>(settings.smoothing_steps, false, false, false);
+        auto relaxation = std::make_unique<Smoother>(settings.smoothing_steps, false, false, false);
         relaxation->initialize(matrices,
                                dealii::TrilinosWrappers::PreconditionSSOR::AdditionalData());
         smoother = std::move(relaxation);
@@ -171,8 +170,8 @@ namespace GelMPM
       *smoother,
       0,
       finest,
-      settings.w_cycle ? dealii::Multigrid<dealii::Vector<double>>::w_cycle :
-                         dealii::Multigrid<dealii::Vector<double>>::v_cycle);
+      settings.w_cycle ? dealii::Multigrid<dealii::Vector<double>>::w_cycle
+                       : dealii::Multigrid<dealii::Vector<double>>::v_cycle);
     for (unsigned int l = 0; l <= finest; ++l)
       multigrid->defect[l].reinit(matrices[l].m());
   }
@@ -201,7 +200,7 @@ namespace GelMPM
         });
         // The coarsest level is solved, not smoothed: one trivial block each.
         const std::vector<std::vector<unsigned int>> none;
-        const auto &blocks = l > 0 ? levels[finest - l].row_blocks : none;
+        const auto                    &blocks   = l > 0 ? levels[finest - l].row_blocks : none;
         const unsigned int             n_blocks = l > 0 ? blocks.size() : A.m();
         dealii::DynamicSparsityPattern block_list(n_blocks, A.m());
         for (unsigned int b = 0; b < n_blocks; ++b)
@@ -215,7 +214,8 @@ namespace GelMPM
         block_data[l].relaxation = 1.;
         block_data[l].inversion  = dealii::PreconditionBlockBase<double>::householder;
       }
-    auto relaxation = std::make_unique<BlockSmoother>(settings.smoothing_steps, false, false, false);
+    auto relaxation =
+      std::make_unique<BlockSmoother>(settings.smoothing_steps, false, false, false);
     relaxation->initialize(block_matrices, block_data);
     return relaxation;
   }

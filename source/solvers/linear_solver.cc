@@ -83,7 +83,7 @@ namespace GelMPM
                       "symmetric Gauss-Seidel, which leaves the error that the Nitsche penalty "
                       "couples across boundary cells (BSplineMultigrid).");
     prm.declare_entry("Multigrid smoothing steps",
-                      "2",
+                      "1",
                       dealii::Patterns::Integer(1, 20),
                       "Krylov, geometric: the forward-backward smoother sweeps before and after "
                       "each coarse correction.");

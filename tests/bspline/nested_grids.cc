@@ -117,7 +117,7 @@ namespace
     for (unsigned int d = 0; d < dim; ++d)
       upper[d] = 1.;
     const BSplineSpace<dim> space(2, Point<dim>(), upper, n_cells);
-    Point<dim> centre;
+    Point<dim>              centre;
     for (unsigned int d = 0; d < dim; ++d)
       centre[d] = 0.5 + 0.013 * (d + 1);
     // A cell holds material when its centre lies in the ball.
@@ -149,7 +149,7 @@ namespace
         columns_used = columns_used && std::all_of(used.begin(), used.end(), [](bool b) {
                          return b;
                        });
-        above = level.control_points.size();
+        above        = level.control_points.size();
       }
     report("levels with more functions than the level above", fewer ? 0. : 1., 0.5);
     report("empty columns", columns_used ? 0. : 1., 0.5);
@@ -168,8 +168,8 @@ namespace
             for (unsigned int d = 0; d < dim; ++d)
               linear[I] += (d + 1.) * coarse.basis_1d(d).greville(index[d]);
           }
-        const auto fine_random = to_fine(levels, k, random);
-        const auto fine_linear = to_fine(levels, k, linear);
+        const auto fine_random  = to_fine(levels, k, random);
+        const auto fine_linear  = to_fine(levels, k, linear);
         double     random_error = 0., random_scale = 0., linear_error = 0.;
         for (unsigned int c = 0; c < space.n_cells(); ++c)
           {
@@ -192,7 +192,9 @@ namespace
               }
           }
         std::cout << " level " << k << " (cell size " << (1u << k) << "h):" << std::endl;
-        report("random field on interior cells, relative error", random_error / random_scale, 1e-12);
+        report("random field on interior cells, relative error",
+               random_error / random_scale,
+               1e-12);
         report("linear field on all cells with material, error", linear_error, 1e-12);
       }
   }

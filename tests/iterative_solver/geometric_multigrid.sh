@@ -43,9 +43,9 @@ fixed_steps() { # fixed_steps DT STEPS: the entries for STEPS steps of DT, in ${
 
 grid=(--set "Background grid/Cells=40, 320" --set "Material points/Points per cell=3")
 fixed_steps 1e-6 3
-run undrained MAX_2D_UNDRAINED constrained_swelling.prm "${steps[@]}" "${grid[@]}"
+run undrained 1000 constrained_swelling.prm "${steps[@]}" "${grid[@]}"
 fixed_steps 1e2 3
-run drained MAX_2D_DRAINED constrained_swelling.prm "${steps[@]}" "${grid[@]}"
+run drained 1000 constrained_swelling.prm "${steps[@]}" "${grid[@]}"
 fixed_steps 1e-3 2
-run cube MAX_3D free_swelling_cube.prm "${steps[@]}" --set "Background grid/Cells=20, 20, 20"
+run cube 1000 free_swelling_cube.prm "${steps[@]}" --set "Background grid/Cells=20, 20, 20"
 finish

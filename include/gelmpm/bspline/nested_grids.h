@@ -40,8 +40,10 @@ namespace GelMPM
     unsigned int n_rows = 0;
     /**
      * Blocks for a smoother on the level above (the rows), as row indices: per cell of that
-     * level's grid that holds material, the functions that are nonzero on it (on the finest
-     * grid, the DoFs its extended functions touch, ExtendedBSplineSpace::cell_dofs()).
+     * level's grid that holds material whose indices are all even, the functions that are
+     * nonzero on it (on the finest grid the DoFs among the cell's B-splines), then per other
+     * cell whose functions are not all in a block yet, its functions: blocks that cover every
+     * function and overlap by one function per direction.
      */
     std::vector<std::vector<unsigned int>> row_blocks;
   };
