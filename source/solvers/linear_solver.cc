@@ -37,8 +37,8 @@ namespace GelMPM
                       "with an optimised BLAS such as OpenBLAS; LDL^T for the "
                       "symmetric tangent of the symmetric Nitsche variant, LU otherwise), KLU "
                       "(LU, no BLAS; slower on the wide stencils of B-splines, "
-                      "doc/performance.md), or Krylov: GMRES with algebraic multigrid on the "
-                      "displacement block (rigid-body modes) and a direct solve of an "
+                      "doc/performance.md), or Krylov: GMRES with multigrid on the "
+                      "displacement block ('Displacement preconditioner') and a direct solve of an "
                       "approximate Schur complement of mu (one MPI rank; doc/performance.md, "
                       "'Iterative solver'). With 'Stability' on, the analysis factorises the "
                       "tangent itself.");

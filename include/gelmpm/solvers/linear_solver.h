@@ -34,8 +34,9 @@ namespace GelMPM
    * Amesos_Klu), used directly rather than through TrilinosWrappers::SolverDirect to keep the
    * symbolic factorisation.
    *
-   * "Krylov" instead solves iteratively (BlockKrylov: GMRES with AMG on the displacement block
-   * and an approximate Schur complement of mu): factorize() builds the preconditioner, solve()
+   * "Krylov" instead solves iteratively (BlockKrylov: GMRES with geometric or algebraic
+   * multigrid on the displacement block and an approximate Schur complement of mu):
+   * factorize() builds the preconditioner, solve()
    * iterates. It needs the block structure (set_block_structure()) after every change of the
    * unknowns, and runs on one MPI rank.
    *
