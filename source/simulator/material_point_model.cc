@@ -48,9 +48,20 @@ namespace GelMPM
         }))
       ++n_new_patterns;
     if (linear_solver.may_iterate())
-      linear_solver.set_block_structure(scene.spaces->n_u_dofs(),
-                                        dim,
-                                        scene.spaces->u_dof_greville_points());
+      {
+        std::vector<NestedBSplineLevel> levels;
+        if (linear_solver.geometric_multigrid())
+          {
+            // The 1D refinement operators are fixed with the grid: computed once per space.
+            if (!nested_grids || &nested_grids->fine_space() != &scene.spaces->u_space())
+              nested_grids = std::make_unique<NestedBSplineGrids<dim>>(scene.spaces->u_space());
+            levels = nested_grids->levels(scene.spaces->u());
+          }
+        linear_solver.set_block_structure(scene.spaces->n_u_dofs(),
+                                          dim,
+                                          scene.spaces->u_dof_greville_points(),
+                                          levels);
+      }
     if (!resumed_tangent.empty())
       {
         if (scene.system->restore_tangent(resumed_classification, resumed_tangent))

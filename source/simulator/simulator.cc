@@ -1165,7 +1165,8 @@ namespace GelMPM
       {
         const auto [iterations, solves] = linear_solver.krylov_iterations();
         pcout << ", " << iterations << " Krylov iterations in " << solves << " solves ("
-              << (solves > 0 ? double(iterations) / solves : 0.) << " per solve)";
+              << (solves > 0 ? double(iterations) / solves : 0.) << " per solve), displacement "
+              << "block by " << linear_solver.krylov_preconditioner();
       }
     if (!output_settings.test_mode && loop)
       pcout << std::endl;

@@ -13,17 +13,21 @@
 namespace GelMPM
 {
   bool
-  BlockKrylov::set_structure(const unsigned int         n_u_dofs,
-                             const unsigned int         dimension,
-                             const std::vector<double> &u_dof_points)
+  BlockKrylov::set_structure(const unsigned int                     n_u_dofs,
+                             const unsigned int                     dimension,
+                             const std::vector<double>             &u_dof_points,
+                             const std::vector<NestedBSplineLevel> &coarse_levels)
   {
     if (u_dof_points.size() != n_u_dofs)
       throw std::logic_error("BlockKrylov: one point coordinate per displacement unknown");
-    if (n_u_dofs == n_u && dimension == dim && u_dof_points == points)
+    // The levels are a function of the DoFs, and so of their points.
+    if (n_u_dofs == n_u && dimension == dim && u_dof_points == points &&
+        coarse_levels.size() == levels.size())
       return false;
     n_u    = n_u_dofs;
     dim    = dimension;
     points = u_dof_points;
+    levels = coarse_levels;
     built  = false;
     return true;
   }
@@ -36,12 +40,40 @@ namespace GelMPM
   }
 
 
+  bool
+  BlockKrylov::geometric() const
+  {
+    return use_geometric;
+  }
+
+
+  const BSplineMultigrid &
+  BlockKrylov::multigrid() const
+  {
+    return geometric_multigrid;
+  }
+
+
+  std::string
+  BlockKrylov::displacement_preconditioner() const
+  {
+    if (!use_geometric)
+      return "algebraic multigrid";
+    std::string levels_text;
+    for (const unsigned int size : geometric_multigrid.level_sizes())
+      levels_text += (levels_text.empty() ? "" : ", ") + std::to_string(size);
+    return "geometric multigrid, levels of " + levels_text + " unknowns" +
+           (geometric_multigrid.direct_coarse_solve() ? "" : ", the coarsest by AMG");
+  }
+
+
   void
   BlockKrylov::setup(const dealii::TrilinosWrappers::SparseMatrix &K, const Settings &new_settings)
   {
     built = false;
     // The old hierarchy refers to the old A: it goes before the block changes.
     displacement.clear();
+    geometric_multigrid.clear();
     settings                = new_settings;
     matrix                  = &K;
     const unsigned int n    = K.m();
@@ -50,7 +82,7 @@ namespace GelMPM
       throw std::logic_error("BlockKrylov: set_structure() first; one process only");
 
     // The coupling blocks and A's diagonal, from the rows of K (each stored entry is visited
-    // once); A itself and its AMG are DisplacementBlockAMG's.
+    // once); A itself and its multigrid are DisplacementBlockAMG's or BSplineMultigrid's.
     dealii::DynamicSparsityPattern                            b_pattern(n_mu, n_u);
     std::vector<std::vector<std::pair<unsigned int, double>>> b_rows(n_mu), bt_rows(n_u);
     std::vector<std::map<unsigned int, double>>               c_rows(n_mu);
@@ -79,7 +111,11 @@ namespace GelMPM
                                    std::to_string(i) + ")");
         inverse_diagonal[i] = 1. / std::abs(inverse_diagonal[i]);
       }
-    displacement.setup(K, n_u, dim, points);
+    use_geometric = new_settings.geometric && !levels.empty();
+    if (use_geometric)
+      geometric_multigrid.setup(K, n_u, dim, levels, settings.multigrid);
+    else
+      displacement.setup(K, n_u, dim, points);
 
     // The coupling B = K_mu,u and the approximate Schur complement
     // S = C - B diag(A)^{-1} K_u,mu.
@@ -129,7 +165,10 @@ namespace GelMPM
   {
     for (unsigned int i = 0; i < n_u; ++i)
       r_u[i] = src[i];
-    displacement.preconditioner().vmult(y_u, r_u);
+    if (use_geometric)
+      geometric_multigrid.vmult(y_u, r_u);
+    else
+      displacement.preconditioner().vmult(y_u, r_u);
     B.vmult(r_mu, y_u);
     for (unsigned int i = 0; i < r_mu.size(); ++i)
       r_mu[i] = src[n_u + i] - r_mu[i];

@@ -37,8 +37,8 @@ namespace GelMPM
                       "with an optimised BLAS such as OpenBLAS; LDL^T for the "
                       "symmetric tangent of the symmetric Nitsche variant, LU otherwise), KLU "
                       "(LU, no BLAS; slower on the wide stencils of B-splines, "
-                      "doc/performance.md), or Krylov: GMRES with algebraic multigrid on the "
-                      "displacement block (rigid-body modes) and a direct solve of an "
+                      "doc/performance.md), or Krylov: GMRES with multigrid on the "
+                      "displacement block ('Displacement preconditioner') and a direct solve of an "
                       "approximate Schur complement of mu (one MPI rank; doc/performance.md, "
                       "'Iterative solver'). With 'Stability' on, the analysis factorises the "
                       "tangent itself.");
@@ -75,6 +75,40 @@ namespace GelMPM
                       "200",
                       dealii::Patterns::Integer(1),
                       "Krylov: the GMRES restart length (memory: this many vectors).");
+    prm.declare_entry("Displacement preconditioner",
+                      "geometric",
+                      dealii::Patterns::Selection("algebraic|geometric"),
+                      "Krylov: the multigrid cycle that approximates the inverse of the "
+                      "displacement block K_uu. geometric: on the nested B-spline grids of cell "
+                      "size 2h, 4h, ... (while the cell counts are even), Galerkin coarse "
+                      "operators, overlapping Schwarz smoothing on cell blocks, the coarsest "
+                      "level factorised (BSplineMultigrid); algebraic where the grid has no "
+                      "coarser level. algebraic: smoothed aggregation (Trilinos ML) with the "
+                      "rigid-body modes. doc/performance.md, 'Iterative solver', has the "
+                      "iteration counts of both.");
+    prm.declare_entry("Multigrid smoother",
+                      "cell blocks",
+                      dealii::Patterns::Selection("cell blocks|point Gauss-Seidel"),
+                      "Krylov, geometric: cell blocks (per cell with material, the unknowns of "
+                      "the functions nonzero on it, solved together, multiplicative) or point "
+                      "symmetric Gauss-Seidel, which leaves the error that the Nitsche penalty "
+                      "couples across boundary cells (BSplineMultigrid).");
+    prm.declare_entry("Multigrid smoothing steps",
+                      "1",
+                      dealii::Patterns::Integer(1, 20),
+                      "Krylov, geometric: the forward-backward smoother sweeps before and after "
+                      "each coarse correction.");
+    prm.declare_entry("Multigrid coarse size",
+                      "5000",
+                      dealii::Patterns::Integer(1),
+                      "Krylov, geometric: coarsening stops at the first level with at most this "
+                      "many unknowns, which is factorised (UMFPACK); a coarsest level that is "
+                      "larger (the grid has no coarser level) is approximated by algebraic "
+                      "multigrid.");
+    prm.declare_entry("Multigrid cycle",
+                      "V",
+                      dealii::Patterns::Selection("V|W"),
+                      "Krylov, geometric: V- or W-cycle.");
     prm.leave_subsection();
   }
 
@@ -96,6 +130,11 @@ namespace GelMPM
     krylov_settings.relative_tolerance = prm.get_double("Krylov tolerance");
     krylov_settings.max_iterations     = prm.get_integer("Krylov iterations");
     krylov_settings.restart            = prm.get_integer("Krylov restart");
+    krylov_settings.geometric          = prm.get("Displacement preconditioner") == "geometric";
+    krylov_settings.multigrid.smoothing_steps    = prm.get_integer("Multigrid smoothing steps");
+    krylov_settings.multigrid.direct_coarse_size = prm.get_integer("Multigrid coarse size");
+    krylov_settings.multigrid.w_cycle            = prm.get("Multigrid cycle") == "W";
+    krylov_settings.multigrid.cell_blocks        = prm.get("Multigrid smoother") == "cell blocks";
     prm.leave_subsection();
   }
 
@@ -167,13 +206,28 @@ namespace GelMPM
 
 
   void
-  LinearSolver::set_block_structure(const unsigned int         n_u,
-                                    const unsigned int         dim,
-                                    const std::vector<double> &u_dof_points)
+  LinearSolver::set_block_structure(const unsigned int                     n_u,
+                                    const unsigned int                     dim,
+                                    const std::vector<double>             &u_dof_points,
+                                    const std::vector<NestedBSplineLevel> &levels)
   {
     // The same unknowns at the same places keep the preconditioner for modified Newton.
-    if (krylov.set_structure(n_u, dim, u_dof_points))
+    if (krylov.set_structure(n_u, dim, u_dof_points, levels))
       factorized = false;
+  }
+
+
+  bool
+  LinearSolver::geometric_multigrid() const
+  {
+    return krylov_settings.geometric;
+  }
+
+
+  std::string
+  LinearSolver::krylov_preconditioner() const
+  {
+    return krylov.displacement_preconditioner();
   }
 
 

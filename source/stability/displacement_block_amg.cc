@@ -11,20 +11,10 @@
 namespace GelMPM
 {
   void
-  DisplacementBlockAMG::setup(const dealii::TrilinosWrappers::SparseMatrix &K,
-                              const unsigned int                            n_u,
-                              const unsigned int                            dim,
-                              const std::vector<double>                    &points)
+  copy_leading_block(const dealii::TrilinosWrappers::SparseMatrix &K,
+                     const unsigned int                            n_u,
+                     dealii::TrilinosWrappers::SparseMatrix       &A)
   {
-    // The old hierarchy refers to the old A and null space: it goes before they change.
-    amg.clear();
-    if (n_u == 0 || n_u > K.m() || points.size() != n_u || (dim != 2 && dim != 3) ||
-        K.trilinos_matrix().Comm().NumProc() != 1)
-      throw std::logic_error("DisplacementBlockAMG: n_u unknowns with one point coordinate each, "
-                             "dim 2 or 3, one process only");
-
-    // A is copied in two passes, pattern then values, so that no second copy of its entries is
-    // held on the way.
     dealii::DynamicSparsityPattern a_pattern(n_u, n_u);
     for_each_entry(K, n_u, [&](const unsigned int i, const unsigned int j, const double) {
       if (j < n_u)
@@ -37,6 +27,23 @@ namespace GelMPM
         A.set(i, j, v);
     });
     A.compress(dealii::VectorOperation::insert);
+  }
+
+
+  void
+  DisplacementBlockAMG::setup(const dealii::TrilinosWrappers::SparseMatrix &K,
+                              const unsigned int                            n_u,
+                              const unsigned int                            dim,
+                              const std::vector<double>                    &points)
+  {
+    // The old hierarchy refers to the old A and null space: it goes before they change.
+    amg.clear();
+    if (n_u == 0 || n_u > K.m() || points.size() != n_u || (dim != 2 && dim != 3) ||
+        K.trilinos_matrix().Comm().NumProc() != 1)
+      throw std::logic_error("DisplacementBlockAMG: n_u unknowns with one point coordinate each, "
+                             "dim 2 or 3, one process only");
+
+    copy_leading_block(K, n_u, A);
 
     // Rigid-body modes about the points' centroid: dim translations and dim(dim-1)/2 rotations.
     const unsigned int  n_nodes = n_u / dim, n_modes = dim == 2 ? 3 : 6;

@@ -1,4 +1,5 @@
-# GMRES with AMG and the approximate Schur complement (Linear solver/Solver = Krylov) solves the
+# GMRES with AMG and the approximate Schur complement (Linear solver/Solver = Krylov, Displacement
+# preconditioner = algebraic; geometric_multigrid.sh checks the geometric one) solves the
 # same Newton systems as MUMPS: the runs must take the same steps with the same Newton iterations
 # (within one: modified Newton's reuse decisions see residuals at the linear tolerance) and give
 # the same physical statistics to 1e-6 of each column's largest value (each solve reduces the
@@ -18,7 +19,8 @@ run() {
   shift 2
   for solver in MUMPS Krylov; do
     "$gelmpm" "$source_dir/prm/$scene" --set "Output/Directory=${name}_${solver}" \
-      --set "Output/Write particles=false" --set "Linear solver/Solver=${solver}" "$@" \
+      --set "Output/Write particles=false" --set "Linear solver/Solver=${solver}" \
+      --set "Linear solver/Displacement preconditioner=algebraic" "$@" \
       > "${name}_${solver}.log" 2>&1
     check $? "$name with $solver finished ($(grep -m1 'reached\|error\|failed' "${name}_${solver}.log"))"
   done

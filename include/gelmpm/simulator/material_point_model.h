@@ -1,6 +1,7 @@
 #ifndef gelmpm_simulator_material_point_model_h
 #define gelmpm_simulator_material_point_model_h
 
+#include <gelmpm/bspline/nested_grids.h>
 #include <gelmpm/core/sparse_entries.h>
 #include <gelmpm/simulator/scene.h>
 #include <gelmpm/solvers/linear_solver.h>
@@ -11,6 +12,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/vector.h>
 
+#include <memory>
 #include <vector>
 
 namespace GelMPM
@@ -136,6 +138,10 @@ namespace GelMPM
 
     std::vector<bool> resumed_classification;
     SparseEntries     resumed_tangent;
+
+    // The coarse grids of the geometric multigrid on the displacement block (built when first
+    // wanted).
+    std::unique_ptr<NestedBSplineGrids<dim>> nested_grids;
 
     // On several ranks: the ratio of the largest number of points on a rank to the mean above
     // which the grid is partitioned anew (a repartition costs about one grid reset).

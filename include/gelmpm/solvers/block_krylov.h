@@ -1,6 +1,7 @@
 #ifndef gelmpm_solvers_block_krylov_h
 #define gelmpm_solvers_block_krylov_h
 
+#include <gelmpm/solvers/bspline_multigrid.h>
 #include <gelmpm/stability/displacement_block_amg.h>
 
 #include <deal.II/lac/sparse_direct.h>
@@ -11,15 +12,17 @@
 #include <deal.II/lac/vector.h>
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace GelMPM
 {
   /**
-   * @brief GMRES on the u–mu Newton system with a block-triangular preconditioner: algebraic
-   * multigrid (Trilinos ML) on the displacement block, given the rigid-body modes
-   * (DisplacementBlockAMG, shared with the iterative stability analysis), and a direct
-   * solve with an approximate Schur complement of the chemical potential.
+   * @brief GMRES on the u–mu Newton system with a block-triangular preconditioner: multigrid on
+   * the displacement block, either algebraic (Trilinos ML, given the rigid-body modes;
+   * DisplacementBlockAMG, shared with the iterative stability analysis) or geometric on the
+   * nested B-spline grids (BSplineMultigrid), and a direct solve with an approximate Schur
+   * complement of the chemical potential.
    *
    * With K = [A B^T'; B C] (A = K_uu, B = K_mu,u, B^T' = K_u,mu, C = K_mu,mu) the preconditioner
    * is the lower block triangle [A 0; B S], applied as y_u = AMG(A)^{-1} r_u and
@@ -47,18 +50,28 @@ namespace GelMPM
       unsigned int max_iterations = 500;
       /** GMRES restart length. */
       unsigned int restart = 200;
+      /**
+       * Geometric multigrid on the displacement block where set_structure() gave coarse
+       * levels; algebraic (ML) otherwise.
+       */
+      bool geometric = false;
+      /** The geometric multigrid's settings. */
+      BSplineMultigrid::Settings multigrid;
     };
 
     /**
      * The unknowns: @p n_u displacement unknowns (@p dim interleaved components per DoF) before
      * the chemical potential's, and the point at which each displacement DoF's linear-field
      * coefficient is taken (its Greville point), dim coordinates per DoF: the rigid-body modes.
-     * Returns whether they changed (then setup() must come again before solve()).
+     * @p levels: the coarse B-spline levels below the displacement DoFs (NestedBSplineGrids),
+     * for the geometric multigrid; empty for the algebraic one. Returns whether the unknowns
+     * changed (then setup() must come again before solve()).
      */
     bool
-    set_structure(const unsigned int         n_u,
-                  const unsigned int         dim,
-                  const std::vector<double> &u_dof_points);
+    set_structure(const unsigned int                     n_u,
+                  const unsigned int                     dim,
+                  const std::vector<double>             &u_dof_points,
+                  const std::vector<NestedBSplineLevel> &levels = {});
 
     /**
      * Build the preconditioner of @p K: the blocks, the AMG hierarchy of A and the factorised
@@ -79,18 +92,36 @@ namespace GelMPM
     bool
     ready() const;
 
+    /** Whether the last setup() built the geometric multigrid (else ML's AMG). */
+    bool
+    geometric() const;
+
+    /** The geometric multigrid of the last setup() (meaningful if geometric()). */
+    const BSplineMultigrid &
+    multigrid() const;
+
+    /**
+     * The displacement block's preconditioner of the last setup(), for the log: "algebraic
+     * multigrid" or "geometric multigrid" with the unknowns of its levels.
+     */
+    std::string
+    displacement_preconditioner() const;
+
     /** Apply the preconditioner (for deal.II's GMRES). */
     void
     vmult(dealii::Vector<double> &dst, const dealii::Vector<double> &src) const;
 
   private:
-    unsigned int        n_u = 0, dim = 2;
-    std::vector<double> points;
-    Settings            settings;
+    unsigned int                    n_u = 0, dim = 2;
+    std::vector<double>             points;
+    std::vector<NestedBSplineLevel> levels;
+    Settings                        settings;
 
     const dealii::TrilinosWrappers::SparseMatrix *matrix = nullptr;
-    // A = K_uu and its AMG hierarchy.
+    // A = K_uu and its AMG hierarchy, or its geometric multigrid.
     DisplacementBlockAMG           displacement;
+    BSplineMultigrid               geometric_multigrid;
+    bool                           use_geometric = false;
     dealii::SparsityPattern        coupling_pattern, schur_pattern;
     dealii::SparseMatrix<double>   B, S;
     dealii::SparseDirectUMFPACK    schur;

@@ -34,8 +34,9 @@ namespace GelMPM
    * Amesos_Klu), used directly rather than through TrilinosWrappers::SolverDirect to keep the
    * symbolic factorisation.
    *
-   * "Krylov" instead solves iteratively (BlockKrylov: GMRES with AMG on the displacement block
-   * and an approximate Schur complement of mu): factorize() builds the preconditioner, solve()
+   * "Krylov" instead solves iteratively (BlockKrylov: GMRES with geometric or algebraic
+   * multigrid on the displacement block and an approximate Schur complement of mu):
+   * factorize() builds the preconditioner, solve()
    * iterates. It needs the block structure (set_block_structure()) after every change of the
    * unknowns, and runs on one MPI rank.
    *
@@ -147,12 +148,25 @@ namespace GelMPM
 
     /**
      * For the iterative solver: the number of displacement unknowns (dim interleaved components
-     * per DoF, before mu's) and each one's Greville-point coordinate (BlockKrylov::set_structure).
+     * per DoF, before mu's), each one's Greville-point coordinate and, for the geometric
+     * multigrid, the coarse B-spline levels below them (BlockKrylov::set_structure).
      */
     void
-    set_block_structure(const unsigned int         n_u,
-                        const unsigned int         dim,
-                        const std::vector<double> &u_dof_points);
+    set_block_structure(const unsigned int                     n_u,
+                        const unsigned int                     dim,
+                        const std::vector<double>             &u_dof_points,
+                        const std::vector<NestedBSplineLevel> &levels = {});
+
+    /**
+     * Whether the iterative solver wants the coarse B-spline levels for a geometric multigrid
+     * on the displacement block ('Displacement preconditioner = geometric').
+     */
+    bool
+    geometric_multigrid() const;
+
+    /** The iterative solver's displacement preconditioner at its last setup (for the log). */
+    std::string
+    krylov_preconditioner() const;
 
     /** Krylov iterations of all solves so far, and the number of solves. */
     std::pair<unsigned long, unsigned long>

@@ -9,6 +9,16 @@
 namespace GelMPM
 {
   /**
+   * Copy the leading @p n_u x @p n_u block of the serial matrix @p K into @p A, in two passes
+   * (pattern, then values) so that no second copy of its entries is held on the way.
+   */
+  void
+  copy_leading_block(const dealii::TrilinosWrappers::SparseMatrix &K,
+                     const unsigned int                            n_u,
+                     dealii::TrilinosWrappers::SparseMatrix       &A);
+
+
+  /**
    * @brief The displacement block A = K_uu of the u–mu tangent, copied out of it, and smoothed
    * aggregation algebraic multigrid (Trilinos ML) on A, given the rigid-body modes.
    *

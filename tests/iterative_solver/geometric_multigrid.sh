@@ -1,0 +1,52 @@
+# The geometric multigrid on the displacement block (Linear solver/Displacement preconditioner =
+# geometric: the nested B-spline grids) inside the iterative solver, against MUMPS:
+# - §4.1 (prm/constrained_swelling.prm) on 40 x 320 cells, 3 points per cell, 3 steps of fixed dt
+#   in the undrained limit (dt = 1e-6 tau_d) and at dt = 1e2 tau_d;
+# - 3D, 2 steps of dt = 1e-3 of the free-swelling cube (prm/free_swelling_cube.prm) on 20^3 cells;
+# with 'Multigrid coarse size' low (300) so that the cycles have 3 or 4 levels. Each run must take
+# the steps and Newton iterations of the MUMPS run (within one), give its statistics to 1e-6 of
+# each column's largest value, use the geometric multigrid, and at most so many Krylov iterations
+# per solve: undrained 65 (measured 54.3, all of it the Schur approximation's: with A solved
+# exactly 53.8; the algebraic multigrid takes 126), dt = 1e2 10 (measured 6.7), cube 35
+# (measured 27.3; with A solved exactly 22.8).
+# Same arguments as the MPI tests (gelmpm, compare tool, mpiexec, source directory).
+source "$(dirname "${BASH_SOURCE[0]}")/../mpi/common.sh"
+# run NAME MAX SCENE [--set ...]: MUMPS and Krylov with the geometric multigrid, compared.
+run() {
+  local name="$1" max="$2" scene="$3"
+  shift 3
+  "$gelmpm" "$source_dir/prm/$scene" --set "Output/Directory=${name}_MUMPS" \
+    --set "Output/Write particles=false" --set "Linear solver/Solver=MUMPS" "$@" \
+    > "${name}_MUMPS.log" 2>&1
+  check $? "$name with MUMPS finished ($(grep -m1 'reached\|error\|failed' "${name}_MUMPS.log"))"
+  "$gelmpm" "$source_dir/prm/$scene" --set "Output/Directory=${name}_GMG" \
+    --set "Output/Write particles=false" --set "Linear solver/Solver=Krylov" \
+    --set "Linear solver/Displacement preconditioner=geometric" \
+    --set "Linear solver/Multigrid coarse size=300" "$@" > "${name}_GMG.log" 2>&1
+  check $? "$name with the geometric multigrid finished ($(grep -m1 'reached\|error\|failed' "${name}_GMG.log"))"
+  "$compare" --relative 1e-6 --newton 1 "${name}_MUMPS/statistics.csv" "${name}_GMG/statistics.csv" \
+    > "${name}_compare.log"
+  check $? "$name: geometric multigrid and MUMPS statistics agree ($(tail -1 "${name}_compare.log"))"
+  local per_solve levels
+  per_solve=$(grep -o "([0-9.e+-]* per solve)" "${name}_GMG.log" | tr -d '(' | awk '{print $1}')
+  levels=$(grep -o "geometric multigrid, levels of [0-9, ]* unknowns" "${name}_GMG.log")
+  [[ -n $levels ]]
+  check $? "$name: the displacement block by the geometric multigrid (${levels:-not used})"
+  awk -v p="${per_solve:-1e9}" -v m="$max" 'BEGIN { exit !(p <= m) }'
+  check $? "$name: ${per_solve:-no} Krylov iterations per solve (at most $max)"
+}
+fixed_steps() { # fixed_steps DT STEPS: the entries for STEPS steps of DT, in ${steps[@]}
+  steps=(--set "Time stepping/Initial step=$1" --set "Time stepping/Growth factor=1"
+         --set "Time stepping/Step caps=" --set "Time stepping/Stop at times="
+         --set "Time stepping/Tolerance=0"
+         --set "Time stepping/End time=$(awk -v d="$1" -v n="$2" 'BEGIN { print d * n }')")
+}
+
+grid=(--set "Background grid/Cells=40, 320" --set "Material points/Points per cell=3")
+fixed_steps 1e-6 3
+run undrained 65 constrained_swelling.prm "${steps[@]}" "${grid[@]}"
+fixed_steps 1e2 3
+run drained 10 constrained_swelling.prm "${steps[@]}" "${grid[@]}"
+fixed_steps 1e-3 2
+run cube 35 free_swelling_cube.prm "${steps[@]}" --set "Background grid/Cells=20, 20, 20"
+finish
