@@ -17,21 +17,15 @@
 #include <random>
 #include <set>
 
+#include "check_report.h"
+
 using namespace dealii;
 using namespace GelMPM;
 
 namespace
 {
-  bool all_ok = true;
-
-  void
-  report(const std::string &what, const double error, const double tolerance)
-  {
-    const bool ok = error < tolerance;
-    all_ok &= ok;
-    std::cout << "  " << what << " < " << tolerance << ": " << (ok ? "yes" : "no  FAIL")
-              << std::endl;
-  }
+  using check_report::all_ok;
+  using check_report::report;
 
   std::multiset<long>
   scaled(const std::vector<std::pair<unsigned int, double>> &w)

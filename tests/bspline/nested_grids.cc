@@ -17,21 +17,15 @@
 #include <iostream>
 #include <random>
 
+#include "check_report.h"
+
 using namespace dealii;
 using namespace GelMPM;
 
 namespace
 {
-  bool all_ok = true;
-
-  void
-  report(const std::string &what, const double error, const double tolerance)
-  {
-    const bool ok = error < tolerance;
-    all_ok &= ok;
-    std::cout << "  " << what << " < " << tolerance << ": " << (ok ? "yes" : "no  FAIL")
-              << std::endl;
-  }
+  using check_report::all_ok;
+  using check_report::report;
 
   /** y = P x for a prolongation. */
   std::vector<double>
