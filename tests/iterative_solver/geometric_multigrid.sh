@@ -1,13 +1,14 @@
 # The geometric multigrid on the displacement block (Linear solver/Displacement preconditioner =
 # geometric: the nested B-spline grids) inside the iterative solver, against MUMPS:
 # - §4.1 (prm/constrained_swelling.prm) on 40 x 320 cells, 3 points per cell, 3 steps of fixed dt
-#   in the undrained limit (dt = 1e-6 tau_d) and at dt = 1e2 tau_d;
+#   in the undrained limit (dt = 1e-6 tau_d), where the count is highest (at dt = 1e2 tau_d it is
+#   6.7; doc/performance.md has it, the test leaves it out for time);
 # - 3D, 2 steps of dt = 1e-3 of the free-swelling cube (prm/free_swelling_cube.prm) on 20^3 cells;
 # with 'Multigrid coarse size' low (300) so that the cycles have 3 or 4 levels. Each run must take
 # the steps and Newton iterations of the MUMPS run (within one), give its statistics to 1e-6 of
 # each column's largest value, use the geometric multigrid, and at most so many Krylov iterations
 # per solve: undrained 65 (measured 54.3, all of it the Schur approximation's: with A solved
-# exactly 53.8; the algebraic multigrid takes 126), dt = 1e2 10 (measured 6.7), cube 35
+# exactly 53.8; the algebraic multigrid takes 126), cube 35
 # (measured 27.3; with A solved exactly 22.8).
 # Same arguments as the MPI tests (gelmpm, compare tool, mpiexec, source directory).
 source "$(dirname "${BASH_SOURCE[0]}")/../mpi/common.sh"
@@ -45,8 +46,6 @@ fixed_steps() { # fixed_steps DT STEPS: the entries for STEPS steps of DT, in ${
 grid=(--set "Background grid/Cells=40, 320" --set "Material points/Points per cell=3")
 fixed_steps 1e-6 3
 run undrained 65 constrained_swelling.prm "${steps[@]}" "${grid[@]}"
-fixed_steps 1e2 3
-run drained 10 constrained_swelling.prm "${steps[@]}" "${grid[@]}"
 fixed_steps 1e-3 2
 run cube 35 free_swelling_cube.prm "${steps[@]}" --set "Background grid/Cells=20, 20, 20"
 finish
