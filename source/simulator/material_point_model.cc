@@ -1,3 +1,4 @@
+#include <gelmpm/core/collective.h>
 #include <gelmpm/core/stop_request.h>
 #include <gelmpm/particles/point_location.h>
 #include <gelmpm/simulator/material_point_model.h>
@@ -50,7 +51,8 @@ namespace GelMPM
     if (linear_solver.may_iterate())
       {
         std::vector<NestedBSplineLevel> levels;
-        if (linear_solver.geometric_multigrid())
+        // On several ranks the iterative solver has the algebraic multigrid only.
+        if (linear_solver.geometric_multigrid() && !Collective::is_parallel(scene.communicator))
           {
             // The 1D refinement operators are fixed with the grid: computed once per space.
             if (!nested_grids || &nested_grids->fine_space() != &scene.spaces->u_space())

@@ -118,12 +118,6 @@ namespace GelMPM
                 std::to_string(dealii::Utilities::MPI::n_mpi_processes(scene.communicator)) +
                 " ranks",
               "run the scene on one rank (without mpirun) or set the entry to false");
-    require(!linear_solver.iterative() || !Collective::is_parallel(scene.communicator),
-            "Linear solver/Solver",
-            "is Krylov, which reads the blocks of the tangent on one MPI rank, but the run has " +
-              std::to_string(dealii::Utilities::MPI::n_mpi_processes(scene.communicator)) +
-              " ranks",
-            "run the scene on one rank or use MUMPS");
     require(stability.perturbation_direction.size() >= dim,
             "Stability/Perturbation direction",
             "has fewer components than the scene's dimension " + std::to_string(dim),

@@ -1,3 +1,4 @@
+#include <gelmpm/core/collective.h>
 #include <gelmpm/solvers/block_krylov.h>
 #include <gelmpm/stability/matrix_entries.h>
 
@@ -5,6 +6,9 @@
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
 
+#include <Amesos.h>
+#include <EpetraExt_MatrixMatrix.h>
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -12,6 +16,152 @@
 
 namespace GelMPM
 {
+  namespace
+  {
+    /**
+     * Right-preconditioned GMRES on K x = b to the settings' relative tolerance of
+     * @p b_norm (|b|); the number of iterations. Throws std::runtime_error when it does not
+     * converge.
+     */
+    template <typename VectorType, typename Preconditioner>
+    unsigned int
+    gmres(const dealii::TrilinosWrappers::SparseMatrix &K,
+          VectorType                                   &x,
+          const VectorType                             &b,
+          const Preconditioner                         &preconditioner,
+          const BlockKrylov::Settings                  &settings,
+          const double                                  b_norm)
+    {
+      x = 0.;
+      dealii::SolverControl           control(settings.max_iterations,
+                                    settings.relative_tolerance * b_norm,
+                                    false,
+                                    false);
+      dealii::SolverGMRES<VectorType> solver(
+        control,
+        typename dealii::SolverGMRES<VectorType>::AdditionalData(settings.restart + 2, true));
+      try
+        {
+          solver.solve(K, x, b, preconditioner);
+        }
+      catch (const dealii::SolverControl::NoConvergence &e)
+        {
+          std::ostringstream why;
+          why << "the iterative solver (GMRES) did not reduce the residual by "
+              << settings.relative_tolerance << " in " << e.last_step << " iterations (reached "
+              << e.last_residual / std::max(b_norm, 1e-300) << ")";
+          throw std::runtime_error(why.str());
+        }
+      return control.last_step();
+    }
+  } // namespace
+
+
+  void
+  DistributedBlockPreconditioner::clear()
+  {
+    schur.reset();
+    schur_problem.reset();
+    S.reset();
+    B.clear();
+    displacement.clear();
+  }
+
+
+  void
+  DistributedBlockPreconditioner::setup(const dealii::TrilinosWrappers::SparseMatrix &K,
+                                        const unsigned int                            n_u,
+                                        const unsigned int                            dim,
+                                        const std::vector<double>                    &u_dof_points)
+  {
+    clear();
+    const unsigned int n    = K.m();
+    const MPI_Comm     comm = K.get_mpi_communicator();
+    if (!(K.locally_owned_domain_indices() == K.locally_owned_range_indices()))
+      throw std::logic_error("DistributedBlockPreconditioner: the tangent's rows and columns "
+                             "must be distributed alike");
+    displacement.setup(K, n_u, dim, u_dof_points);
+    const dealii::TrilinosWrappers::SparseMatrix &A = displacement.matrix();
+
+    // As on one rank (BlockKrylov::setup()), the magnitude of A's diagonal scales the coupling.
+    const dealii::IndexSet                owned_u = A.locally_owned_range_indices();
+    dealii::TrilinosWrappers::MPI::Vector inverse_diagonal(owned_u, comm);
+    for (const auto i : owned_u)
+      {
+        const double d = A.diag_element(i);
+        if (!(std::abs(d) > 0.) || !std::isfinite(d))
+          throw std::runtime_error("the iterative solver's preconditioner needs a nonzero "
+                                   "diagonal in the displacement block (row " +
+                                   std::to_string(i) + ")");
+        inverse_diagonal[i] = 1. / std::abs(d);
+      }
+    inverse_diagonal.compress(dealii::VectorOperation::insert);
+
+    dealii::TrilinosWrappers::SparseMatrix Bt, C, coupling;
+    copy_block(K, n_u, n, 0, n_u, B);
+    copy_block(K, 0, n_u, n_u, n, Bt);
+    copy_block(K, n_u, n, n_u, n, C);
+    B.mmult(coupling, Bt, inverse_diagonal);
+    Bt.clear();
+    // S = C - coupling; the sum's pattern is the union of both (EpetraExt allocates it).
+    Epetra_CrsMatrix *sum   = nullptr;
+    const int         error = EpetraExt::MatrixMatrix::Add(C.trilinos_matrix(),
+                                                   false,
+                                                   1.,
+                                                   coupling.trilinos_matrix(),
+                                                   false,
+                                                   -1.,
+                                                   sum);
+    S.reset(sum);
+    if (error != 0 || !S)
+      throw std::runtime_error("the approximate Schur complement of the iterative solver's "
+                               "preconditioner could not be formed (EpetraExt error " +
+                               std::to_string(error) + ")");
+    S->FillComplete(C.trilinos_matrix().DomainMap(), C.trilinos_matrix().RangeMap());
+
+    schur_problem = std::make_unique<Epetra_LinearProblem>();
+    schur_problem->SetOperator(S.get());
+    Amesos factory;
+    schur.reset(factory.Create("Amesos_Mumps", *schur_problem));
+    int status = schur ? schur->SymbolicFactorization() : -1;
+    if (status == 0)
+      status = schur->NumericFactorization();
+    if (status != 0)
+      throw std::runtime_error("the approximate Schur complement of the iterative solver's "
+                               "preconditioner could not be factorised (Amesos error " +
+                               std::to_string(status) + ")");
+
+    r_u.reinit(owned_u, comm);
+    y_u.reinit(owned_u, comm);
+    r_mu.reinit(C.locally_owned_range_indices(), comm);
+    y_mu.reinit(r_mu);
+  }
+
+
+  void
+  DistributedBlockPreconditioner::vmult(dealii::TrilinosWrappers::MPI::Vector       &dst,
+                                        const dealii::TrilinosWrappers::MPI::Vector &src) const
+  {
+    const std::size_t n_u_local = r_u.locally_owned_size();
+    std::copy(src.begin(), src.begin() + n_u_local, r_u.begin());
+    displacement.preconditioner().vmult(y_u, r_u);
+    B.vmult(r_mu, y_u);
+    const double *src_mu = src.begin() + n_u_local;
+    for (auto [k, r] = std::make_pair(std::size_t(0), r_mu.begin()); r != r_mu.end(); ++k, ++r)
+      *r = src_mu[k] - *r;
+    schur_problem->SetLHS(&y_mu.trilinos_vector());
+    schur_problem->SetRHS(&r_mu.trilinos_vector());
+    const int status = schur->Solve();
+    schur_problem->SetLHS(nullptr);
+    schur_problem->SetRHS(nullptr);
+    if (status != 0)
+      throw std::runtime_error("the approximate Schur complement's solve failed (Amesos error " +
+                               std::to_string(status) + ")");
+    std::copy(y_u.begin(), y_u.end(), dst.begin());
+    std::copy(y_mu.begin(), y_mu.end(), dst.begin() + n_u_local);
+  }
+
+
   bool
   BlockKrylov::set_structure(const unsigned int                     n_u_dofs,
                              const unsigned int                     dimension,
@@ -58,7 +208,7 @@ namespace GelMPM
   BlockKrylov::displacement_preconditioner() const
   {
     if (!use_geometric)
-      return "algebraic multigrid";
+      return distributed ? "algebraic multigrid (several MPI ranks)" : "algebraic multigrid";
     std::string levels_text;
     for (const unsigned int size : geometric_multigrid.level_sizes())
       levels_text += (levels_text.empty() ? "" : ", ") + std::to_string(size);
@@ -74,12 +224,21 @@ namespace GelMPM
     // The old hierarchy refers to the old A: it goes before the block changes.
     displacement.clear();
     geometric_multigrid.clear();
+    distributed_preconditioner.clear();
     settings                = new_settings;
     matrix                  = &K;
     const unsigned int n    = K.m();
     const unsigned int n_mu = n - n_u;
-    if (n_u == 0 || n_u > n || K.trilinos_matrix().Comm().NumProc() != 1)
-      throw std::logic_error("BlockKrylov: set_structure() first; one process only");
+    if (n_u == 0 || n_u > n)
+      throw std::logic_error("BlockKrylov: set_structure() first");
+    distributed   = Collective::is_parallel(K.get_mpi_communicator());
+    use_geometric = false;
+    if (distributed)
+      {
+        distributed_preconditioner.setup(K, n_u, dim, points);
+        built = true;
+        return;
+      }
 
     // The coupling blocks and A's diagonal, from the rows of K (each stored entry is visited
     // once); A itself and its multigrid are DisplacementBlockAMG's or BSplineMultigrid's.
@@ -186,28 +345,36 @@ namespace GelMPM
     if (!built)
       throw std::logic_error("BlockKrylov::solve() without setup()");
     x.reinit(b.size());
-    dealii::SolverControl                       control(settings.max_iterations,
-                                  settings.relative_tolerance * b.l2_norm(),
-                                  false,
-                                  false);
-    dealii::SolverGMRES<dealii::Vector<double>> gmres(
-      control,
-      dealii::SolverGMRES<dealii::Vector<double>>::AdditionalData(settings.restart + 2, true));
-    try
-      {
-        gmres.solve(*matrix, x, b, *this);
-      }
-    catch (const dealii::SolverControl::NoConvergence &e)
-      {
-        std::ostringstream why;
-        why << "the iterative solver (GMRES) did not reduce the residual by "
-            << settings.relative_tolerance << " in " << e.last_step << " iterations (reached "
-            << e.last_residual / std::max(b.l2_norm(), 1e-300) << ")";
-        throw std::runtime_error(why.str());
-      }
+    const unsigned int iterations =
+      distributed ? solve_distributed(x, b) : gmres(*matrix, x, b, *this, settings, b.l2_norm());
     for (const double v : x)
       if (!std::isfinite(v))
         throw std::runtime_error("the iterative solver's solution is not finite");
-    return control.last_step();
+    return iterations;
+  }
+
+
+  unsigned int
+  BlockKrylov::solve_distributed(dealii::Vector<double> &x, const dealii::Vector<double> &b) const
+  {
+    const dealii::IndexSet                owned = matrix->locally_owned_range_indices();
+    const MPI_Comm                        comm  = matrix->get_mpi_communicator();
+    dealii::TrilinosWrappers::MPI::Vector b_owned(owned, comm), x_owned(owned, comm);
+    {
+      auto entry = b_owned.begin();
+      for (const auto i : owned)
+        *entry++ = b[i];
+    }
+    const unsigned int iterations =
+      gmres(*matrix, x_owned, b_owned, distributed_preconditioner, settings, b.l2_norm());
+    // The Newton vectors are whole on every rank: the ranks' parts are summed into place.
+    x.reinit(b.size());
+    {
+      auto entry = x_owned.begin();
+      for (const auto i : owned)
+        x[i] = *entry++;
+    }
+    Collective::sum_in_place(comm, x.begin(), x.size());
+    return iterations;
   }
 } // namespace GelMPM

@@ -39,9 +39,10 @@ namespace GelMPM
                       "(LU, no BLAS; slower on the wide stencils of B-splines, "
                       "doc/performance.md), or Krylov: GMRES with multigrid on the "
                       "displacement block ('Displacement preconditioner') and a direct solve of an "
-                      "approximate Schur complement of mu (one MPI rank; doc/performance.md, "
-                      "'Iterative solver'). With 'Stability' on, the analysis factorises the "
-                      "tangent itself.");
+                      "approximate Schur complement of mu (on several MPI ranks distributed, with "
+                      "the algebraic multigrid; doc/performance.md, 'Iterative solver'). With "
+                      "'Stability' on, the analysis factorises the tangent itself unless "
+                      "'Stability/Eigensolver' is iterative.");
     prm.declare_entry("Automatic memory share",
                       "0.5",
                       dealii::Patterns::Double(0., 1.),
@@ -75,17 +76,18 @@ namespace GelMPM
                       "200",
                       dealii::Patterns::Integer(1),
                       "Krylov: the GMRES restart length (memory: this many vectors).");
-    prm.declare_entry("Displacement preconditioner",
-                      "geometric",
-                      dealii::Patterns::Selection("algebraic|geometric"),
-                      "Krylov: the multigrid cycle that approximates the inverse of the "
-                      "displacement block K_uu. geometric: on the nested B-spline grids of cell "
-                      "size 2h, 4h, ... (while the cell counts are even), Galerkin coarse "
-                      "operators, overlapping Schwarz smoothing on cell blocks, the coarsest "
-                      "level factorised (BSplineMultigrid); algebraic where the grid has no "
-                      "coarser level. algebraic: smoothed aggregation (Trilinos ML) with the "
-                      "rigid-body modes. doc/performance.md, 'Iterative solver', has the "
-                      "iteration counts of both.");
+    prm.declare_entry(
+      "Displacement preconditioner",
+      "geometric",
+      dealii::Patterns::Selection("algebraic|geometric"),
+      "Krylov: the multigrid cycle that approximates the inverse of the "
+      "displacement block K_uu. geometric: on the nested B-spline grids of cell "
+      "size 2h, 4h, ... (while the cell counts are even), Galerkin coarse "
+      "operators, overlapping Schwarz smoothing on cell blocks, the coarsest "
+      "level factorised (BSplineMultigrid); algebraic where the grid has no "
+      "coarser level and on several MPI ranks. algebraic: smoothed aggregation "
+      "(Trilinos ML) with the rigid-body modes. doc/performance.md, 'Iterative solver', has the "
+      "iteration counts of both.");
     prm.declare_entry("Multigrid smoother",
                       "cell blocks",
                       dealii::Patterns::Selection("cell blocks|point Gauss-Seidel"),

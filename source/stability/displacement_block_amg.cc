@@ -11,22 +11,49 @@
 namespace GelMPM
 {
   void
+  copy_block(const dealii::TrilinosWrappers::SparseMatrix &K,
+             const unsigned int                            row_begin,
+             const unsigned int                            row_end,
+             const unsigned int                            column_begin,
+             const unsigned int                            column_end,
+             dealii::TrilinosWrappers::SparseMatrix       &M)
+  {
+    const auto part_in =
+      [](const dealii::IndexSet &owned, const unsigned int begin, const unsigned int end) {
+        dealii::IndexSet part(end - begin);
+        for (const auto i : owned)
+          if (i >= begin && i < end)
+            part.add_index(i - begin);
+        part.compress();
+        return part;
+      };
+    const dealii::IndexSet rows = part_in(K.locally_owned_range_indices(), row_begin, row_end);
+    const dealii::IndexSet columns =
+      part_in(K.locally_owned_domain_indices(), column_begin, column_end);
+    const auto in_block = [&](const unsigned int i, const unsigned int j) {
+      return i >= row_begin && j >= column_begin && j < column_end;
+    };
+    dealii::DynamicSparsityPattern pattern(row_end - row_begin, column_end - column_begin, rows);
+    for_each_entry(K, row_end, [&](const unsigned int i, const unsigned int j, const double) {
+      if (in_block(i, j))
+        pattern.add(i - row_begin, j - column_begin);
+    });
+    M.reinit(rows, columns, pattern, K.get_mpi_communicator());
+    pattern.reinit(0, 0);
+    for_each_entry(K, row_end, [&](const unsigned int i, const unsigned int j, const double v) {
+      if (in_block(i, j))
+        M.set(i - row_begin, j - column_begin, v);
+    });
+    M.compress(dealii::VectorOperation::insert);
+  }
+
+
+  void
   copy_leading_block(const dealii::TrilinosWrappers::SparseMatrix &K,
                      const unsigned int                            n_u,
                      dealii::TrilinosWrappers::SparseMatrix       &A)
   {
-    dealii::DynamicSparsityPattern a_pattern(n_u, n_u);
-    for_each_entry(K, n_u, [&](const unsigned int i, const unsigned int j, const double) {
-      if (j < n_u)
-        a_pattern.add(i, j);
-    });
-    A.reinit(a_pattern);
-    a_pattern.reinit(0, 0);
-    for_each_entry(K, n_u, [&](const unsigned int i, const unsigned int j, const double v) {
-      if (j < n_u)
-        A.set(i, j, v);
-    });
-    A.compress(dealii::VectorOperation::insert);
+    copy_block(K, 0, n_u, 0, n_u, A);
   }
 
 
@@ -38,40 +65,44 @@ namespace GelMPM
   {
     // The old hierarchy refers to the old A and null space: it goes before they change.
     amg.clear();
-    if (n_u == 0 || n_u > K.m() || points.size() != n_u || (dim != 2 && dim != 3) ||
-        K.trilinos_matrix().Comm().NumProc() != 1)
+    if (n_u == 0 || n_u > K.m() || points.size() != n_u || (dim != 2 && dim != 3))
       throw std::logic_error("DisplacementBlockAMG: n_u unknowns with one point coordinate each, "
-                             "dim 2 or 3, one process only");
+                             "dim 2 or 3");
 
     copy_leading_block(K, n_u, A);
 
-    // Rigid-body modes about the points' centroid: dim translations and dim(dim-1)/2 rotations.
+    // Rigid-body modes about the points' centroid: dim translations and dim(dim-1)/2 rotations,
+    // on the rows this rank owns (ML's null space is distributed like A).
     const unsigned int  n_nodes = n_u / dim, n_modes = dim == 2 ? 3 : 6;
     std::vector<double> centre(dim, 0.);
     for (unsigned int k = 0; k < n_nodes; ++k)
       for (unsigned int d = 0; d < dim; ++d)
         centre[d] += points[k * dim + d] / n_nodes;
-    modes.assign(n_modes * n_u, 0.);
-    const auto mode = [&](const unsigned int m, const unsigned int row) -> double & {
-      return modes[m * n_u + row];
+    const dealii::IndexSet owned   = A.locally_owned_range_indices();
+    const unsigned int     n_local = owned.n_elements();
+    modes.assign(n_modes * n_local, 0.);
+    const auto mode = [&](const unsigned int m, const unsigned int local_row) -> double & {
+      return modes[m * n_local + local_row];
     };
-    for (unsigned int k = 0; k < n_nodes; ++k)
+    unsigned int local_row = 0;
+    for (const auto row : owned)
       {
+        const unsigned int    k = row / dim, component = row % dim;
         std::array<double, 3> x = {{0., 0., 0.}};
         for (unsigned int d = 0; d < dim; ++d)
           x[d] = points[k * dim + d] - centre[d];
-        for (unsigned int d = 0; d < dim; ++d)
-          mode(d, k * dim + d) = 1.;
+        mode(component, local_row) = 1.;
         // Rotation about axis a: u = e_a x x.
         const unsigned int n_rotations = dim == 2 ? 1 : 3;
         for (unsigned int r = 0; r < n_rotations; ++r)
           {
             const unsigned int a = dim == 2 ? 2 : r, b = (a + 1) % 3, c = (a + 2) % 3;
-            if (b < dim)
-              mode(dim + r, k * dim + b) = -x[c];
-            if (c < dim)
-              mode(dim + r, k * dim + c) = x[b];
+            if (component == b)
+              mode(dim + r, local_row) = -x[c];
+            if (component == c)
+              mode(dim + r, local_row) = x[b];
           }
+        ++local_row;
       }
     Teuchos::ParameterList parameters;
     ML_Epetra::SetDefaults("SA", parameters);

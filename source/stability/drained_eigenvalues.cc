@@ -1,3 +1,4 @@
+#include <gelmpm/core/collective.h>
 #include <gelmpm/stability/drained_eigenvalues.h>
 
 #include <AnasaziBasicEigenproblem.hpp>
@@ -27,8 +28,9 @@ namespace GelMPM
     using MV = Epetra_MultiVector;
     using OP = Epetra_Operator;
 
-    const Epetra_CrsMatrix &A = block.matrix().trilinos_matrix();
-    const int               n = A.NumGlobalRows();
+    const Epetra_CrsMatrix &A    = block.matrix().trilinos_matrix();
+    const MPI_Comm          comm = block.matrix().get_mpi_communicator();
+    const int               n    = A.NumGlobalRows();
     // Two more vectors than wanted: the last wanted pair converges at the rate set by the gap to
     // the first one outside the block, not to its neighbour.
     const int block_size = static_cast<int>(n_eigenvalues) + 2;
@@ -102,6 +104,11 @@ namespace GelMPM
             residual += (Av[i] - lambda * v[i]) * (Av[i] - lambda * v[i]);
             v_norm += v[i] * v[i];
           }
+        // On several ranks each holds its rows of A and of v.
+        std::vector<double> sums = {residual, v_norm};
+        Collective::sum_in_place(comm, sums);
+        residual = sums[0];
+        v_norm   = sums[1];
         result.values.push_back(lambda);
         result.residuals.push_back(std::sqrt(residual / v_norm) / norm);
         if (want_vectors)
@@ -109,6 +116,7 @@ namespace GelMPM
             dealii::Vector<double> vector(n);
             for (int i = 0; i < A.NumMyRows(); ++i)
               vector(A.GRID(i)) = v[i] / std::sqrt(v_norm);
+            Collective::sum_in_place(comm, vector.begin(), vector.size());
             result.vectors.push_back(std::move(vector));
           }
       }

@@ -10,7 +10,7 @@
 #   (measured 35);
 # - 3D, 2 steps of the free-swelling cube (prm/free_swelling_cube.prm) at 14^3 cells: the AMG
 #   with six rigid-body modes;
-# and the refusal of Krylov on two MPI ranks (exit 2, the entry named).
+# (tests/mpi/krylov.sh compares Krylov on two MPI ranks with one).
 # Same arguments as the MPI tests (gelmpm, compare tool, mpiexec, source directory).
 source "$(dirname "${BASH_SOURCE[0]}")/../mpi/common.sh"
 # run NAME SCENE [--set ...]: one run with each solver, NAME_MUMPS and NAME_Krylov.
@@ -45,9 +45,4 @@ fixed_steps 0.01 2
 run cube free_swelling_cube.prm "${steps[@]}" --set "Background grid/Cells=14, 14, 14" \
   --set "Time stepping/Tolerance=0"
 
-"$mpiexec" -n 2 --oversubscribe "$gelmpm" "$source_dir/prm/constrained_swelling.prm" \
-  --set "Output/Directory=two_ranks" --set "Linear solver/Solver=Krylov" > two_ranks.log 2>&1
-status=$?
-[[ $status -eq 2 ]] && grep -q "Linear solver/Solver" two_ranks.log && [[ ! -e two_ranks/statistics.csv ]]
-check $? "Krylov on two ranks: exit 2 (got $status), the entry named, nothing written"
 finish

@@ -9,14 +9,61 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
+#include <Amesos_BaseSolver.h>
+#include <Epetra_CrsMatrix.h>
+#include <Epetra_LinearProblem.h>
 #include <memory>
 #include <string>
 #include <vector>
 
 namespace GelMPM
 {
+  /**
+   * @brief BlockKrylov's preconditioner on several MPI ranks: the same block triangle
+   * [A 0; B S], S = C - B |diag(A)|^{-1} B^T', on the distributed blocks of the tangent.
+   *
+   * Each rank copies the rows of the blocks it owns (copy_block()); A is approximated by ML's
+   * smoothed aggregation (DisplacementBlockAMG, distributed), S is formed by Trilinos' sparse
+   * products (EpetraExt) and factorised by MUMPS on all ranks. The geometric multigrid's
+   * smoother visits cell blocks in order across the whole grid, so on several ranks A has the
+   * algebraic multigrid only.
+   *
+   * A rank's part of a vector of the tangent's unknowns is its displacement unknowns followed by
+   * its chemical potential unknowns: both are its owned indices in ascending order, and the
+   * displacement unknowns come first in the global numbering.
+   */
+  class DistributedBlockPreconditioner
+  {
+  public:
+    /** Build the blocks of @p K, the AMG of A and the factorised S (as BlockKrylov::setup()). */
+    void
+    setup(const dealii::TrilinosWrappers::SparseMatrix &K,
+          const unsigned int                            n_u,
+          const unsigned int                            dim,
+          const std::vector<double>                    &u_dof_points);
+
+    /** Release everything (the factorisation refers to S, the AMG to A). */
+    void
+    clear();
+
+    /** Apply the preconditioner to a vector distributed like the tangent's rows. */
+    void
+    vmult(dealii::TrilinosWrappers::MPI::Vector       &dst,
+          const dealii::TrilinosWrappers::MPI::Vector &src) const;
+
+  private:
+    DisplacementBlockAMG                          displacement;
+    dealii::TrilinosWrappers::SparseMatrix        B;
+    std::unique_ptr<Epetra_CrsMatrix>             S;
+    std::unique_ptr<Epetra_LinearProblem>         schur_problem;
+    std::unique_ptr<Amesos_BaseSolver>            schur;
+    mutable dealii::TrilinosWrappers::MPI::Vector r_u, y_u, r_mu, y_mu;
+  };
+
+
   /**
    * @brief GMRES on the u–mu Newton system with a block-triangular preconditioner: multigrid on
    * the displacement block, either algebraic (Trilinos ML, given the rigid-body modes;
@@ -36,7 +83,10 @@ namespace GelMPM
    * factorised directly (UMFPACK). The absolute value keeps the sign of S where a strongly
    * compressed point makes a diagonal entry of A negative.
    *
-   * Serial: the blocks are read from the rows of the matrix on one process.
+   * On one MPI rank the blocks are read from the rows of the matrix and GMRES runs on whole
+   * vectors; on several ranks the blocks, the Krylov vectors and the preconditioner are
+   * distributed like the tangent's rows (DistributedBlockPreconditioner), and only the solution
+   * is made whole again for the caller.
    */
   class BlockKrylov
   {
@@ -112,6 +162,10 @@ namespace GelMPM
     vmult(dealii::Vector<double> &dst, const dealii::Vector<double> &src) const;
 
   private:
+    /** solve() on several ranks: GMRES on vectors distributed like the rows of the tangent. */
+    unsigned int
+    solve_distributed(dealii::Vector<double> &x, const dealii::Vector<double> &b) const;
+
     unsigned int                    n_u = 0, dim = 2;
     std::vector<double>             points;
     std::vector<NestedBSplineLevel> levels;
@@ -122,6 +176,8 @@ namespace GelMPM
     DisplacementBlockAMG           displacement;
     BSplineMultigrid               geometric_multigrid;
     bool                           use_geometric = false;
+    bool                           distributed   = false;
+    DistributedBlockPreconditioner distributed_preconditioner;
     dealii::SparsityPattern        coupling_pattern, schur_pattern;
     dealii::SparseMatrix<double>   B, S;
     dealii::SparseDirectUMFPACK    schur;

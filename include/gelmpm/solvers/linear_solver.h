@@ -38,7 +38,8 @@ namespace GelMPM
    * multigrid on the displacement block and an approximate Schur complement of mu):
    * factorize() builds the preconditioner, solve()
    * iterates. It needs the block structure (set_block_structure()) after every change of the
-   * unknowns, and runs on one MPI rank.
+   * unknowns. On several MPI ranks it runs distributed (DistributedBlockPreconditioner), with the
+   * algebraic multigrid on the displacement block.
    *
    * "automatic" (the default) decides at the first factorisation: MUMPS, unless MUMPS's own
    * estimate of its factorisation (SymmetricFactorization::estimated_memory(), doubled for LU)

@@ -9,9 +9,22 @@
 namespace GelMPM
 {
   /**
-   * Copy the leading @p n_u x @p n_u block of the serial matrix @p K into @p A, in two passes
-   * (pattern, then values) so that no second copy of its entries is held on the way.
+   * Copy the block of @p K with rows in [@p row_begin, @p row_end) and columns in
+   * [@p column_begin, @p column_end) into @p M, its indices shifted to start at zero. @p M is
+   * distributed like @p K: each rank copies the rows of the block it owns, and the block's
+   * domain is the part of @p K's domain partition in the column range. Two passes (pattern,
+   * then values), so that no second copy of the entries is held on the way.
    */
+  void
+  copy_block(const dealii::TrilinosWrappers::SparseMatrix &K,
+             const unsigned int                            row_begin,
+             const unsigned int                            row_end,
+             const unsigned int                            column_begin,
+             const unsigned int                            column_end,
+             dealii::TrilinosWrappers::SparseMatrix       &M);
+
+
+  /** copy_block() of the leading @p n_u x @p n_u block of @p K. */
   void
   copy_leading_block(const dealii::TrilinosWrappers::SparseMatrix &K,
                      const unsigned int                            n_u,
@@ -28,7 +41,8 @@ namespace GelMPM
    * sweeps), aggregation threshold 0.02, KLU on a coarse level of at most 2000 unknowns, and the
    * dim translations and dim(dim-1)/2 rotations about the points' centroid as the null space.
    *
-   * Serial: the block is read from the rows of the matrix on one process.
+   * Distributed like the tangent: each rank copies the rows of A it owns (all dim components of
+   * a DoF are owned together, as ML's 'PDE equations' needs).
    */
   class DisplacementBlockAMG
   {
