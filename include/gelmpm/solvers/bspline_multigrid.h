@@ -49,7 +49,7 @@ namespace GelMPM
    * coarse functions' Greville points for the rigid-body modes). Coarsening stops at the first
    * level small enough for the direct solve.
    *
-   * Serial, like BlockKrylov.
+   * Serial: on several MPI ranks BlockKrylov uses the algebraic multigrid instead.
    */
   class BSplineMultigrid
   {
