@@ -203,10 +203,10 @@ namespace GelMPM
 
     // The coupling blocks and A's diagonal, from the rows of K (each stored entry is visited
     // once); A itself and its multigrid are DisplacementBlockAMG's or BSplineMultigrid's.
-    dealii::DynamicSparsityPattern b_pattern(n_mu, n_u);
-    inverse_diagonal.reinit(n_u);
+    dealii::DynamicSparsityPattern                            b_pattern(n_mu, n_u);
     std::vector<std::vector<std::pair<unsigned int, double>>> b_rows(n_mu), bt_rows(n_u);
     std::vector<std::map<unsigned int, double>>               c_rows(n_mu);
+    inverse_diagonal.reinit(n_u);
     for_each_entry(K, n, [&](const unsigned int i, const unsigned int j, const double v) {
       if (i < n_u && j < n_u)
         {

@@ -49,9 +49,9 @@ namespace GelMPM
    *   three functions nonzero on the boundary into an almost rank-one block whose diagonal
    *   overestimates A a hundredfold on the combinations with no trace (20, 26, 36 undrained on
    *   the grids above). So W is the block diagonal of A over the strongly coupled unknowns,
-   *   |a_ij| > Settings::block_threshold sqrt(|a_ii a_jj|) (blocks of 2-3 unknowns there, D
-   *   elsewhere): 9.6, 10.7, 13.2. Cost per application: a second solve with L_C, a product with
-   *   K, two with W and one each with B and B^T'.
+   *   |a_ij| > Settings::block_threshold sqrt(|a_ii a_jj|) (blocks of 2-3 unknowns there in
+   *   2D, up to 6 on the cube; D elsewhere): 9.6, 10.7, 13.2. Cost per application: a second
+   *   solve with L_C, a product with K, two with W and one each with B and B^T'.
    *
    * Serial: the blocks are read from the rows of the matrix on one process.
    */
