@@ -3,6 +3,7 @@
 #include <gelmpm/stability/matrix_entries.h>
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
 
@@ -53,6 +54,121 @@ namespace GelMPM
           throw std::runtime_error(why.str());
         }
       return control.last_step();
+    }
+
+
+    /**
+     * The weight W of LSC: W^{-1} is the inverse of A's diagonal blocks over the groups of
+     * displacement unknowns that A couples strongly, |a_ij| > threshold sqrt(|a_ii a_jj|) (the
+     * connected components of that graph, as an AMG's strong connections), |a_ii|^{-1} for the
+     * others. With Nitsche's penalty (gamma / h times a boundary mass matrix) the u_n rows of the
+     * functions nonzero on an immersed boundary are coupled almost as a rank-one block: its
+     * diagonal overestimates A a hundredfold on the combinations whose trace vanishes, and the
+     * commutator's error concentrates there. A group whose block's symmetric part is not
+     * positive definite, or that has more than max_block unknowns, keeps |diag|^{-1}.
+     * Returns the largest block inverted.
+     */
+    unsigned int
+    build_weight(const dealii::TrilinosWrappers::SparseMatrix &K,
+                 const unsigned int                            n_u,
+                 const dealii::Vector<double>                 &inverse_diagonal,
+                 const double                                  threshold,
+                 dealii::SparsityPattern                      &pattern,
+                 dealii::SparseMatrix<double>                 &weight)
+    {
+      weight.clear();
+      constexpr unsigned int    max_block = 64;
+      std::vector<unsigned int> parent(n_u);
+      for (unsigned int i = 0; i < n_u; ++i)
+        parent[i] = i;
+      const auto root = [&](unsigned int i) {
+        while (parent[i] != i)
+          i = parent[i] = parent[parent[i]];
+        return i;
+      };
+      if (threshold < 1.)
+        for_each_entry(K, n_u, [&](const unsigned int i, const unsigned int j, const double v) {
+          // inverse_diagonal = 1 / |a_ii|.
+          if (j < n_u && i != j &&
+              v * v * inverse_diagonal[i] * inverse_diagonal[j] > threshold * threshold)
+            {
+              const unsigned int a = root(i), b = root(j);
+              if (a != b)
+                parent[std::max(a, b)] = std::min(a, b);
+            }
+        });
+      // The groups, each with its members' places.
+      std::vector<unsigned int>              group(n_u), place(n_u);
+      std::vector<std::vector<unsigned int>> members;
+      std::map<unsigned int, unsigned int>   group_of_root;
+      for (unsigned int i = 0; i < n_u; ++i)
+        {
+          const auto [it, added] = group_of_root.emplace(root(i), members.size());
+          if (added)
+            members.emplace_back();
+          group[i] = it->second;
+          place[i] = members[it->second].size();
+          members[it->second].push_back(i);
+        }
+      std::vector<dealii::FullMatrix<double>> blocks(members.size());
+      for (unsigned int g = 0; g < members.size(); ++g)
+        if (members[g].size() > 1 && members[g].size() <= max_block)
+          blocks[g].reinit(members[g].size(), members[g].size());
+      if (threshold < 1.)
+        for_each_entry(K, n_u, [&](const unsigned int i, const unsigned int j, const double v) {
+          if (j < n_u && group[i] == group[j] && !blocks[group[i]].empty())
+            blocks[group[i]](place[i], place[j]) = v;
+        });
+      unsigned int largest = 1;
+      for (unsigned int g = 0; g < members.size(); ++g)
+        if (!blocks[g].empty())
+          {
+            // Cholesky of the symmetric part: is it positive definite?
+            const unsigned int         m = members[g].size();
+            dealii::FullMatrix<double> factor(m, m);
+            bool                       definite = true;
+            for (unsigned int a = 0; a < m && definite; ++a)
+              for (unsigned int b = 0; b <= a; ++b)
+                {
+                  double sum = 0.5 * (blocks[g](a, b) + blocks[g](b, a));
+                  for (unsigned int c = 0; c < b; ++c)
+                    sum -= factor(a, c) * factor(b, c);
+                  if (a == b)
+                    {
+                      if (!(sum > 0.))
+                        {
+                          definite = false;
+                          break;
+                        }
+                      factor(a, a) = std::sqrt(sum);
+                    }
+                  else
+                    factor(a, b) = sum / factor(b, b);
+                }
+            if (definite)
+              {
+                blocks[g].gauss_jordan();
+                largest = std::max(largest, m);
+              }
+            else
+              blocks[g].reinit(0, 0);
+          }
+      dealii::DynamicSparsityPattern w_pattern(n_u, n_u);
+      for (unsigned int i = 0; i < n_u; ++i)
+        if (blocks[group[i]].empty())
+          w_pattern.add(i, i);
+        else
+          for (const unsigned int j : members[group[i]])
+            w_pattern.add(i, j);
+      pattern.copy_from(w_pattern);
+      weight.reinit(pattern);
+      for (unsigned int i = 0; i < n_u; ++i)
+        if (blocks[group[i]].empty())
+          weight.set(i, i, inverse_diagonal[i]);
+        else
+          for (const unsigned int j : members[group[i]])
+            weight.set(i, j, blocks[group[i]](place[i], place[j]));
+      return largest;
     }
   } // namespace
 
@@ -208,7 +324,9 @@ namespace GelMPM
   BlockKrylov::displacement_preconditioner() const
   {
     if (!use_geometric)
-      return distributed ? "algebraic multigrid (several MPI ranks)" : "algebraic multigrid";
+      return distributed ? "algebraic multigrid (several MPI ranks; mu's Schur complement "
+                           "approximated as 'diagonal')"
+                         : "algebraic multigrid";
     std::string levels_text;
     for (const unsigned int size : geometric_multigrid.level_sizes())
       levels_text += (levels_text.empty() ? "" : ", ") + std::to_string(size);
@@ -245,7 +363,7 @@ namespace GelMPM
     dealii::DynamicSparsityPattern                            b_pattern(n_mu, n_u);
     std::vector<std::vector<std::pair<unsigned int, double>>> b_rows(n_mu), bt_rows(n_u);
     std::vector<std::map<unsigned int, double>>               c_rows(n_mu);
-    std::vector<double>                                       inverse_diagonal(n_u, 0.);
+    inverse_diagonal.reinit(n_u);
     for_each_entry(K, n, [&](const unsigned int i, const unsigned int j, const double v) {
       if (i < n_u && j < n_u)
         {
@@ -276,8 +394,17 @@ namespace GelMPM
     else
       displacement.setup(K, n_u, dim, points);
 
-    // The coupling B = K_mu,u and the approximate Schur complement
-    // S = C - B diag(A)^{-1} K_u,mu.
+    // The weight W^{-1}: |diag(A)|^{-1} for 'diagonal', blocks of A for LSC (build_weight()).
+    const bool lsc = settings.schur == SchurApproximation::lsc;
+    largest_block  = build_weight(K,
+                                 n_u,
+                                 inverse_diagonal,
+                                 lsc ? settings.block_threshold : 1.,
+                                 weight_pattern,
+                                 weight);
+
+    // The coupling B = K_mu,u and L_C = C - B W^{-1} K_u,mu: the approximate Schur complement of
+    // 'diagonal', the outer factor of LSC's.
     for (unsigned int i = 0; i < n_mu; ++i)
       for (const auto &[j, v] : b_rows[i])
         b_pattern.add(i, j);
@@ -288,9 +415,38 @@ namespace GelMPM
         for (const auto &[j, v] : b_rows[i])
           {
             B.set(i, j, v);
-            for (const auto &[l, w] : bt_rows[j])
-              c_rows[i][l] -= v * inverse_diagonal[j] * w;
+            for (auto entry = weight.begin(j); entry != weight.end(j); ++entry)
+              for (const auto &[l, w] : bt_rows[entry->column()])
+                c_rows[i][l] -= v * entry->value() * w;
           }
+      }
+    // LSC also applies K_u,mu and A (through K).
+    if (lsc)
+      {
+        dealii::DynamicSparsityPattern t_pattern(n_u, n_mu);
+        for (unsigned int j = 0; j < n_u; ++j)
+          for (const auto &[l, w] : bt_rows[j])
+            t_pattern.add(j, l);
+        transposed_pattern.copy_from(t_pattern);
+        Bt.reinit(transposed_pattern);
+        for (unsigned int j = 0; j < n_u; ++j)
+          for (const auto &[l, w] : bt_rows[j])
+            Bt.set(j, l, w);
+        full_in.reinit(n);
+        full_out.reinit(n);
+        t_mu.reinit(n_mu);
+        w_u.reinit(n_u);
+        z_u.reinit(n_u);
+      }
+    else
+      {
+        Bt.clear();
+        transposed_pattern.reinit(0, 0, 0);
+        full_in.reinit(0);
+        full_out.reinit(0);
+        t_mu.reinit(0);
+        w_u.reinit(0);
+        z_u.reinit(0);
       }
     dealii::DynamicSparsityPattern s_pattern(n_mu, n_mu);
     for (unsigned int i = 0; i < n_mu; ++i)
@@ -332,6 +488,25 @@ namespace GelMPM
     for (unsigned int i = 0; i < r_mu.size(); ++i)
       r_mu[i] = src[n_u + i] - r_mu[i];
     schur.vmult(y_mu, r_mu);
+    if (settings.schur == SchurApproximation::lsc)
+      {
+        // y_mu = L_C^{-1} (L_C + L - H) L_C^{-1} r_mu with L_C = C - L, L = B W^{-1} B^T',
+        // H = B W^{-1} A W^{-1} B^T': the first solve is above; here w = W^{-1} B^T' y_mu and
+        // t = L_C y_mu + B (w - W^{-1} A w), A w being the u rows of K [w; 0].
+        Bt.vmult(r_u, y_mu);
+        weight.vmult(w_u, r_u);
+        full_in = 0.;
+        for (unsigned int i = 0; i < n_u; ++i)
+          full_in[i] = w_u[i];
+        matrix->vmult(full_out, full_in);
+        for (unsigned int i = 0; i < n_u; ++i)
+          r_u[i] = full_out[i];
+        weight.vmult(z_u, r_u);
+        w_u -= z_u;
+        B.vmult(t_mu, w_u);
+        S.vmult_add(t_mu, y_mu);
+        schur.vmult(y_mu, t_mu);
+      }
     for (unsigned int i = 0; i < n_u; ++i)
       dst[i] = y_u[i];
     for (unsigned int i = 0; i < y_mu.size(); ++i)

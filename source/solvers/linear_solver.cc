@@ -88,6 +88,30 @@ namespace GelMPM
       "coarser level and on several MPI ranks. algebraic: smoothed aggregation "
       "(Trilinos ML) with the rigid-body modes. doc/performance.md, 'Iterative solver', has the "
       "iteration counts of both.");
+    prm.declare_entry("Schur complement",
+                      "LSC",
+                      dealii::Patterns::Selection("LSC|diagonal"),
+                      "Krylov: the approximation of the Schur complement S = C - B A^{-1} B^T' "
+                      "of mu (A = K_uu, B = K_mu,u, B^T' = K_u,mu, C = K_mu,mu), with a weight "
+                      "W ~ A and L_C = C - B W^{-1} B^T' (sparse, factorised). diagonal: "
+                      "S ~ L_C with W = |diag(A)|; its count grows with refinement in the "
+                      "undrained limit (dt -> 0; with A exact 35, 54, 77 iterations per solve "
+                      "on the three §4.1 grids of doc/performance.md). LSC (the default): the "
+                      "least-squares commutator, S^{-1} ~ L_C^{-1} (C - B W^{-1} A W^{-1} B^T') "
+                      "L_C^{-1} with W the block diagonal of A ('LSC block threshold'): the "
+                      "commutator's approximation of B A^{-1} B^T' for C -> 0, C^{-1} where C "
+                      "dominates (large dt). Undrained 9.6, 10.7, 13.2 on those grids, the same "
+                      "or fewer elsewhere, at one more solve with L_C and one product with K "
+                      "per iteration. On several MPI ranks: diagonal.");
+    prm.declare_entry("LSC block threshold",
+                      "0.7",
+                      dealii::Patterns::Double(0., 1.),
+                      "Krylov, LSC: the weight W is the block diagonal of A over the groups of "
+                      "displacement unknowns that A couples strongly, |a_ij| > threshold "
+                      "sqrt(|a_ii a_jj|) (in practice the normal components of the functions "
+                      "that the Nitsche penalty ties together on an immersed boundary), "
+                      "|diag(A)| elsewhere. 1: W = |diag(A)| everywhere, whose commutator fails "
+                      "at those boundaries (undrained 20, 26, 36 on the grids above).");
     prm.declare_entry("Multigrid smoother",
                       "cell blocks",
                       dealii::Patterns::Selection("cell blocks|point Gauss-Seidel"),
@@ -133,6 +157,9 @@ namespace GelMPM
     krylov_settings.max_iterations     = prm.get_integer("Krylov iterations");
     krylov_settings.restart            = prm.get_integer("Krylov restart");
     krylov_settings.geometric          = prm.get("Displacement preconditioner") == "geometric";
+    krylov_settings.schur              = prm.get("Schur complement") == "LSC"
+                                           ? BlockKrylov::SchurApproximation::lsc
+                                           : BlockKrylov::SchurApproximation::diagonal;
     krylov_settings.multigrid.smoothing_steps    = prm.get_integer("Multigrid smoothing steps");
     krylov_settings.multigrid.direct_coarse_size = prm.get_integer("Multigrid coarse size");
     krylov_settings.multigrid.w_cycle            = prm.get("Multigrid cycle") == "W";

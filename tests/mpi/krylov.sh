@@ -1,6 +1,7 @@
 # The iterative solver (Linear solver/Solver = Krylov) on two MPI ranks against one: GMRES on
 # distributed vectors, the distributed block preconditioner (ML on K_uu, the Schur approximation
-# formed by Trilinos' sparse products and factorised by MUMPS) and, on the column, the iterative
+# formed by Trilinos' sparse products and factorised by MUMPS; 'Schur complement = diagonal', the
+# one approximation built distributed) and, on the column, the iterative
 # drained criterion (LOBPCG on the distributed K_uu). Each scene runs on one rank and on two; the
 # statistics must agree to 1e-6 of each column's largest value (each linear solve reduces its
 # residual by 1e-8; Newton iterations within one), the drained eigenvalues to 1e-4 of their
@@ -29,7 +30,7 @@ compare_ranks() {
   "$mpiexec" -n 2 --oversubscribe "$gelmpm" "$source_dir/prm/$scene" \
     --set "Output/Directory=${name}_two" "${common[@]}" > "${name}_two.log" 2>&1
   check $? "$name on two ranks finished ($(grep -m1 'reached\|error\|failed' "${name}_two.log"))"
-  grep -q "Krylov iterations in .*displacement block by algebraic multigrid (several MPI ranks)" \
+  grep -q "Krylov iterations in .*displacement block by algebraic multigrid (several MPI ranks;" \
     "${name}_two.log"
   check $? "$name: two ranks solved by the distributed Krylov path"
   local drained="drained_eig_1,drained_eig_2,drained_eig_3"
