@@ -31,7 +31,7 @@ namespace GelMPM
                       "Solver for the Newton system: automatic (the default: MUMPS where MUMPS's "
                       "own estimate of its factorisation, from an analysis of the first tangent, "
                       "fits in 'Automatic memory share' of the memory available, Krylov "
-                      "otherwise; MUMPS on several MPI ranks. MUMPS was the faster at every size "
+                      "otherwise, also on several MPI ranks. MUMPS was the faster at every size "
                       "measured, Krylov the smaller in 3D: doc/performance.md, 'Iterative "
                       "solver'), MUMPS (sparse direct, multifrontal, fast "
                       "with an optimised BLAS such as OpenBLAS; LDL^T for the "
@@ -43,13 +43,15 @@ namespace GelMPM
                       "the algebraic multigrid; doc/performance.md, 'Iterative solver'). With "
                       "'Stability' on, the analysis factorises the tangent itself unless "
                       "'Stability/Eigensolver' is iterative.");
-    prm.declare_entry("Automatic memory share",
-                      "0.5",
-                      dealii::Patterns::Double(0., 1.),
-                      "automatic: the share of the memory available when the first tangent is "
-                      "factorised (Linux's MemAvailable) that MUMPS's estimate of its "
-                      "factorisation (LU: twice the LDL^T estimate) may take; beyond it the run "
-                      "solves by Krylov. The rest is for the points, the matrix and the output.");
+    prm.declare_entry(
+      "Automatic memory share",
+      "0.5",
+      dealii::Patterns::Double(0., 1.),
+      "automatic: the share of the memory available when the first tangent is "
+      "factorised (Linux's MemAvailable; on several MPI ranks the least of the "
+      "ranks' machines) that MUMPS's estimate of its factorisation (LU: twice "
+      "the LDL^T estimate; on several ranks all ranks' together) may take; "
+      "beyond it the run solves by Krylov. The rest is for the points, the matrix and the output.");
     prm.declare_entry("Ordering",
                       "fewest flops",
                       dealii::Patterns::Selection("fewest flops|nested dissection|MUMPS"),
@@ -201,17 +203,16 @@ namespace GelMPM
   LinearSolver::decide(const dealii::TrilinosWrappers::SparseMatrix &K) const
   {
     decided = true;
-    if (Collective::is_parallel(K.get_mpi_communicator()))
-      {
-        choice = "MUMPS on several MPI ranks";
-        return;
-      }
     // The analysis alone (ordering and symbolic factorisation) is cheap against the numeric
-    // factorisation; its estimate covers LDL^T, and LU keeps both triangles.
+    // factorisation; its estimate covers LDL^T, and LU keeps both triangles. On several ranks it
+    // is the estimate of all ranks together, and the memory is the least any rank's machine has
+    // available: exact when the ranks share one machine, on the safe side across machines, and
+    // the same decision on every rank.
     SymmetricFactorization analysis;
     analysis.set_ordering(ordering);
+    const MPI_Comm     comm      = K.get_mpi_communicator();
     const double       estimate  = (symmetric ? 1. : 2.) * analysis.estimated_memory(K);
-    const double       available = available_memory();
+    const double       available = dealii::Utilities::MPI::min(available_memory(), comm);
     const double       limit     = memory_share * available;
     std::ostringstream why;
     why.precision(3);

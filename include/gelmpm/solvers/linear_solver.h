@@ -43,8 +43,9 @@ namespace GelMPM
    *
    * "automatic" (the default) decides at the first factorisation: MUMPS, unless MUMPS's own
    * estimate of its factorisation (SymmetricFactorization::estimated_memory(), doubled for LU)
-   * exceeds 'Automatic memory share' of the memory available, then Krylov; MUMPS on several
-   * ranks. Until then may_iterate() is true, so the caller keeps the block structure set.
+   * exceeds 'Automatic memory share' of the memory available, then Krylov (on several ranks: all
+   * ranks' estimate against the least memory available on any rank's machine). Until then
+   * may_iterate() is true, so the caller keeps the block structure set.
    */
   class LinearSolver
   {
