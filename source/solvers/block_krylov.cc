@@ -58,6 +58,29 @@ namespace GelMPM
 
 
     /**
+     * Fill @p matrix (and its @p pattern) of @p n_columns columns from @p rows, each a list of
+     * (column, value) pairs.
+     */
+    template <typename Rows>
+    void
+    copy_rows(const Rows                   &rows,
+              const unsigned int            n_columns,
+              dealii::SparsityPattern      &pattern,
+              dealii::SparseMatrix<double> &matrix)
+    {
+      dealii::DynamicSparsityPattern dynamic(rows.size(), n_columns);
+      for (unsigned int i = 0; i < rows.size(); ++i)
+        for (const auto &[j, v] : rows[i])
+          dynamic.add(i, j);
+      pattern.copy_from(dynamic);
+      matrix.reinit(pattern);
+      for (unsigned int i = 0; i < rows.size(); ++i)
+        for (const auto &[j, v] : rows[i])
+          matrix.set(i, j, v);
+    }
+
+
+    /**
      * The weight W of LSC: W^{-1} is the inverse of A's diagonal blocks over the groups of
      * displacement unknowns that A couples strongly, |a_ij| > threshold sqrt(|a_ii a_jj|) (the
      * connected components of that graph, as an AMG's strong connections), |a_ii|^{-1} for the
@@ -360,7 +383,6 @@ namespace GelMPM
 
     // The coupling blocks and A's diagonal, from the rows of K (each stored entry is visited
     // once); A itself and its multigrid are DisplacementBlockAMG's or BSplineMultigrid's.
-    dealii::DynamicSparsityPattern                            b_pattern(n_mu, n_u);
     std::vector<std::vector<std::pair<unsigned int, double>>> b_rows(n_mu), bt_rows(n_u);
     std::vector<std::map<unsigned int, double>>               c_rows(n_mu);
     inverse_diagonal.reinit(n_u);
@@ -405,33 +427,16 @@ namespace GelMPM
 
     // The coupling B = K_mu,u and L_C = C - B W^{-1} K_u,mu: the approximate Schur complement of
     // 'diagonal', the outer factor of LSC's.
+    copy_rows(b_rows, n_u, coupling_pattern, B);
     for (unsigned int i = 0; i < n_mu; ++i)
       for (const auto &[j, v] : b_rows[i])
-        b_pattern.add(i, j);
-    coupling_pattern.copy_from(b_pattern);
-    B.reinit(coupling_pattern);
-    for (unsigned int i = 0; i < n_mu; ++i)
-      {
-        for (const auto &[j, v] : b_rows[i])
-          {
-            B.set(i, j, v);
-            for (auto entry = weight.begin(j); entry != weight.end(j); ++entry)
-              for (const auto &[l, w] : bt_rows[entry->column()])
-                c_rows[i][l] -= v * entry->value() * w;
-          }
-      }
+        for (auto entry = weight.begin(j); entry != weight.end(j); ++entry)
+          for (const auto &[l, w] : bt_rows[entry->column()])
+            c_rows[i][l] -= v * entry->value() * w;
     // LSC also applies K_u,mu and A (through K).
     if (lsc)
       {
-        dealii::DynamicSparsityPattern t_pattern(n_u, n_mu);
-        for (unsigned int j = 0; j < n_u; ++j)
-          for (const auto &[l, w] : bt_rows[j])
-            t_pattern.add(j, l);
-        transposed_pattern.copy_from(t_pattern);
-        Bt.reinit(transposed_pattern);
-        for (unsigned int j = 0; j < n_u; ++j)
-          for (const auto &[l, w] : bt_rows[j])
-            Bt.set(j, l, w);
+        copy_rows(bt_rows, n_mu, transposed_pattern, Bt);
         full_in.reinit(n);
         full_out.reinit(n);
         t_mu.reinit(n_mu);
@@ -448,15 +453,7 @@ namespace GelMPM
         w_u.reinit(0);
         z_u.reinit(0);
       }
-    dealii::DynamicSparsityPattern s_pattern(n_mu, n_mu);
-    for (unsigned int i = 0; i < n_mu; ++i)
-      for (const auto &[j, v] : c_rows[i])
-        s_pattern.add(i, j);
-    schur_pattern.copy_from(s_pattern);
-    S.reinit(schur_pattern);
-    for (unsigned int i = 0; i < n_mu; ++i)
-      for (const auto &[j, v] : c_rows[i])
-        S.set(i, j, v);
+    copy_rows(c_rows, n_mu, schur_pattern, S);
     try
       {
         schur.initialize(S);
