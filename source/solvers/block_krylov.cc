@@ -4,6 +4,7 @@
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
 
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numeric>
 #include <sstream>
 #include <stdexcept>
 
@@ -80,10 +82,133 @@ namespace GelMPM
     }
 
 
+    /** The rows of the blocks B, B^T', C of the tangent, and 1 / |diag(A)|. */
+    struct BlockRows
+    {
+      std::vector<std::vector<std::pair<unsigned int, double>>> b, bt;
+      std::vector<std::map<unsigned int, double>>               c;
+      dealii::Vector<double>                                    inverse_diagonal;
+    };
+
+    /**
+     * Read the blocks of @p K (@p n_u displacement unknowns first) from its rows, each stored
+     * entry once. Throws std::runtime_error if a diagonal entry of A is zero or not finite.
+     */
+    BlockRows
+    read_blocks(const dealii::TrilinosWrappers::SparseMatrix &K, const unsigned int n_u)
+    {
+      const unsigned int n = K.m(), n_mu = n - n_u;
+      BlockRows          blocks;
+      blocks.b.resize(n_mu);
+      blocks.bt.resize(n_u);
+      blocks.c.resize(n_mu);
+      blocks.inverse_diagonal.reinit(n_u);
+      auto &d = blocks.inverse_diagonal;
+      for_each_entry(K, n, [&](const unsigned int i, const unsigned int j, const double v) {
+        if (i < n_u && j < n_u)
+          {
+            if (i == j)
+              d[i] = v;
+          }
+        else if (i < n_u)
+          blocks.bt[i].emplace_back(j - n_u, v);
+        else if (j < n_u)
+          blocks.b[i - n_u].emplace_back(j, v);
+        else
+          blocks.c[i - n_u][j - n_u] += v;
+      });
+      // K_uu is not an M-matrix: a diagonal entry can be negative (measured on the cube at 34^3
+      // cells after the cut cells changed), where the Nitsche terms or the geometric stiffness
+      // outweigh the rest. The Schur approximation only needs a scale per row: its magnitude.
+      for (unsigned int i = 0; i < n_u; ++i)
+        {
+          if (!(std::abs(d[i]) > 0.) || !std::isfinite(d[i]))
+            throw std::runtime_error("the iterative solver's preconditioner needs a nonzero "
+                                     "diagonal in the displacement block (row " +
+                                     std::to_string(i) + ")");
+          d[i] = 1. / std::abs(d[i]);
+        }
+      return blocks;
+    }
+
+
+    /**
+     * The groups of displacement unknowns that A couples strongly, |a_ij| > @p threshold
+     * sqrt(|a_ii a_jj|) (@p inverse_diagonal = 1 / |a_ii|): the connected components of that
+     * graph, as an AMG's strong connections. Each unknown's group and place in it, and each
+     * group's members.
+     */
+    struct CoupledGroups
+    {
+      std::vector<unsigned int>              group, place;
+      std::vector<std::vector<unsigned int>> members;
+    };
+
+    CoupledGroups
+    strongly_coupled_groups(const dealii::TrilinosWrappers::SparseMatrix &K,
+                            const unsigned int                            n_u,
+                            const dealii::Vector<double>                 &inverse_diagonal,
+                            const double                                  threshold)
+    {
+      std::vector<unsigned int> parent(n_u);
+      std::iota(parent.begin(), parent.end(), 0u);
+      const auto root = [&](unsigned int i) {
+        while (parent[i] != i)
+          i = parent[i] = parent[parent[i]];
+        return i;
+      };
+      if (threshold < 1.)
+        for_each_entry(K, n_u, [&](const unsigned int i, const unsigned int j, const double v) {
+          if (j < n_u && i != j &&
+              v * v * inverse_diagonal[i] * inverse_diagonal[j] > threshold * threshold)
+            {
+              const unsigned int a = root(i), b = root(j);
+              if (a != b)
+                parent[std::max(a, b)] = std::min(a, b);
+            }
+        });
+      CoupledGroups                        groups;
+      std::map<unsigned int, unsigned int> group_of_root;
+      groups.group.resize(n_u);
+      groups.place.resize(n_u);
+      for (unsigned int i = 0; i < n_u; ++i)
+        {
+          const auto [it, added] = group_of_root.emplace(root(i), groups.members.size());
+          if (added)
+            groups.members.emplace_back();
+          groups.group[i] = it->second;
+          groups.place[i] = groups.members[it->second].size();
+          groups.members[it->second].push_back(i);
+        }
+      return groups;
+    }
+
+
+    /** Whether the symmetric part of @p block is positive definite (LAPACK's Cholesky). */
+    bool
+    symmetric_part_is_definite(const dealii::FullMatrix<double> &block)
+    {
+      const unsigned int               m = block.m();
+      dealii::LAPACKFullMatrix<double> symmetric(m, m);
+      for (unsigned int a = 0; a < m; ++a)
+        for (unsigned int b = 0; b < m; ++b)
+          symmetric(a, b) = 0.5 * (block(a, b) + block(b, a));
+      symmetric.set_property(dealii::LAPACKSupport::symmetric);
+      try
+        {
+          symmetric.compute_cholesky_factorization();
+        }
+      catch (const std::exception &)
+        {
+          return false;
+        }
+      return true;
+    }
+
+
     /**
      * The weight W of LSC: W^{-1} is the inverse of A's diagonal blocks over the groups of
-     * displacement unknowns that A couples strongly, |a_ij| > threshold sqrt(|a_ii a_jj|) (the
-     * connected components of that graph, as an AMG's strong connections), |a_ii|^{-1} for the
+     * strongly coupled displacement unknowns (strongly_coupled_groups()), |a_ii|^{-1} for the
      * others. With Nitsche's penalty (gamma / h times a boundary mass matrix) the u_n rows of the
      * functions nonzero on an immersed boundary are coupled almost as a rank-one block: its
      * diagonal overestimates A a hundredfold on the combinations whose trace vanishes, and the
@@ -100,39 +225,10 @@ namespace GelMPM
                  dealii::SparseMatrix<double>                 &weight)
     {
       weight.clear();
-      constexpr unsigned int    max_block = 64;
-      std::vector<unsigned int> parent(n_u);
-      for (unsigned int i = 0; i < n_u; ++i)
-        parent[i] = i;
-      const auto root = [&](unsigned int i) {
-        while (parent[i] != i)
-          i = parent[i] = parent[parent[i]];
-        return i;
-      };
-      if (threshold < 1.)
-        for_each_entry(K, n_u, [&](const unsigned int i, const unsigned int j, const double v) {
-          // inverse_diagonal = 1 / |a_ii|.
-          if (j < n_u && i != j &&
-              v * v * inverse_diagonal[i] * inverse_diagonal[j] > threshold * threshold)
-            {
-              const unsigned int a = root(i), b = root(j);
-              if (a != b)
-                parent[std::max(a, b)] = std::min(a, b);
-            }
-        });
-      // The groups, each with its members' places.
-      std::vector<unsigned int>              group(n_u), place(n_u);
-      std::vector<std::vector<unsigned int>> members;
-      std::map<unsigned int, unsigned int>   group_of_root;
-      for (unsigned int i = 0; i < n_u; ++i)
-        {
-          const auto [it, added] = group_of_root.emplace(root(i), members.size());
-          if (added)
-            members.emplace_back();
-          group[i] = it->second;
-          place[i] = members[it->second].size();
-          members[it->second].push_back(i);
-        }
+      constexpr unsigned int max_block = 64;
+      const CoupledGroups    groups  = strongly_coupled_groups(K, n_u, inverse_diagonal, threshold);
+      const auto            &members = groups.members;
+      const auto            &group   = groups.group;
       std::vector<dealii::FullMatrix<double>> blocks(members.size());
       for (unsigned int g = 0; g < members.size(); ++g)
         if (members[g].size() > 1 && members[g].size() <= max_block)
@@ -140,57 +236,28 @@ namespace GelMPM
       if (threshold < 1.)
         for_each_entry(K, n_u, [&](const unsigned int i, const unsigned int j, const double v) {
           if (j < n_u && group[i] == group[j] && !blocks[group[i]].empty())
-            blocks[group[i]](place[i], place[j]) = v;
+            blocks[group[i]](groups.place[i], groups.place[j]) = v;
         });
       unsigned int largest = 1;
-      for (unsigned int g = 0; g < members.size(); ++g)
-        if (!blocks[g].empty())
+      for (auto &block : blocks)
+        if (!block.empty())
           {
-            // Cholesky of the symmetric part: is it positive definite?
-            const unsigned int         m = members[g].size();
-            dealii::FullMatrix<double> factor(m, m);
-            bool                       definite = true;
-            for (unsigned int a = 0; a < m && definite; ++a)
-              for (unsigned int b = 0; b <= a; ++b)
-                {
-                  double sum = 0.5 * (blocks[g](a, b) + blocks[g](b, a));
-                  for (unsigned int c = 0; c < b; ++c)
-                    sum -= factor(a, c) * factor(b, c);
-                  if (a == b)
-                    {
-                      if (!(sum > 0.))
-                        {
-                          definite = false;
-                          break;
-                        }
-                      factor(a, a) = std::sqrt(sum);
-                    }
-                  else
-                    factor(a, b) = sum / factor(b, b);
-                }
-            if (definite)
+            if (symmetric_part_is_definite(block))
               {
-                blocks[g].gauss_jordan();
-                largest = std::max(largest, m);
+                block.gauss_jordan();
+                largest = std::max<unsigned int>(largest, block.m());
               }
             else
-              blocks[g].reinit(0, 0);
+              block.reinit(0, 0);
           }
-      dealii::DynamicSparsityPattern w_pattern(n_u, n_u);
+      std::vector<std::vector<std::pair<unsigned int, double>>> rows(n_u);
       for (unsigned int i = 0; i < n_u; ++i)
         if (blocks[group[i]].empty())
-          w_pattern.add(i, i);
+          rows[i].emplace_back(i, inverse_diagonal[i]);
         else
           for (const unsigned int j : members[group[i]])
-            w_pattern.add(i, j);
-      pattern.copy_from(w_pattern);
-      weight.reinit(pattern);
-      for (unsigned int i = 0; i < n_u; ++i)
-        if (blocks[group[i]].empty())
-          weight.set(i, i, inverse_diagonal[i]);
-        else
-          for (const unsigned int j : members[group[i]])
-            weight.set(i, j, blocks[group[i]](place[i], place[j]));
+            rows[i].emplace_back(j, blocks[group[i]](groups.place[i], groups.place[j]));
+      copy_rows(rows, n_u, pattern, weight);
       return largest;
     }
   } // namespace
@@ -381,36 +448,10 @@ namespace GelMPM
         return;
       }
 
-    // The coupling blocks and A's diagonal, from the rows of K (each stored entry is visited
-    // once); A itself and its multigrid are DisplacementBlockAMG's or BSplineMultigrid's.
-    std::vector<std::vector<std::pair<unsigned int, double>>> b_rows(n_mu), bt_rows(n_u);
-    std::vector<std::map<unsigned int, double>>               c_rows(n_mu);
-    inverse_diagonal.reinit(n_u);
-    for_each_entry(K, n, [&](const unsigned int i, const unsigned int j, const double v) {
-      if (i < n_u && j < n_u)
-        {
-          if (i == j)
-            inverse_diagonal[i] = v;
-        }
-      else if (i < n_u)
-        bt_rows[i].emplace_back(j - n_u, v);
-      else if (j < n_u)
-        b_rows[i - n_u].emplace_back(j, v);
-      else
-        c_rows[i - n_u][j - n_u] += v;
-    });
-    // K_uu is not an M-matrix: a diagonal entry can be negative (measured on the cube at 34^3
-    // cells after the cut cells changed), where the Nitsche terms or the geometric stiffness
-    // outweigh the rest. The Schur approximation only needs a scale per row: its magnitude.
-    for (unsigned int i = 0; i < n_u; ++i)
-      {
-        if (!(std::abs(inverse_diagonal[i]) > 0.) || !std::isfinite(inverse_diagonal[i]))
-          throw std::runtime_error("the iterative solver's preconditioner needs a nonzero "
-                                   "diagonal in the displacement block (row " +
-                                   std::to_string(i) + ")");
-        inverse_diagonal[i] = 1. / std::abs(inverse_diagonal[i]);
-      }
-    use_geometric = new_settings.geometric && !levels.empty();
+    // A itself and its multigrid are DisplacementBlockAMG's or BSplineMultigrid's.
+    auto [b_rows, bt_rows, c_rows, diagonal] = read_blocks(K, n_u);
+    inverse_diagonal                         = std::move(diagonal);
+    use_geometric                            = new_settings.geometric && !levels.empty();
     if (use_geometric)
       geometric_multigrid.setup(K, n_u, dim, levels, settings.multigrid);
     else
