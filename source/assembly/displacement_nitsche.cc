@@ -1,6 +1,10 @@
 #include <gelmpm/assembly/axisymmetric_terms.h>
 #include <gelmpm/assembly/displacement_nitsche.h>
 
+#include <deal.II/lac/lapack_templates.h>
+
+#include <algorithm>
+
 namespace GelMPM
 {
   using dealii::Tensor;
@@ -46,6 +50,124 @@ namespace GelMPM
 
       return W;
     }
+
+    /**
+     * The displacement-displacement part of the closed-form tangent (add_closed_form_tangent())
+     * as factors into the block's batch: with I = (a, k), J = (c, m), and the vectors
+     * H_I = h_a[k], PN_I = p_a n[k], NPn_I = N_a (Pi n)_k, NE^j_I = N_a delta_jk,
+     * SE^j_I = (S N . G_a) delta_jk, NN_I = N_a n[k], PiH_I = (Pi h_a)_k,
+     *   K_IJ += sum x_I C_xy y_J        over x, y in (H, PN, NPn, NE^j, SE^j)   (straight)
+     *   K_(a,k),(c,m) += sum x_(a,m) C'_xy y_(c,k)  over x, y in (H, PN, NN, PiH)  (crossed),
+     * the same terms as the pair loop, each a product of a row factor and a column factor.
+     */
+    template <int dim>
+    void
+    gather_block_factors(const PointRecord<dim>                          &point,
+                         const typename FloryRehnerGel<dim>::Incremental &state,
+                         const Tensor<2, dim>                            &Pi,
+                         const Tensor<1, dim>                            &g,
+                         const double                                     beta,
+                         const double                                     sym,
+                         AssemblyScratch<dim>                            &s)
+    {
+      constexpr unsigned int r_s = 3 + 2 * dim, r_x = 4;
+      enum : unsigned int
+      {
+        H  = 0,
+        PN = 1,
+        NP = 2,
+        NE = 3,
+        SE = 3 + dim
+      };
+      enum : unsigned int
+      {
+        xH   = 0,
+        xPN  = 1,
+        xNN  = 2,
+        xPiH = 3
+      };
+      auto              &B   = s.nitsche_batch;
+      const unsigned int n_u = s.n_u, U = dim * n_u;
+      const std::size_t  first_s = B.n_straight, first_x = B.n_crossed;
+      B.n_straight += r_s;
+      B.n_crossed += r_x;
+      B.symmetric = B.symmetric && sym == 1. && Pi == dealii::transpose(Pi);
+      for (auto *v : {&B.Y, &B.Z})
+        if (v->size() < std::size_t(U) * B.n_straight)
+          v->resize(std::size_t(U) * 2 * B.n_straight);
+      for (auto *v : {&B.Yx, &B.Zx})
+        if (v->size() < std::size_t(U) * B.n_crossed)
+          v->resize(std::size_t(U) * 2 * B.n_crossed);
+
+      double *const Y  = &B.Y[U * first_s];
+      double *const Yx = &B.Yx[U * first_x];
+      std::fill(Y, Y + U * r_s, 0.);
+      const auto          &D    = state.dFit;
+      const auto          &N    = point.normal;
+      const Tensor<1, dim> n    = D * N;
+      const Tensor<1, dim> SN   = state.S * N;
+      const Tensor<1, dim> Pi_n = Pi * n;
+      for (unsigned int a = 0; a < n_u; ++a)
+        {
+          const Tensor<1, dim> h    = D * s.G[a];
+          const Tensor<1, dim> Pi_h = Pi * h;
+          const double         p    = g * h;
+          const double         Na   = s.N[a];
+          for (unsigned int k = 0; k < dim; ++k)
+            {
+              const unsigned int I = dim * a + k;
+              Y[I + U * H]         = h[k];
+              Y[I + U * PN]        = p * n[k];
+              Y[I + U * NP]        = Na * Pi_n[k];
+              Y[I + U * (NE + k)]  = Na;
+              Y[I + U * (SE + k)]  = SN * s.G[a];
+              Yx[I + U * xH]       = h[k];
+              Yx[I + U * xPN]      = p * n[k];
+              Yx[I + U * xNN]      = Na * n[k];
+              Yx[I + U * xPiH]     = Pi_h[k];
+            }
+        }
+
+      // C[x][y]: the coefficient of (row factor x) (column factor y), from the pair loop of
+      // add_closed_form_tangent(): K = beta A N N Pi - X - (t1 + s t2).
+      const double A = point.measure, w = g * n;
+      const double as = A * sym * state.a, bs = A * sym * state.b, cs = A * sym * state.c;
+      const double aA = A * state.a, bA = A * state.b;
+      double       C[r_s][r_s] = {}, Cx[r_x][r_x] = {};
+      C[H][H]  = -cs * w;
+      C[PN][H] = bs;
+      C[H][PN] = bs;
+      C[NP][H] = -bA;
+      C[H][NP] = -sym * bA;
+      for (unsigned int j = 0; j < dim; ++j)
+        for (unsigned int l = 0; l < dim; ++l)
+          {
+            C[NE + j][NE + l] = beta * A * Pi[j][l];
+            C[NE + j][SE + l] = -A * Pi[j][l];
+            C[SE + j][NE + l] = -sym * A * Pi[l][j];
+          }
+      Cx[xH][xH]    = bs * w;
+      Cx[xH][xPN]   = as;
+      Cx[xPN][xH]   = as;
+      Cx[xNN][xPiH] = -aA;
+      Cx[xPiH][xNN] = -sym * aA;
+
+      // Z[:, y] = sum_x Y[:, x] C[x][y]: the column factors' partners.
+      const auto combine = [U](const double *Y_, double *Z_, const auto &C_, const unsigned int r) {
+        for (unsigned int y = 0; y < r; ++y)
+          {
+            double *const z = Z_ + U * y;
+            std::fill(z, z + U, 0.);
+            for (unsigned int x = 0; x < r; ++x)
+              if (C_[x][y] != 0.)
+                for (unsigned int I = 0; I < U; ++I)
+                  z[I] += C_[x][y] * Y_[I + U * x];
+          }
+      };
+      combine(Y, &B.Z[U * first_s], C, r_s);
+      combine(Yx, &B.Zx[U * first_x], Cx, r_x);
+    }
+
 
     /** The tangent of add_displacement_nitsche() at the gel state @p state, in closed form. */
     template <int dim>
@@ -130,35 +252,38 @@ namespace GelMPM
         }
 
       const double beta_area = area * beta;
-      for (unsigned int a = 0; a < n_u; ++a)
-        {
-          const double *const fa  = work + stride * a;
-          const double        Na  = s.N[a];
-          const double        apa = as * fa[p_];
-          for (unsigned int c = 0; c <= a; ++c)
-            {
-              const double *const fc  = work + stride * c;
-              const double        Nc  = s.N[c];
-              const double        bNN = beta_area * Na * Nc;
-              const double        bpc = bs * fc[p_];
-              double              z[dim];
-              for (unsigned int k = 0; k < dim; ++k)
-                z[k] = -apa * fc[k] - bpc * fa[k];
-              for (unsigned int k = 0; k < dim; ++k)
-                {
-                  double *const row = &K(dim * a + k, dim * c);
-                  for (unsigned int m = 0; m < (c == a ? k + 1 : dim); ++m)
-                    {
-                      const double X  = fa[m] * fc[u_ + k] + fa[v_ + k] * fc[m] + n[m] * z[k];
-                      const double t1 = Na * fc[CG_ + dim * k + m];
-                      const double t2 = Nc * fa[CG_ + dim * m + k];
-                      row[m] += bNN * Pi[k][m] - X - (t1 + sym * t2);
-                      if (c != a || m != k)
-                        K(dim * c + m, dim * a + k) += bNN * Pi[m][k] - X - (t2 + sym * t1);
-                    }
-                }
-            }
-        }
+      if (s.nitsche_batch.open)
+        gather_block_factors(point, state, Pi, g, beta, symmetry, s);
+      else
+        for (unsigned int a = 0; a < n_u; ++a)
+          {
+            const double *const fa  = work + stride * a;
+            const double        Na  = s.N[a];
+            const double        apa = as * fa[p_];
+            for (unsigned int c = 0; c <= a; ++c)
+              {
+                const double *const fc  = work + stride * c;
+                const double        Nc  = s.N[c];
+                const double        bNN = beta_area * Na * Nc;
+                const double        bpc = bs * fc[p_];
+                double              z[dim];
+                for (unsigned int k = 0; k < dim; ++k)
+                  z[k] = -apa * fc[k] - bpc * fa[k];
+                for (unsigned int k = 0; k < dim; ++k)
+                  {
+                    double *const row = &K(dim * a + k, dim * c);
+                    for (unsigned int m = 0; m < (c == a ? k + 1 : dim); ++m)
+                      {
+                        const double X  = fa[m] * fc[u_ + k] + fa[v_ + k] * fc[m] + n[m] * z[k];
+                        const double t1 = Na * fc[CG_ + dim * k + m];
+                        const double t2 = Nc * fa[CG_ + dim * m + k];
+                        row[m] += bNN * Pi[k][m] - X - (t1 + sym * t2);
+                        if (c != a || m != k)
+                          K(dim * c + m, dim * a + k) += bNN * Pi[m][k] - X - (t2 + sym * t1);
+                      }
+                  }
+              }
+          }
 
       const Tensor<1, dim> Pi_dPdmu_N = Pi * (state.dP_n_dmu * N);
       for (unsigned int a = 0; a < n_u; ++a)
@@ -315,6 +440,89 @@ namespace GelMPM
 
   template <int dim>
   void
+  start_displacement_nitsche_block(AssemblyScratch<dim> &s, const bool batched)
+  {
+    auto &B      = s.nitsche_batch;
+    B.open       = batched;
+    B.symmetric  = true;
+    B.n_straight = 0;
+    B.n_crossed  = 0;
+  }
+
+
+  template <int dim>
+  void
+  add_displacement_nitsche_block(AssemblyScratch<dim> &s, AssemblyCopy &copy)
+  {
+    auto &B = s.nitsche_batch;
+    B.open  = false;
+    if (B.n_straight == 0)
+      return;
+    using dealii::types::blas_int;
+    const unsigned int n_u = s.n_u, U = dim * n_u;
+    const blas_int     m = U, k_s = B.n_straight, k_x = B.n_crossed;
+    const double       one = 1., zero = 0.;
+    for (auto *v : {&B.straight, &B.crossed})
+      if (v->size() < std::size_t(U) * U)
+        v->resize(std::size_t(U) * U);
+    // straight[J + U I] = sum_x,y Y[I, x] C_xy Y[J, y] = sum_r Y[J, r] Z[I, r]: row I is
+    // contiguous; likewise crossed[(c, k) + U (a, m)].
+    dealii::gemm("N",
+                 "T",
+                 &m,
+                 &m,
+                 &k_s,
+                 &one,
+                 B.Y.data(),
+                 &m,
+                 B.Z.data(),
+                 &m,
+                 &zero,
+                 B.straight.data(),
+                 &m);
+    dealii::gemm("N",
+                 "T",
+                 &m,
+                 &m,
+                 &k_x,
+                 &one,
+                 B.Yx.data(),
+                 &m,
+                 B.Zx.data(),
+                 &m,
+                 &zero,
+                 B.crossed.data(),
+                 &m);
+    const auto entry = [&](const unsigned int I, const unsigned int J) {
+      const unsigned int a = I / dim, k = I % dim, c = J / dim, m_ = J % dim;
+      return B.straight[J + std::size_t(U) * I] +
+             B.crossed[dim * c + k + std::size_t(U) * (dim * a + m_)];
+    };
+    if (B.symmetric)
+      // Every point's tangent is symmetric, the products only to round-off: their mean keeps
+      // the symmetric variant's tangent as symmetric as the volume points leave it.
+      for (unsigned int I = 0; I < U; ++I)
+        for (unsigned int J = 0; J <= I; ++J)
+          {
+            const double value = (I == J ? entry(I, I) : 0.5 * (entry(I, J) + entry(J, I)));
+            copy.matrix(I, J) += value;
+            if (J != I)
+              copy.matrix(J, I) += value;
+          }
+    else
+      for (unsigned int I = 0; I < U; ++I)
+        {
+          double *const row = &copy.matrix(I, 0);
+          for (unsigned int J = 0; J < U; ++J)
+            row[J] += entry(I, J);
+        }
+    B.n_straight = 0;
+    B.n_crossed  = 0;
+  }
+
+
+  template <int dim>
+  void
   DisplacementNitscheAssembler<dim>::assemble(const PointRecord<dim> &point,
                                               const double /*dt*/,
                                               const bool            with_matrix,
@@ -339,24 +547,26 @@ namespace GelMPM
   }
 
 
-#define GELMPM_INSTANTIATE(dim)                                              \
-  template void add_displacement_nitsche(const PointRecord<dim> &,           \
-                                         const Tensor<2, dim> &,             \
-                                         const Tensor<1, dim> &,             \
-                                         double,                             \
-                                         double,                             \
-                                         bool,                               \
-                                         AssemblyScratch<dim> &,             \
-                                         AssemblyCopy &,                     \
-                                         bool);                              \
-  template void add_displacement_nitsche_reference(const PointRecord<dim> &, \
-                                                   const Tensor<2, dim> &,   \
-                                                   const Tensor<1, dim> &,   \
-                                                   double,                   \
-                                                   double,                   \
-                                                   bool,                     \
-                                                   AssemblyScratch<dim> &,   \
-                                                   AssemblyCopy &);          \
+#define GELMPM_INSTANTIATE(dim)                                                         \
+  template void add_displacement_nitsche(const PointRecord<dim> &,                      \
+                                         const Tensor<2, dim> &,                        \
+                                         const Tensor<1, dim> &,                        \
+                                         double,                                        \
+                                         double,                                        \
+                                         bool,                                          \
+                                         AssemblyScratch<dim> &,                        \
+                                         AssemblyCopy &,                                \
+                                         bool);                                         \
+  template void add_displacement_nitsche_reference(const PointRecord<dim> &,            \
+                                                   const Tensor<2, dim> &,              \
+                                                   const Tensor<1, dim> &,              \
+                                                   double,                              \
+                                                   double,                              \
+                                                   bool,                                \
+                                                   AssemblyScratch<dim> &,              \
+                                                   AssemblyCopy &);                     \
+  template void start_displacement_nitsche_block(AssemblyScratch<dim> &, bool);         \
+  template void add_displacement_nitsche_block(AssemblyScratch<dim> &, AssemblyCopy &); \
   template class DisplacementNitscheAssembler<dim>;
   GELMPM_INSTANTIATE(2)
   GELMPM_INSTANTIATE(3)

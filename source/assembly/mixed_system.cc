@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
@@ -222,6 +223,40 @@ namespace GelMPM
 
 
   template <int dim>
+  std::vector<unsigned int>
+  MixedSystem<dim>::assembly_order() const
+  {
+    const auto               &blocks = cache.blocks();
+    std::vector<unsigned int> order(blocks.size());
+    std::iota(order.begin(), order.end(), 0u);
+    if (dim < 3)
+      return order;
+    // In 3D a block's rows of the tangent are long (about 400 entries) and the matrix far
+    // exceeds the cache: in the cells' lexicographic order a row comes back only a plane of
+    // cells later. The Z-order of the cells (their indices' bits interleaved) keeps the blocks
+    // that share rows close in time; the copier adds in this order on any number of threads,
+    // so the sums stay deterministic.
+    const auto           &n_cells = spaces_.u_space().n_cells_per_direction();
+    std::vector<uint64_t> key(blocks.size());
+    for (unsigned int b = 0; b < blocks.size(); ++b)
+      {
+        unsigned int c = blocks[b].u_cell;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const unsigned int x = c % n_cells[d];
+            c /= n_cells[d];
+            for (unsigned int bit = 0; bit < 21; ++bit)
+              key[b] |= uint64_t((x >> bit) & 1u) << (dim * bit + d);
+          }
+      }
+    std::sort(order.begin(), order.end(), [&key](const unsigned int a, const unsigned int b) {
+      return key[a] < key[b];
+    });
+    return order;
+  }
+
+
+  template <int dim>
   void
   MixedSystem<dim>::assemble(const dealii::Vector<double> &solution,
                              const double                  dt,
@@ -231,12 +266,10 @@ namespace GelMPM
       matrix_ = 0.;
     residual_ = 0.;
 
-    const auto               &blocks = cache.blocks();
-    std::vector<unsigned int> block_indices(blocks.size());
-    std::iota(block_indices.begin(), block_indices.end(), 0u);
-
-    bool        failed = false;
-    std::string failure;
+    const auto               &blocks        = cache.blocks();
+    std::vector<unsigned int> block_indices = assembly_order();
+    bool                      failed        = false;
+    std::string               failure;
     dealii::WorkStream::run(
       block_indices.begin(),
       block_indices.end(),
@@ -465,8 +498,11 @@ namespace GelMPM
     scratch.gather_block_coefficients(block, spaces_, solution);
     if (with_matrix)
       {
-        scratch.volume_lower.reinit(n, n);
+        // Batched (3D), every term adds both triangles to the copy.
+        if (!volume_term.batched())
+          scratch.volume_lower.reinit(n, n);
         volume_term.start_block(scratch, block.end - block.first);
+        start_displacement_nitsche_block(scratch, volume_term.batched());
       }
 
     unsigned int failed_point = block.first;
@@ -486,8 +522,11 @@ namespace GelMPM
               add_surface_point(point, dt, with_matrix, scratch, copy);
           }
         if (with_matrix)
-          volume_term.add_block_tangent(scratch, copy);
-        if (with_matrix)
+          {
+            volume_term.add_block_tangent(scratch, copy);
+            add_displacement_nitsche_block(scratch, copy);
+          }
+        if (with_matrix && !volume_term.batched())
           for (unsigned int r = 0; r < n; ++r)
             for (unsigned int c = 0; c <= r; ++c)
               {

@@ -41,6 +41,23 @@ namespace GelMPM
 
 
   /**
+   * Starts a block whose displacement Nitsche tangents add_displacement_nitsche() gathers as
+   * factors (with @p batched; otherwise each point adds its tangent at once), to be added by
+   * add_displacement_nitsche_block().
+   */
+  template <int dim>
+  void
+  start_displacement_nitsche_block(AssemblyScratch<dim> &scratch, const bool batched);
+  /**
+   * Adds the displacement-displacement part of the gathered Nitsche tangents of the block to
+   * @p copy (both triangles, as VolumeTermAssembler::add_block_tangent() does) and closes the
+   * block: two dgemm, of which the inner dimension is 3 + 2 dim resp. 4 per point, instead of
+   * the closed form's loop over the pairs of functions of every point.
+   */
+  template <int dim>
+  void
+  add_displacement_nitsche_block(AssemblyScratch<dim> &scratch, AssemblyCopy &copy);
+  /**
    * add_displacement_nitsche() with the third-derivative term of the tangent by a central
    * difference of A_n along W (two more evaluations of the gel, step 1e-5 / |W|, symmetrised;
    * about 1e-9 accurate) and d(W : dP_n/dmu)/d(dF) by a difference in mu (exact, P_n is affine

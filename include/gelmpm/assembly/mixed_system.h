@@ -332,6 +332,10 @@ namespace GelMPM
     void
     add_to_matrix(const AssemblyCopy &copy);
 
+    /** The order in which assemble() visits the blocks (the cells' Z-order in 3D). */
+    std::vector<unsigned int>
+    assembly_order() const;
+
     /** The sparsity pattern of the step's tangent, and the matrix and residual on it. */
     void
     build_sparsity_pattern();

@@ -67,6 +67,21 @@ namespace GelMPM
     } batch;
     // The displacement Nitsche tangent's vectors per function (add_displacement_nitsche()).
     std::vector<double> nitsche_work;
+    /**
+     * The displacement Nitsche tangents of one block's surface points as factors, contracted
+     * once per block by BLAS (add_displacement_nitsche_block()). Each point adds columns of
+     * length dim n_u (index dim a + k) to Y and their combinations C_p Y to Z: the entries of
+     * the kind x_(a,k) y_(c,m) to the straight pair, those of the kind x_(a,m) y_(c,k) to the
+     * crossed pair.
+     */
+    struct NitscheTangentBatch
+    {
+      bool                open       = false;
+      bool                symmetric  = true; // every point's tangent symmetric (symmetric variant)
+      unsigned int        n_straight = 0, n_crossed = 0; // columns
+      std::vector<double> Y, Z, Yx, Zx;
+      std::vector<double> straight, crossed; // the products, dim n_u x dim n_u
+    } nitsche_batch;
     // Axisymmetric points: A : B(c, k) per test function (axisymmetric_terms.cc), kept here so
     // that no point allocates.
     std::vector<dealii::Tensor<2, 3>> hoop_products;

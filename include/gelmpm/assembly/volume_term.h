@@ -81,14 +81,18 @@ namespace GelMPM
     void
     add_block_tangent(AssemblyScratch<dim> &scratch, AssemblyCopy &copy) const;
 
-  private:
-    /** Whether this assembler batches the tangent of the block's volume points. */
+    /**
+     * Whether this assembler batches the tangent of the block's volume points; MixedSystem
+     * batches the surface points' displacement Nitsche tangents likewise
+     * (start_displacement_nitsche_block()).
+     */
     bool
     batched() const
     {
       return dim == 3 && !generic_tangent && !pointwise_tangent;
     }
 
+  private:
     /** The point's factors of the tangent into the block's batch (see add_block_tangent()). */
     void
     gather_tangent(const PointRecord<dim>                          &point,
