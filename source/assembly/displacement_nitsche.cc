@@ -467,32 +467,14 @@ namespace GelMPM
         v->resize(std::size_t(U) * U);
     // straight[J + U I] = sum_x,y Y[I, x] C_xy Y[J, y] = sum_r Y[J, r] Z[I, r]: row I is
     // contiguous; likewise crossed[(c, k) + U (a, m)].
-    dealii::gemm("N",
-                 "T",
-                 &m,
-                 &m,
-                 &k_s,
-                 &one,
-                 B.Y.data(),
-                 &m,
-                 B.Z.data(),
-                 &m,
-                 &zero,
-                 B.straight.data(),
-                 &m);
-    dealii::gemm("N",
-                 "T",
-                 &m,
-                 &m,
-                 &k_x,
-                 &one,
-                 B.Yx.data(),
-                 &m,
-                 B.Zx.data(),
-                 &m,
-                 &zero,
-                 B.crossed.data(),
-                 &m);
+    const auto product = [&](const blas_int             k,
+                             const std::vector<double> &Y,
+                             const std::vector<double> &Z,
+                             std::vector<double>       &out) {
+      dealii::gemm("N", "T", &m, &m, &k, &one, Y.data(), &m, Z.data(), &m, &zero, out.data(), &m);
+    };
+    product(k_s, B.Y, B.Z, B.straight);
+    product(k_x, B.Yx, B.Zx, B.crossed);
     const auto entry = [&](const unsigned int I, const unsigned int J) {
       const unsigned int a = I / dim, k = I % dim, c = J / dim, m_ = J % dim;
       return B.straight[J + std::size_t(U) * I] +
