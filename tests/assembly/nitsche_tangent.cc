@@ -9,8 +9,8 @@
 //  - on the 2D scene of the assembly tests (fixed, normal and tangential displacement pieces)
 //    in both variants and on a 3D cube [0, 1]^3 (16^3 grid, a prescribed displacement on its
 //    top, rollers), at a perturbed state: residual bit for bit, matrices to 1e-10 of their
-//    largest entry, and in the symmetric variant the whole tangent symmetric bit for bit where
-//    the reference's is.
+//    largest entry, and in the symmetric variant the whole tangent no less symmetric than the
+//    reference's (in 3D both add dgemm products per block, symmetric to round-off only).
 // Set NITSCHE_TANGENT_PRINT to print the figures.
 #include <gelmpm/assembly/displacement_nitsche.h>
 #include <gelmpm/material/flory_rehner_gel.h>

@@ -61,7 +61,8 @@ namespace GelMPM
      * add_structured_tangent(), the former assembly) instead of gathered and contracted once per
      * block (the default in 3D: start_block(), add_block_tangent()). The environment variable
      * GELMPM_POINTWISE_VOLUME_TANGENT (any value) sets it at construction, to time both with one
-     * binary.
+     * binary. It also keeps the surface points' displacement Nitsche tangents point by point
+     * (batched()).
      */
     void
     set_pointwise_tangent(const bool pointwise)
