@@ -52,17 +52,20 @@ namespace GelMPM
       "ranks' machines) that MUMPS's estimate of its factorisation (LU: twice "
       "the LDL^T estimate; on several ranks all ranks' together) may take; "
       "beyond it the run solves by Krylov. The rest is for the points, the matrix and the output.");
-    prm.declare_entry("Ordering",
-                      "fewest flops",
-                      dealii::Patterns::Selection("fewest flops|nested dissection|MUMPS"),
-                      "MUMPS LDL^T (the symmetric Nitsche variant): the fill-reducing ordering of "
-                      "its analysis, made once per sparsity pattern. nested dissection: METIS's, "
-                      "computed here and handed to MUMPS. MUMPS: its own choice, approximate "
-                      "minimum fill in Debian's MUMPS (built without METIS). fewest flops (the "
-                      "default): both analysed, the one MUMPS estimates cheaper kept; on a compact "
-                      "3D body the nested dissection takes about half the flops, on a slender one "
-                      "about twice (doc/performance.md, 'The ordering of the direct solver'). On "
-                      "several MPI ranks MUMPS always orders by itself.");
+    prm.declare_entry(
+      "Ordering",
+      "fewest flops",
+      dealii::Patterns::Selection("fewest flops|nested dissection|MUMPS"),
+      "MUMPS LDL^T (the symmetric Nitsche variant): the fill-reducing ordering of "
+      "its analysis, made once per sparsity pattern. nested dissection: METIS's, "
+      "computed here and handed to MUMPS. MUMPS: its own choice, approximate "
+      "minimum fill in Debian's MUMPS (built without METIS). fewest flops (the "
+      "default): both analysed, the one MUMPS estimates cheaper kept, where MUMPS's "
+      "estimates at least 2000 flops per matrix entry (compact 3D bodies); below "
+      "it, where the second analysis costs more than it can save (2D), MUMPS's. "
+      "On a compact 3D body the nested dissection takes about half the flops, on "
+      "a slender one about twice (doc/performance.md, 'The ordering of the direct "
+      "solver'). On several MPI ranks MUMPS always orders by itself.");
     prm.declare_entry("Krylov tolerance",
                       "1e-8",
                       dealii::Patterns::Double(1e-14, 0.1),

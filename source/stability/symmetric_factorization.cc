@@ -30,11 +30,12 @@ namespace GelMPM
     std::vector<double>    values;
     // The pivot order (1-based) of the nested dissection, for the gathered entries.
     std::vector<MUMPS_INT> pivot_order;
-    Ordering               ordering     = Ordering::fewest_flops;
-    MPI_Comm               communicator = MPI_COMM_SELF;
-    bool                   distributed  = false;
-    bool                   initialized  = false;
-    bool                   factorized   = false;
+    Ordering               ordering = Ordering::fewest_flops;
+    double   comparison_threshold   = SymmetricFactorization::default_comparison_threshold;
+    MPI_Comm communicator           = MPI_COMM_SELF;
+    bool     distributed            = false;
+    bool     initialized            = false;
+    bool     factorized             = false;
 
     /**
      * Start MUMPS on the communicator of the matrix. On several ranks each passes the entries of
@@ -161,9 +162,10 @@ namespace GelMPM
     /**
      * The analysis (ordering and symbolic factorisation) of the gathered entries. With
      * Ordering::fewest_flops both orderings are analysed and the one whose factorisation MUMPS
-     * estimates cheaper (RINFOG(1)) is kept: an analysis costs a few per cent of a 3D
-     * factorisation, and neither ordering wins on every body (a slender column favours MUMPS's,
-     * a compact cube the nested dissection).
+     * estimates cheaper (RINFOG(1)) is kept, where that factorisation repays the second analysis:
+     * neither ordering wins on every body (a slender column favours MUMPS's, a compact cube the
+     * nested dissection), but METIS and the second analysis cost about twice a 2D factorisation
+     * (doc/performance.md, "The ordering of the direct solver").
      */
     void
     analyse()
@@ -177,9 +179,10 @@ namespace GelMPM
       if (distributed || ordering != Ordering::fewest_flops)
         return;
       // MUMPS's own first: where it loses (compact 3D bodies) the nested dissection's analysis is
-      // the one kept and no third analysis is needed; where it wins (2D, slender bodies) the
-      // repeated analysis is its cheap one.
+      // the one kept and no third analysis is needed.
       const double mumps_flops = mumps.rinfog[0];
+      if (mumps_flops < comparison_threshold * static_cast<double>(rows.size()))
+        return;
       use_nested_dissection();
       call(1);
       if (mumps_flops <= mumps.rinfog[0])
@@ -268,10 +271,24 @@ namespace GelMPM
   }
 
 
+  void
+  SymmetricFactorization::set_comparison_threshold(const double flops_per_entry)
+  {
+    data->comparison_threshold = flops_per_entry;
+  }
+
+
   double
   SymmetricFactorization::factorization_flops() const
   {
     return data->mumps.rinfog[2];
+  }
+
+
+  double
+  SymmetricFactorization::estimated_flops() const
+  {
+    return data->mumps.rinfog[0];
   }
 
 

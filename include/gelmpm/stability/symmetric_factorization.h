@@ -50,10 +50,11 @@ namespace GelMPM
    *
    * The fill-reducing ordering: on one rank, by default, both a nested dissection of the matrix
    * graph by METIS (METIS_NodeND) and MUMPS's own choice are analysed and the one with fewer
-   * estimated flops is kept. Debian's MUMPS has no METIS of its own; its choice is approximate
-   * minimum fill (AMF), which on a compact 3D body takes about twice the flops of the nested
-   * dissection and on a slender one about half (doc/performance.md, "The ordering of the direct
-   * solver"). On several ranks MUMPS orders by itself.
+   * estimated flops is kept, where the factorisation is costly enough to repay the second
+   * analysis (default_comparison_threshold). Debian's MUMPS has no METIS of its own; its choice is
+   * approximate minimum fill (AMF), which on a compact 3D body takes about twice the flops of the
+   * nested dissection and on a slender one about half (doc/performance.md, "The ordering of the
+   * direct solver"). On several ranks MUMPS orders by itself.
    */
   class SymmetricFactorization
   {
@@ -61,7 +62,11 @@ namespace GelMPM
     /** The fill-reducing ordering of the analysis. */
     enum class Ordering
     {
-      /** Both below analysed, the one with fewer estimated flops kept (the default). */
+      /**
+       * Both below analysed, the one with fewer estimated flops kept (the default), where the
+       * factorisation with MUMPS's ordering takes at least the comparison threshold's flops per
+       * stored entry (set_comparison_threshold()); below it, MUMPS's.
+       */
       fewest_flops,
       /** METIS's nested dissection of the matrix graph (one rank; several: MUMPS's choice). */
       nested_dissection,
@@ -120,11 +125,29 @@ namespace GelMPM
     set_ordering(const Ordering ordering);
 
     /**
+     * Ordering::fewest_flops makes its second analysis (METIS's nested dissection) only where the
+     * first, MUMPS's, estimates at least default_comparison_threshold flops per stored entry of
+     * the matrix (lower triangle). Measured on the 2D column of paper §4.3 (7,200 unknowns, 800
+     * flops per entry): METIS and the second analysis take 60 ms, twice the factorisation they
+     * could shorten; on the 3D cube (4,800-13,000 flops per entry) they take 0.2 s against
+     * factorisations of 0.2-1 s that the nested dissection shortens by 20-33 %.
+     */
+    static constexpr double default_comparison_threshold = 2000.;
+
+    /** Compare the orderings from @p flops_per_entry on (0: always; the default above). */
+    void
+    set_comparison_threshold(const double flops_per_entry);
+
+    /**
      * Floating-point operations of the last numeric factorisation (RINFOG(3)): the measure of the
      * ordering's quality.
      */
     double
     factorization_flops() const;
+
+    /** Floating-point operations the last analysis estimated for the factorisation (RINFOG(1)). */
+    double
+    estimated_flops() const;
 
     /** The ordering of the last analysis, by name (INFOG(7): "nested dissection" when ours). */
     std::string
