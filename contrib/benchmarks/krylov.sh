@@ -8,7 +8,9 @@
 #      20 x 160, 40 x 320 and 80 x 640 cells: bounded in dt and in h is the aim;
 #   2. wall time and peak memory of AMG, GMG and MUMPS in 3D (prm/free_swelling_cube.prm at 26^3,
 #      34^3 and 50^3 cells, dt = 1e-3: at 34^3, dt = 1e-2 takes the solvers into step-size cuts
-#      from the second step on).
+#      from the second step on);
+#   3. the same cubes at the undrained limit (1e-6 tau_d, the boundary's chemical potential
+#      jumping within the first step) and at 1e2 tau_d, GMG against MUMPS.
 # Every case takes a few steps of a fixed dt (Growth factor 1, no caps, no tolerance) so that
 # each solver solves the same systems; the Newton iteration counts must agree. Writes
 # <output>/krylov.md (the tables) and, with --update-doc, puts them into doc/performance.md between
@@ -113,6 +115,24 @@ for n in "${cubes[@]}"; do
   done
 done
 
+# 3. 3D at the two limits of dt, with the geometric preconditioner (the default) and MUMPS: the
+# undrained limit needs a load that is not ramped over the step, so there the boundary's chemical
+# potential jumps within the first step (tinc = dt); at 1e2 tau_d the first step takes the whole
+# ramp (tinc = 1).
+dts3d=(1e-6 1e2)
+for n in "${cubes[@]}"; do
+  for dt in "${dts3d[@]}"; do
+    tinc=1
+    [[ ${dt} != 1e-6 ]] || tinc=1e-6
+    for solver in GMG MUMPS; do
+      run_case "h3d_${n}_${dt}_${solver}" "${cube}" "${solver}" "${dt}" 2 \
+        --set "Background grid/Cells=${n}, ${n}, ${n}" \
+        --set "Boundary conditions/right/Chemical potential value/Function constants=mu0=-0.14597453, tinc=${tinc}" \
+        --set "Boundary conditions/outer/Chemical potential value/Function constants=mu0=-0.14597453, tinc=${tinc}"
+    done
+  done
+done
+
 header="| dt / tau_d | cells | u + mu unknowns | Krylov per solve, AMG | Krylov per solve, GMG | Newton (AMG / GMG / MUMPS) | wall s (AMG / GMG / MUMPS) | memory MB (AMG / GMG / MUMPS) |"
 {
   echo "Krylov iterations per Newton solve with the algebraic (AMG) and the geometric (GMG)"
@@ -134,6 +154,18 @@ header="| dt / tau_d | cells | u + mu unknowns | Krylov per solve, AMG | Krylov 
   echo "|---|---|---|---|---|---|---|---|"
   for n in "${cubes[@]}"; do
     row "3D cube" "${n}^3" "h3d_${n}"
+  done
+  echo
+  echo "3D at the limits of dt: the cube, 2 steps; at 1e-6 tau_d the boundary's chemical potential"
+  echo "jumps within the first step (the undrained limit), at 1e2 tau_d the first step takes the"
+  echo "whole ramp (AMG not run):"
+  echo
+  echo "${header}"
+  echo "|---|---|---|---|---|---|---|---|"
+  for n in "${cubes[@]}"; do
+    for dt in "${dts3d[@]}"; do
+      row "${dt}" "${n}^3" "h3d_${n}_${dt}"
+    done
   done
   echo
   echo "Produced by \`bash contrib/benchmarks/krylov.sh\` on $(nproc) cores, $(date +%Y-%m-%d)${GELMPM_KRYLOV_CASES:+ (cases matching '${GELMPM_KRYLOV_CASES}')}."
