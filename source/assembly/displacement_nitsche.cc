@@ -4,6 +4,7 @@
 #include <deal.II/lac/lapack_templates.h>
 
 #include <algorithm>
+#include <utility>
 
 namespace GelMPM
 {
@@ -52,6 +53,117 @@ namespace GelMPM
     }
 
     /**
+     * The factors of one surface point's displacement-displacement tangent
+     * (gather_block_factors()): the "straight" ones, indexed (a, k) on both sides, and the
+     * "crossed" ones, indexed (a, m) as rows and (c, k) as columns.
+     */
+    template <int dim>
+    struct NitscheFactors
+    {
+      enum Straight : unsigned int
+      {
+        H  = 0,
+        PN = 1,
+        NP = 2,
+        NE = 3,
+        SE = 3 + dim,
+      };
+      enum Crossed : unsigned int
+      {
+        xH   = 0,
+        xPN  = 1,
+        xNN  = 2,
+        xPiH = 3
+      };
+      static constexpr unsigned int n_straight = 3 + 2 * dim, n_crossed = 4;
+
+      // C[x][y]: the coefficient of (row factor x) (column factor y).
+      double straight[n_straight][n_straight] = {};
+      double crossed[n_crossed][n_crossed]    = {};
+    };
+
+
+    /**
+     * The coefficients C and C' of the factors, from the pair loop of add_closed_form_tangent():
+     * K = beta A N N Pi - X - (t1 + s t2).
+     */
+    template <int dim>
+    NitscheFactors<dim>
+    factor_coefficients(const PointRecord<dim>                          &point,
+                        const typename FloryRehnerGel<dim>::Incremental &state,
+                        const Tensor<2, dim>                            &Pi,
+                        const double                                     w,
+                        const double                                     beta,
+                        const double                                     sym)
+    {
+      using F = NitscheFactors<dim>;
+      F            f;
+      auto        &C = f.straight, &Cx = f.crossed;
+      const double A  = point.measure;
+      const double as = A * sym * state.a, bs = A * sym * state.b, cs = A * sym * state.c;
+      const double aA = A * state.a, bA = A * state.b;
+      C[F::H][F::H]  = -cs * w;
+      C[F::PN][F::H] = bs;
+      C[F::H][F::PN] = bs;
+      C[F::NP][F::H] = -bA;
+      C[F::H][F::NP] = -sym * bA;
+      for (unsigned int j = 0; j < dim; ++j)
+        for (unsigned int l = 0; l < dim; ++l)
+          {
+            C[F::NE + j][F::NE + l] = beta * A * Pi[j][l];
+            C[F::NE + j][F::SE + l] = -A * Pi[j][l];
+            C[F::SE + j][F::NE + l] = -sym * A * Pi[l][j];
+          }
+      Cx[F::xH][F::xH]    = bs * w;
+      Cx[F::xH][F::xPN]   = as;
+      Cx[F::xPN][F::xH]   = as;
+      Cx[F::xNN][F::xPiH] = -aA;
+      Cx[F::xPiH][F::xNN] = -sym * aA;
+      return f;
+    }
+
+
+    /** Z[:, y] = sum_x Y[:, x] C[x][y] (@p r factors of length @p U): the columns' partners. */
+    template <unsigned int r>
+    void
+    combine_factors(const double *Y, double *Z, const double (&C)[r][r], const unsigned int U)
+    {
+      for (unsigned int y = 0; y < r; ++y)
+        {
+          double *const z = Z + U * y;
+          std::fill(z, z + U, 0.);
+          for (unsigned int x = 0; x < r; ++x)
+            if (C[x][y] != 0.)
+              for (unsigned int I = 0; I < U; ++I)
+                z[I] += C[x][y] * Y[I + U * x];
+        }
+    }
+
+
+    /**
+     * Room in the batch for one more point's factors: the first straight and crossed column of
+     * the point.
+     */
+    template <int dim>
+    std::pair<std::size_t, std::size_t>
+    append_factor_columns(typename AssemblyScratch<dim>::NitscheTangentBatch &B,
+                          const unsigned int                                  U)
+    {
+      using F = NitscheFactors<dim>;
+      const std::pair<std::size_t, std::size_t> first(B.n_straight, B.n_crossed);
+      B.n_straight += F::n_straight;
+      B.n_crossed += F::n_crossed;
+      for (auto *v : {&B.Y, &B.Z})
+        if (v->size() < std::size_t(U) * B.n_straight)
+          v->resize(std::size_t(U) * 2 * B.n_straight);
+      for (auto *v : {&B.Yx, &B.Zx})
+        if (v->size() < std::size_t(U) * B.n_crossed)
+          v->resize(std::size_t(U) * 2 * B.n_crossed);
+      return first;
+    }
+
+
+    /**
      * The displacement-displacement part of the closed-form tangent (add_closed_form_tangent())
      * as factors into the block's batch: with I = (a, k), J = (c, m), and the vectors
      * H_I = h_a[k], PN_I = p_a n[k], NPn_I = N_a (Pi n)_k, NE^j_I = N_a delta_jk,
@@ -70,42 +182,18 @@ namespace GelMPM
                          const double                                     sym,
                          AssemblyScratch<dim>                            &s)
     {
-      constexpr unsigned int r_s = 3 + 2 * dim, r_x = 4;
-      enum : unsigned int
-      {
-        H  = 0,
-        PN = 1,
-        NP = 2,
-        NE = 3,
-        SE = 3 + dim
-      };
-      enum : unsigned int
-      {
-        xH   = 0,
-        xPN  = 1,
-        xNN  = 2,
-        xPiH = 3
-      };
+      using F                = NitscheFactors<dim>;
       auto              &B   = s.nitsche_batch;
       const unsigned int n_u = s.n_u, U = dim * n_u;
-      const std::size_t  first_s = B.n_straight, first_x = B.n_crossed;
-      B.n_straight += r_s;
-      B.n_crossed += r_x;
-      B.symmetric = B.symmetric && sym == 1. && Pi == dealii::transpose(Pi);
-      for (auto *v : {&B.Y, &B.Z})
-        if (v->size() < std::size_t(U) * B.n_straight)
-          v->resize(std::size_t(U) * 2 * B.n_straight);
-      for (auto *v : {&B.Yx, &B.Zx})
-        if (v->size() < std::size_t(U) * B.n_crossed)
-          v->resize(std::size_t(U) * 2 * B.n_crossed);
+      const auto [first_s, first_x] = append_factor_columns<dim>(B, U);
+      B.symmetric                   = B.symmetric && sym == 1. && Pi == dealii::transpose(Pi);
 
       double *const Y  = &B.Y[U * first_s];
       double *const Yx = &B.Yx[U * first_x];
-      std::fill(Y, Y + U * r_s, 0.);
+      std::fill(Y, Y + U * F::n_straight, 0.);
       const auto          &D    = state.dFit;
-      const auto          &N    = point.normal;
-      const Tensor<1, dim> n    = D * N;
-      const Tensor<1, dim> SN   = state.S * N;
+      const Tensor<1, dim> n    = D * point.normal;
+      const Tensor<1, dim> SN   = state.S * point.normal;
       const Tensor<1, dim> Pi_n = Pi * n;
       for (unsigned int a = 0; a < n_u; ++a)
         {
@@ -115,57 +203,22 @@ namespace GelMPM
           const double         Na   = s.N[a];
           for (unsigned int k = 0; k < dim; ++k)
             {
-              const unsigned int I = dim * a + k;
-              Y[I + U * H]         = h[k];
-              Y[I + U * PN]        = p * n[k];
-              Y[I + U * NP]        = Na * Pi_n[k];
-              Y[I + U * (NE + k)]  = Na;
-              Y[I + U * (SE + k)]  = SN * s.G[a];
-              Yx[I + U * xH]       = h[k];
-              Yx[I + U * xPN]      = p * n[k];
-              Yx[I + U * xNN]      = Na * n[k];
-              Yx[I + U * xPiH]     = Pi_h[k];
+              const unsigned int I   = dim * a + k;
+              Y[I + U * F::H]        = h[k];
+              Y[I + U * F::PN]       = p * n[k];
+              Y[I + U * F::NP]       = Na * Pi_n[k];
+              Y[I + U * (F::NE + k)] = Na;
+              Y[I + U * (F::SE + k)] = SN * s.G[a];
+              Yx[I + U * F::xH]      = h[k];
+              Yx[I + U * F::xPN]     = p * n[k];
+              Yx[I + U * F::xNN]     = Na * n[k];
+              Yx[I + U * F::xPiH]    = Pi_h[k];
             }
         }
 
-      // C[x][y]: the coefficient of (row factor x) (column factor y), from the pair loop of
-      // add_closed_form_tangent(): K = beta A N N Pi - X - (t1 + s t2).
-      const double A = point.measure, w = g * n;
-      const double as = A * sym * state.a, bs = A * sym * state.b, cs = A * sym * state.c;
-      const double aA = A * state.a, bA = A * state.b;
-      double       C[r_s][r_s] = {}, Cx[r_x][r_x] = {};
-      C[H][H]  = -cs * w;
-      C[PN][H] = bs;
-      C[H][PN] = bs;
-      C[NP][H] = -bA;
-      C[H][NP] = -sym * bA;
-      for (unsigned int j = 0; j < dim; ++j)
-        for (unsigned int l = 0; l < dim; ++l)
-          {
-            C[NE + j][NE + l] = beta * A * Pi[j][l];
-            C[NE + j][SE + l] = -A * Pi[j][l];
-            C[SE + j][NE + l] = -sym * A * Pi[l][j];
-          }
-      Cx[xH][xH]    = bs * w;
-      Cx[xH][xPN]   = as;
-      Cx[xPN][xH]   = as;
-      Cx[xNN][xPiH] = -aA;
-      Cx[xPiH][xNN] = -sym * aA;
-
-      // Z[:, y] = sum_x Y[:, x] C[x][y]: the column factors' partners.
-      const auto combine = [U](const double *Y_, double *Z_, const auto &C_, const unsigned int r) {
-        for (unsigned int y = 0; y < r; ++y)
-          {
-            double *const z = Z_ + U * y;
-            std::fill(z, z + U, 0.);
-            for (unsigned int x = 0; x < r; ++x)
-              if (C_[x][y] != 0.)
-                for (unsigned int I = 0; I < U; ++I)
-                  z[I] += C_[x][y] * Y_[I + U * x];
-          }
-      };
-      combine(Y, &B.Z[U * first_s], C, r_s);
-      combine(Yx, &B.Zx[U * first_x], Cx, r_x);
+      const F f = factor_coefficients(point, state, Pi, g * n, beta, sym);
+      combine_factors(Y, &B.Z[U * first_s], f.straight, U);
+      combine_factors(Yx, &B.Zx[U * first_x], f.crossed, U);
     }
 
 
