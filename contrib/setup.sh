@@ -14,7 +14,7 @@ build_dir="${GELMPM_BUILD_DIR:-${top}/build}"
 build_type="${GELMPM_BUILD_TYPE:-Release}"
 jobs="${GELMPM_JOBS:-$(nproc)}"
 
-# Each package and why GelMPM needs it (README.md, "Dependencies", says the same):
+# Each package and why GelMPM needs it (README.md, "Dependencies", points here):
 packages=(
   libdeal.ii-dev # deal.II 9.4 with Trilinos (Amesos, Epetra), MUMPS, ARPACK, Boost, TBB, MPI
   libmuparser-dev # boundary selectors in x, y, z, nx, ny, nz (the parser behind deal.II's)
