@@ -76,19 +76,22 @@ namespace GelMPM
   struct PointNormalExpression::Parser
   {
     mu::Parser            parser;
-    std::array<double, 6> variables = {};
-    unsigned int          dim       = 2;
+    std::array<double, 6> variables   = {};
+    unsigned int          dim         = 2;
+    bool                  with_normal = true;
   };
 
 
   PointNormalExpression::PointNormalExpression(const unsigned int                   dim,
                                                const std::string                   &expression,
-                                               const std::map<std::string, double> &constants)
+                                               const std::map<std::string, double> &constants,
+                                               const bool                           with_normal)
     : parser(std::make_unique<Parser>())
   {
-    parser->dim      = dim;
-    auto      &p     = parser->parser;
-    const auto names = dealii::Utilities::split_string_list(variable_names(dim));
+    parser->dim         = dim;
+    parser->with_normal = with_normal;
+    auto      &p        = parser->parser;
+    const auto names    = dealii::Utilities::split_string_list(variable_names(dim, with_normal));
     try
       {
         for (unsigned int i = 0; i < names.size(); ++i)
@@ -145,8 +148,10 @@ namespace GelMPM
 
 
   std::string
-  PointNormalExpression::variable_names(const unsigned int dim)
+  PointNormalExpression::variable_names(const unsigned int dim, const bool with_normal)
   {
+    if (!with_normal)
+      return dim == 3 ? "x,y,z" : "x,y";
     return dim == 3 ? "x,y,z,nx,ny,nz" : "x,y,nx,ny";
   }
 
@@ -156,8 +161,9 @@ namespace GelMPM
   {
     for (unsigned int d = 0; d < parser->dim; ++d)
       {
-        parser->variables[d]               = x[d];
-        parser->variables[parser->dim + d] = normal[d];
+        parser->variables[d] = x[d];
+        if (parser->with_normal)
+          parser->variables[parser->dim + d] = normal[d];
       }
     try
       {

@@ -1,3 +1,4 @@
+#include <gelmpm/core/format_point.h>
 #include <gelmpm/core/input_error.h>
 #include <gelmpm/scene/expression.h>
 #include <gelmpm/scene/material_regions.h>
@@ -7,7 +8,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <sstream>
+#include <stdexcept>
 
 namespace GelMPM
 {
@@ -32,9 +35,14 @@ namespace GelMPM
     }
 
 
+    using NoConstants = std::map<std::string, double>;
+
+
     std::string
     text_of(const double x)
     {
+      if (std::isnan(x))
+        return "NaN";
       std::ostringstream out;
       out.precision(7);
       out << x;
@@ -128,17 +136,19 @@ namespace GelMPM
               " or a physical group of the mesh");
     if (region.selector_text.empty())
       return region;
-    const std::string variables = dim == 2 ? "x,y" : "x,y,z";
-    region.selector             = std::make_unique<dealii::FunctionParser<dim>>();
+    // The parser of the boundary pieces' selectors, in the position alone: it evaluates the
+    // expression once, so that an unknown name or a syntax error is found here, not at the
+    // first material point.
+    const std::string variables = PointNormalExpression::variable_names(dim, false);
     try
       {
-        QuietCerr quiet;
-        region.selector->initialize(variables, region.selector_text, {});
+        region.selector =
+          std::make_unique<PointNormalExpression>(dim, region.selector_text, NoConstants{}, false);
       }
-    catch (...)
+    catch (const std::invalid_argument &e)
       {
         throw InputError(path + "Selector",
-                         "'" + region.selector_text + "' cannot be parsed",
+                         "'" + region.selector_text + "' cannot be parsed: " + e.what(),
                          "write an expression in " + variables + ", e.g. 'y > 0.5'");
       }
     return region;
@@ -240,7 +250,7 @@ namespace GelMPM
     for (unsigned int k = 0; k < regions.size(); ++k)
       {
         const auto &r  = regions[k];
-        const bool  in = r.selector ? r.selector->value(X0) != 0.
+        const bool  in = r.selector ? selector_value(r, X0) != 0.
                                     : (!group_name.empty() && group_name == r.mesh_group);
         if (!in)
           continue;
@@ -256,6 +266,21 @@ namespace GelMPM
         found = k + 1;
       }
     return found;
+  }
+
+
+  template <int dim>
+  double
+  MaterialRegions<dim>::selector_value(const Region &region, const dealii::Point<dim> &X0)
+  {
+    // NaN compares unequal to 0: it would put the point in the region.
+    const double value = region.selector->value(&X0[0], nullptr);
+    if (!std::isfinite(value))
+      throw InputError("Material/" + region.name + "/Selector",
+                       "is not a number (" + text_of(value) + ") at the initial position " +
+                         format_point(X0),
+                       "write a condition that is 0 or 1 everywhere, e.g. 'y > 0.5'");
+    return value;
   }
 
 

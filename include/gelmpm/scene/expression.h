@@ -46,7 +46,7 @@ namespace GelMPM
 
   /**
    * @brief An expression in a point and a unit normal, x, y[, z], nx, ny[, nz]: the selector of
-   * a boundary piece.
+   * a boundary piece; or in the point alone, x, y[, z]: the selector of a material region.
    *
    * deal.II's FunctionParser takes at most three space variables and time, one too few for a
    * point and a normal in 3D, so this class drives muParser (the parser FunctionParser wraps)
@@ -58,19 +58,24 @@ namespace GelMPM
   {
   public:
     /**
-     * Parse @p expression in the variables of variable_names(@p dim) and @p constants. Throws
+     * Parse @p expression in the variables of variable_names(@p dim, @p with_normal) and
+     * @p constants, and evaluate it once (muParser compiles lazily). Throws
      * std::invalid_argument with muParser's message if it cannot be parsed.
      */
     PointNormalExpression(const unsigned int                   dim,
                           const std::string                   &expression,
-                          const std::map<std::string, double> &constants);
+                          const std::map<std::string, double> &constants,
+                          const bool                           with_normal = true);
     ~PointNormalExpression();
 
-    /** "x,y,nx,ny" in 2D, "x,y,z,nx,ny,nz" in 3D. */
+    /** "x,y,nx,ny" in 2D, "x,y,z,nx,ny,nz" in 3D; without the normal "x,y" and "x,y,z". */
     static std::string
-    variable_names(const unsigned int dim);
+    variable_names(const unsigned int dim, const bool with_normal = true);
 
-    /** The value at the point @p x with normal @p normal (dim entries each). */
+    /**
+     * The value at the point @p x with normal @p normal (dim entries each; @p normal is not read
+     * for an expression in the point alone); NaN where muParser fails.
+     */
     double
     value(const double *x, const double *normal) const;
 

@@ -2,8 +2,8 @@
 #define gelmpm_scene_material_regions_h
 
 #include <gelmpm/material/flory_rehner_gel.h>
+#include <gelmpm/scene/expression.h>
 
-#include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
@@ -113,11 +113,15 @@ namespace GelMPM
   private:
     struct Region
     {
-      std::string                                  name;
-      std::string                                  selector_text;
-      std::string                                  mesh_group;
-      std::unique_ptr<dealii::FunctionParser<dim>> selector;
+      std::string                            name;
+      std::string                            selector_text;
+      std::string                            mesh_group;
+      std::unique_ptr<PointNormalExpression> selector;
     };
+    /** The selector of @p region at @p X0; InputError naming it where it is not a number. */
+    static double
+    selector_value(const Region &region, const dealii::Point<dim> &X0);
+
     /** The region's selector or mesh group, from its subsection (entered). */
     static Region
     parse_selection(dealii::ParameterHandler &prm, const std::string &name);
