@@ -475,6 +475,38 @@ namespace GelMPM
 
 
   void
+  require_new_subsection_names(const dealii::ParameterHandler &prm,
+                               const std::string              &section,
+                               const std::vector<std::string> &names,
+                               const std::string              &list_entry,
+                               const std::string              &what)
+  {
+    if (names.empty())
+      return;
+    std::ostringstream text;
+    prm.print_parameters(text, dealii::ParameterHandler::ShortPRM);
+    const std::string prefix = section + "/";
+    for (const auto &[path, value] : parameter_entries(text.str()))
+      {
+        if (path.rfind(prefix, 0) != 0)
+          continue;
+        const std::string rest  = path.substr(prefix.size());
+        const auto        slash = rest.find('/');
+        const std::string child = rest.substr(0, slash);
+        const bool        entry = slash == std::string::npos;
+        require(std::find(names.begin(), names.end(), child) == names.end(),
+                list_entry,
+                "names the " + what + " '" + child + "', which is also the name of " +
+                  (entry ? "an entry" : "a subsection") + " of the section '" + section +
+                  "': its subsection '" + section + "/" + child +
+                  "' would be taken for that one, and parameters.prm would leave the " + what +
+                  " out",
+                "rename the " + what + ", e.g. '" + child + " " + what + "'");
+      }
+  }
+
+
+  void
   check_numbers_representable(const dealii::ParameterHandler &prm)
   {
     std::ostringstream text;

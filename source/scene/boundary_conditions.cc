@@ -331,6 +331,11 @@ namespace GelMPM
   BoundaryConditions<dim>::declare_parameters(dealii::ParameterHandler       &prm,
                                               const std::vector<std::string> &pieces)
   {
+    require_new_subsection_names(prm,
+                                 "Boundary conditions",
+                                 pieces,
+                                 "Boundary conditions/Pieces",
+                                 "piece");
     prm.enter_subsection("Boundary conditions");
     for (const auto &name : pieces)
       BoundaryPiece<dim>::declare_parameters(prm, name);

@@ -1,5 +1,6 @@
 #include <gelmpm/core/format_point.h>
 #include <gelmpm/core/input_error.h>
+#include <gelmpm/core/parameters.h>
 #include <gelmpm/scene/expression.h>
 #include <gelmpm/scene/material_regions.h>
 
@@ -57,6 +58,9 @@ namespace GelMPM
                                            const std::vector<std::string> &names)
   {
     using namespace dealii;
+    // A region called like an entry of 'Material' (FloryRehnerGel, declared before) would merge
+    // with it.
+    require_new_subsection_names(prm, "Material", names, "Material/Regions", "region");
     prm.enter_subsection("Material");
     for (const auto &name : names)
       {

@@ -118,6 +118,20 @@ namespace GelMPM
   parameter_entries(const std::string &short_prm);
 
   /**
+   * Throw InputError naming @p list_entry (e.g. "Material/Regions") if one of @p names, each to
+   * become a subsection of the top-level @p section of @p prm, is the name of an entry or a
+   * subsection already declared there: deal.II would take the two for one, so that the
+   * subsection's entries are printed nowhere and parameters.prm would lose them. @p what names
+   * one of @p names ("region").
+   */
+  void
+  require_new_subsection_names(const dealii::ParameterHandler &prm,
+                               const std::string              &section,
+                               const std::vector<std::string> &names,
+                               const std::string              &list_entry,
+                               const std::string              &what);
+
+  /**
    * Throw an InputError for the first entry of @p prm whose value holds a number that a double
    * cannot carry: one below the smallest normal double (a denormal such as 1e-320, or one that
    * underflows to 0 such as 1e-400) or beyond the largest. deal.II's patterns accept such a
