@@ -4,9 +4,20 @@
 #
 #   bash contrib/setup.sh [--plotting]
 #
-# --plotting also installs what the plotting scripts in contrib/plotting need (matplotlib, numpy,
-# VTK's Python module); run those scripts with /usr/bin/python3, which sees Debian's packages.
+# --plotting also installs what the plotting scripts in contrib/plotting need (matplotlib, numpy;
+# they read .vtu files with VTK's Python module, as the tests do); run those scripts with
+# /usr/bin/python3, which sees Debian's packages.
 # Environment: GELMPM_BUILD_DIR (default: build), GELMPM_BUILD_TYPE (default: Release), GELMPM_JOBS.
+#
+# ParaView: the tests read the written .vtu files with VTK's XML reader, the one ParaView uses,
+# through Python's vtkmodules (tests/vtu_reader.h). Debian has two packages that provide it and
+# conflict with each other: python3-vtk9 (VTK's) and python3-paraview (ParaView's, which
+# 'apt-get install paraview' brings). So python3-vtk9 is installed only when /usr/bin/python3
+# cannot import vtkmodules.vtkIOXML: a machine with ParaView keeps ParaView's, and ParaView can be
+# installed after GelMPM (apt then replaces python3-vtk9 by python3-paraview, and the tests read
+# with that). VTK's C++ development package (libvtk9-dev) is not needed: it depends on
+# python3-vtk9, so it cannot be installed beside ParaView's Python, and it brings a JDK, GDAL and
+# MySQL's development files (279 packages, 990 MB beyond deal.II's, against 55 and 245 MB).
 set -euo pipefail
 
 top="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -18,7 +29,6 @@ jobs="${GELMPM_JOBS:-$(nproc)}"
 packages=(
   libdeal.ii-dev # deal.II 9.4 with Trilinos (Amesos, Epetra), MUMPS, ARPACK, Boost, TBB, MPI
   libmuparser-dev # boundary selectors in x, y, z, nx, ny, nz (the parser behind deal.II's)
-  libvtk9-dev    # tests read written .vtu files back the way ParaView does
   libopenblas0-pthread # optimised BLAS behind MUMPS and LAPACK (replaces the reference BLAS)
   numdiff        # ctest compares outputs with tolerances
   cmake          # build system
@@ -26,7 +36,7 @@ packages=(
   make           # build tool
 )
 if [[ "${1:-}" == "--plotting" ]]; then
-  packages+=(python3-numpy python3-matplotlib python3-vtk9)
+  packages+=(python3-numpy python3-matplotlib)
 fi
 
 missing=()
@@ -36,8 +46,20 @@ for p in "${packages[@]}"; do
   fi
 done
 
+# VTK's Python module, for the tests that read .vtu files (and the plotting scripts): whichever of
+# python3-vtk9 and python3-paraview is there; python3-vtk9 if neither.
+if /usr/bin/python3 -c "import vtkmodules.vtkIOXML" >/dev/null 2>&1; then
+  echo "GelMPM setup: VTK's Python module found (python3-vtk9 or ParaView's python3-paraview):" \
+       "the tests read .vtu files with it"
+else
+  missing+=(python3-vtk9)
+  echo "GelMPM setup: /usr/bin/python3 cannot import vtkmodules.vtkIOXML: installing python3-vtk9," \
+       "with which the tests read .vtu files as ParaView does (ParaView's python3-paraview, if" \
+       "installed later, replaces it and serves as well)"
+fi
+
 if ((${#missing[@]})); then
-  echo "GelMPM setup: installing missing Debian packages: ${missing[*]}"
+  echo "GelMPM setup: installing missing Debian packages: ${missing[*]} (why: contrib/setup.sh, top)"
   sudo=""
   if [[ $(id -u) -ne 0 ]]; then
     command -v sudo >/dev/null || { echo "error: need root or sudo to install ${missing[*]}" >&2; exit 1; }

@@ -2,7 +2,8 @@
 and the .vtu files they list (with VTK's XML reader, the library ParaView uses).
 
 Shared by the scripts in contrib/plotting and contrib/benchmarks; run them with /usr/bin/python3,
-which sees Debian's python3-numpy and python3-vtk9 (`bash contrib/setup.sh --plotting`).
+which sees Debian's python3-numpy and VTK's module vtkmodules, from python3-vtk9 or ParaView's
+python3-paraview (`bash contrib/setup.sh --plotting` installs the first unless the second is there).
 """
 import os
 import sys
@@ -18,7 +19,8 @@ except ImportError:  # older VTK layout
         from vtk import vtkXMLUnstructuredGridReader
         from vtk.util.numpy_support import vtk_to_numpy
     except ImportError:
-        sys.exit("needs VTK's Python module (Debian: python3-vtk9); run with /usr/bin/python3")
+        sys.exit("needs VTK's Python module (Debian: python3-vtk9, or ParaView's python3-paraview);"
+                 " run with /usr/bin/python3")
 
 
 def read_csv(file_name):

@@ -1,10 +1,11 @@
 // GridOutput writes what ParaView reads: a block of 8 x 8 displacement cells of a 24 x 12 grid,
 // aligned with the grid and touching its left edge, is classified (Q2 for u, Q2 on the 2h grid
 // for mu), linear fields are given by their Greville coefficients, and the written .vtu is read
-// back with VTK's XML reader. Checked: the cell count; the number of interior, boundary and outer
-// cells of both spaces against their closed forms; the volume points per cell as given; du and mu
-// at every vertex of a cell with material equal to the linear fields (extended B-splines
-// reproduce them), NaN on cells without material; the .pvd series lists the output time.
+// back with VTK's XML reader (through Python, tests/vtu_reader.h). Checked: the cell count; the
+// number of interior, boundary and outer cells of both spaces against their closed forms; the
+// volume points per cell as given; du and mu at every vertex of a cell with material equal to the
+// linear fields (extended B-splines reproduce them), NaN on cells without material; the .pvd series
+// lists the output time.
 #include <gelmpm/bspline/bspline_space.h>
 #include <gelmpm/bspline/extended_bspline_space.h>
 #include <gelmpm/io/grid_output.h>
@@ -20,12 +21,8 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
-#include <vtkCell.h>
-#include <vtkDataArray.h>
-#include <vtkPointData.h>
-#include <vtkSmartPointer.h>
-#include <vtkUnstructuredGrid.h>
-#include <vtkXMLUnstructuredGridReader.h>
+
+#include "../vtu_reader.h"
 
 using namespace dealii;
 using namespace GelMPM;
@@ -121,20 +118,15 @@ main(int argc, char **argv)
   output.record(u, mu, points, solution);
   output.write(0.5);
 
-  vtkSmartPointer<vtkXMLUnstructuredGridReader> reader =
-    vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
-  reader->SetFileName("vtu/grid-00000.vtu");
-  reader->Update();
-  vtkUnstructuredGrid *grid = reader->GetOutput();
-  bool                 ok   = grid->GetNumberOfCells() == nx * ny;
-  std::cout << "cells read back: " << grid->GetNumberOfCells() << " (expected " << nx * ny << ")"
+  const auto file = GelMPMTests::read_vtu("vtu/grid-00000.vtu");
+  bool       ok   = file.cells.size() == nx * ny;
+  std::cout << "cells read back: " << file.cells.size() << " (expected " << nx * ny << ")"
             << std::endl;
 
-  const auto data = grid->GetPointData();
   for (const char *name :
        {"u_cell_kind", "mu_cell_kind", "n_volume_points", "displacement_increment", "mu_over_kT"})
     {
-      const bool present = data->GetArray(name) != nullptr;
+      const bool present = file.array(name) != nullptr;
       ok &= present;
       std::cout << "field " << name << " present: " << (present ? "yes" : "no  FAIL") << std::endl;
     }
@@ -146,30 +138,22 @@ main(int argc, char **argv)
   std::array<unsigned int, 3> u_kinds = {{0, 0, 0}}, mu_kinds = {{0, 0, 0}};
   bool                        counts_ok = true, nan_ok = true;
   double                      error = 0.;
-  for (vtkIdType k = 0; k < grid->GetNumberOfCells(); ++k)
+  for (const auto &cell : file.cells)
     {
-      vtkCell *cell = grid->GetCell(k);
       Point<2> centre;
-      for (vtkIdType v = 0; v < cell->GetNumberOfPoints(); ++v)
-        {
-          double x[3];
-          grid->GetPoint(cell->GetPointId(v), x);
-          centre += Point<2>(x[0], x[1]) / double(cell->GetNumberOfPoints());
-        }
+      for (const std::size_t id : cell)
+        centre += Point<2>(file.points[id][0], file.points[id][1]) / double(cell.size());
       const unsigned int c     = u_space.cell_containing(centre);
-      const vtkIdType    first = cell->GetPointId(0);
-      ++u_kinds[std::lround(data->GetArray("u_cell_kind")->GetTuple1(first))];
-      ++mu_kinds[std::lround(data->GetArray("mu_cell_kind")->GetTuple1(first))];
-      counts_ok &= data->GetArray("n_volume_points")->GetTuple1(first) == points[c];
-      for (vtkIdType v = 0; v < cell->GetNumberOfPoints(); ++v)
+      const std::size_t  first = cell[0];
+      ++u_kinds[std::lround(file.field("u_cell_kind")(first))];
+      ++mu_kinds[std::lround(file.field("mu_cell_kind")(first))];
+      counts_ok &= file.field("n_volume_points")(first) == points[c];
+      for (const std::size_t id : cell)
         {
-          const vtkIdType id = cell->GetPointId(v);
-          double          x[3];
-          grid->GetPoint(id, x);
-          const Point<2> p(x[0], x[1]);
-          const double   mu_value = data->GetArray("mu_over_kT")->GetTuple1(id);
-          const double   du_x     = data->GetArray("displacement_increment")->GetComponent(id, 0);
-          const double   du_y     = data->GetArray("displacement_increment")->GetComponent(id, 1);
+          const Point<2> p(file.points[id][0], file.points[id][1]);
+          const double   mu_value = file.field("mu_over_kT")(id);
+          const double   du_x     = file.field("displacement_increment")(id, 0);
+          const double   du_y     = file.field("displacement_increment")(id, 1);
           if (u_material[c])
             error = std::max({error,
                               std::abs(mu_value - mu_exact(p)),

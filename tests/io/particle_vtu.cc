@@ -1,7 +1,7 @@
-// ParticleOutput writes what ParaView reads: the .vtu files are read back with VTK's XML reader and
-// the point count, the point positions and the field values (kind, mu_over_kT, J, phi, the
-// displacement vector, the Cauchy stress of a stress-free point) compared with what was written
-// (1e-12); the .pvd series lists the output times.
+// ParticleOutput writes what ParaView reads: the .vtu files are read back with VTK's XML reader
+// (through Python, tests/vtu_reader.h) and the point count, the point positions and the field
+// values (kind, mu_over_kT, J, phi, the displacement vector, the Cauchy stress of a stress-free
+// point) compared with what was written (1e-12); the .pvd series lists the output times.
 #include <gelmpm/io/particle_output.h>
 #include <gelmpm/particles/property_layout.h>
 
@@ -16,11 +16,8 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
-#include <vtkDataArray.h>
-#include <vtkPointData.h>
-#include <vtkSmartPointer.h>
-#include <vtkUnstructuredGrid.h>
-#include <vtkXMLUnstructuredGridReader.h>
+
+#include "../vtu_reader.h"
 
 using namespace dealii;
 using namespace GelMPM;
@@ -63,41 +60,35 @@ main(int argc, char **argv)
   output.write(particles, 0.);
   output.write(particles, 0.25);
 
-  vtkSmartPointer<vtkXMLUnstructuredGridReader> reader =
-    vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
-  reader->SetFileName("vtu/particles-00001.vtu");
-  reader->Update();
-  vtkUnstructuredGrid *grid = reader->GetOutput();
-  bool                 ok   = grid->GetNumberOfPoints() == n;
-  std::cout << "points read back: " << grid->GetNumberOfPoints() << std::endl;
+  const auto file = GelMPMTests::read_vtu("vtu/particles-00001.vtu");
+  bool       ok   = file.points.size() == n;
+  std::cout << "points read back: " << file.points.size() << std::endl;
 
-  double     error = 0.;
-  const auto data  = grid->GetPointData();
+  double error = 0.;
   for (const char *name : {"kind", "mu_over_kT", "J", "phi", "displacement", "cauchy_stress"})
     {
-      const bool present = data->GetArray(name) != nullptr;
+      const bool present = file.array(name) != nullptr;
       ok &= present;
       std::cout << "field " << name << " present: " << (present ? "yes" : "no  FAIL") << std::endl;
     }
   if (ok)
     for (unsigned int i = 0; i < n; ++i)
       {
-        double x[3];
-        grid->GetPoint(i, x);
+        const auto &x = file.points[i];
         // Points are written in the order the handler iterates them; match them by position.
         const unsigned int k       = std::lround((x[0] - 0.1) / 0.1);
         const double       stretch = gel.lambda_0() * (1. + 0.01 * k);
         const double       J       = gel.lambda_0() * stretch * stretch;
         error                      = std::max({error,
                                                std::abs(x[1] - (0.2 + 0.05 * k)),
-                                               std::abs(data->GetArray("kind")->GetTuple1(i) - ((k % 2) ? 2 : 0)),
-                                               std::abs(data->GetArray("mu_over_kT")->GetTuple1(i) - gel.mu_0()),
-                                               std::abs(data->GetArray("J")->GetTuple1(i) - J),
-                                               std::abs(data->GetArray("phi")->GetTuple1(i) - (1. - 1. / J)),
-                                               std::abs(data->GetArray("displacement")->GetComponent(i, 0) - 0.01 * k)});
+                                               std::abs(file.field("kind")(i) - ((k % 2) ? 2 : 0)),
+                                               std::abs(file.field("mu_over_kT")(i) - gel.mu_0()),
+                                               std::abs(file.field("J")(i) - J),
+                                               std::abs(file.field("phi")(i) - (1. - 1. / J)),
+                                               std::abs(file.field("displacement")(i, 0) - 0.01 * k)});
         if (k == 0) // stress-free initial state
           for (unsigned int c = 0; c < 9; ++c)
-            error = std::max(error, std::abs(data->GetArray("cauchy_stress")->GetComponent(i, c)));
+            error = std::max(error, std::abs(file.field("cauchy_stress")(i, c)));
       }
   const bool values_ok = error < 1e-6; // the .vtu stores single precision by default
   ok &= values_ok;

@@ -21,13 +21,9 @@
 #include <sstream>
 #include <string>
 #include <vector>
-#include <vtkDataArray.h>
-#include <vtkPointData.h>
-#include <vtkSmartPointer.h>
-#include <vtkUnstructuredGrid.h>
-#include <vtkXMLUnstructuredGridReader.h>
 
 #include "../scene_run.h"
+#include "../vtu_reader.h"
 
 int
 main(int argc, char **argv)
@@ -89,16 +85,13 @@ main(int argc, char **argv)
   std::cout << "mode.pvd lists the mode: " << !last_file.empty() << std::endl;
   if (last_file.empty())
     return 0;
-  const auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
-  reader->SetFileName(("results/" + last_file).c_str());
-  reader->Update();
-  vtkUnstructuredGrid *grid   = reader->GetOutput();
-  vtkDataArray        *field  = grid->GetPointData()->GetArray("displacement_increment");
-  double               ux_max = 0., uy_max = 0., ux_bottom = 0., ux_top = 0.;
-  for (vtkIdType k = 0; field != nullptr && k < grid->GetNumberOfPoints(); ++k)
+  const auto  mode   = GelMPMTests::read_vtu("results/" + last_file);
+  const auto *field  = mode.array("displacement_increment");
+  double      ux_max = 0., uy_max = 0., ux_bottom = 0., ux_top = 0.;
+  for (std::size_t k = 0; field != nullptr && k < mode.points.size(); ++k)
     {
-      const double *u = field->GetTuple3(k);
-      const double *x = grid->GetPoint(k);
+      const double u[2] = {(*field)(k, 0), (*field)(k, 1)};
+      const auto  &x    = mode.points[k];
       if (!std::isfinite(u[0]))
         continue;
       ux_max = std::max(ux_max, std::abs(u[0]));

@@ -10,13 +10,9 @@
 #include <iostream>
 #include <string>
 #include <vector>
-#include <vtkDataArray.h>
-#include <vtkPointData.h>
-#include <vtkSmartPointer.h>
-#include <vtkUnstructuredGrid.h>
-#include <vtkXMLUnstructuredGridReader.h>
 
 #include "../scene_run.h"
+#include "../vtu_reader.h"
 
 int
 main(int argc, char **argv)
@@ -37,23 +33,15 @@ main(int argc, char **argv)
   unsigned int non_finite = 0, arrays = 0;
   for (const auto &file : files)
     {
-      auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
-      reader->SetFileName(file.c_str());
-      reader->Update();
-      vtkPointData *data = reader->GetOutput()->GetPointData();
-      for (int a = 0; a < data->GetNumberOfArrays(); ++a)
+      for (const auto &[name, array] : GelMPMTests::read_vtu(file).point_data)
         {
-          vtkDataArray *array = data->GetArray(a);
-          if (array == nullptr)
-            continue;
           ++arrays;
           unsigned int bad = 0;
-          for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
-            for (int c = 0; c < array->GetNumberOfComponents(); ++c)
-              bad += !std::isfinite(array->GetComponent(i, c));
+          for (const double value : array.values)
+            bad += !std::isfinite(value);
           if (bad > 0)
-            std::cout << "  " << file << ": " << array->GetName() << " has " << bad
-                      << " non-finite values" << std::endl;
+            std::cout << "  " << file << ": " << name << " has " << bad << " non-finite values"
+                      << std::endl;
           non_finite += bad;
         }
     }

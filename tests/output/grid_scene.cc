@@ -23,12 +23,8 @@
 #include <iostream>
 #include <limits>
 #include <sstream>
-#include <vtkCell.h>
-#include <vtkDataArray.h>
-#include <vtkPointData.h>
-#include <vtkSmartPointer.h>
-#include <vtkUnstructuredGrid.h>
-#include <vtkXMLUnstructuredGridReader.h>
+
+#include "../vtu_reader.h"
 
 using namespace GelMPM;
 
@@ -90,39 +86,33 @@ end
   GridSummary
   read(const std::string &file_name)
   {
-    vtkSmartPointer<vtkXMLUnstructuredGridReader> reader =
-      vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
-    reader->SetFileName(file_name.c_str());
-    reader->Update();
-    vtkUnstructuredGrid *grid = reader->GetOutput();
-    const auto           data = grid->GetPointData();
-    GridSummary          s;
-    s.n_cells = grid->GetNumberOfCells();
+    const auto  file = GelMPMTests::read_vtu(file_name);
+    GridSummary s;
+    s.n_cells = file.cells.size();
     for (const char *name :
          {"u_cell_kind", "mu_cell_kind", "n_volume_points", "displacement_increment", "mu_over_kT"})
-      if (data->GetArray(name) == nullptr)
+      if (file.array(name) == nullptr)
         {
           std::cout << "field " << name << " missing  FAIL" << std::endl;
           s.n_cells = 0;
           return s;
         }
     // Cell fields are point data constant on each cell's own points (DataOut).
-    for (vtkIdType k = 0; k < grid->GetNumberOfCells(); ++k)
+    const auto &du = file.field("displacement_increment");
+    for (const auto &cell : file.cells)
       {
-        vtkCell        *cell     = grid->GetCell(k);
-        const vtkIdType first    = cell->GetPointId(0);
-        const long      u_kind   = std::lround(data->GetArray("u_cell_kind")->GetTuple1(first));
-        const long      n_points = std::lround(data->GetArray("n_volume_points")->GetTuple1(first));
+        const std::size_t first    = cell[0];
+        const long        u_kind   = std::lround(file.field("u_cell_kind")(first));
+        const long        n_points = std::lround(file.field("n_volume_points")(first));
         ++s.u_kinds[u_kind];
-        ++s.mu_kinds[std::lround(data->GetArray("mu_cell_kind")->GetTuple1(first))];
+        ++s.mu_kinds[std::lround(file.field("mu_cell_kind")(first))];
         s.n_volume_points += n_points;
         s.material_cells_with_36_points += (u_kind < 2 && n_points == 36);
-        for (vtkIdType v = 0; v < cell->GetNumberOfPoints(); ++v)
+        for (const std::size_t id : cell)
           {
-            const vtkIdType id = cell->GetPointId(v);
-            const double    mu = data->GetArray("mu_over_kT")->GetTuple1(id);
-            const double    dx = data->GetArray("displacement_increment")->GetComponent(id, 0);
-            const double    dy = data->GetArray("displacement_increment")->GetComponent(id, 1);
+            const double mu = file.field("mu_over_kT")(id);
+            const double dx = du(id, 0);
+            const double dy = du(id, 1);
             if (u_kind == 2)
               s.nan_without_material &= std::isnan(mu) && std::isnan(dx) && std::isnan(dy);
             else
