@@ -346,6 +346,8 @@ namespace GelMPM
   void
   declare_obstacles(dealii::ParameterHandler &prm, const std::vector<std::string> &names)
   {
+    // After ContactSettings: an obstacle called like one of its entries would merge with it.
+    require_new_subsection_names(prm, "Contact", names, "Contact/Obstacles", "obstacle");
     prm.enter_subsection("Contact");
     for (const auto &name : names)
       Obstacle<dim>::declare_parameters(prm, name);
