@@ -1,8 +1,14 @@
 #include <gelmpm/core/collective.h>
+#include <gelmpm/core/format_point.h>
+#include <gelmpm/core/input_error.h>
 #include <gelmpm/particles/property_layout.h>
 #include <gelmpm/simulator/scene.h>
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/distributed/tria.h>
+
+#include <algorithm>
+#include <sstream>
 
 namespace GelMPM
 {
@@ -47,6 +53,177 @@ namespace GelMPM
     obstacles = parse_obstacles<dim>(prm, obstacle_names);
     for (auto &obstacle : obstacles)
       obstacle.check_inside_grid(grid.lower, grid.upper);
+  }
+
+
+  namespace
+  {
+    /** The material points inside an obstacle, over all ranks. */
+    template <int dim>
+    struct Overlap
+    {
+      unsigned long long n_inside = 0;
+      unsigned long long n_points = 0;
+      /** The deepest penetration and the point that has it. */
+      double             deepest = 0.;
+      dealii::Point<dim> where;
+    };
+
+
+    /** The points of @p particles inside @p obstacle by more than @p tolerance. */
+    template <int dim>
+    Overlap<dim>
+    overlap(const Obstacle<dim>                           &obstacle,
+            const dealii::Particles::ParticleHandler<dim> &particles,
+            const double                                   tolerance,
+            const MPI_Comm                                 communicator)
+    {
+      Overlap<dim> local;
+      for (const auto &p : particles)
+        {
+          const auto x   = position_of(p.get_location(), p.get_properties());
+          const auto gap = obstacle.gap(x);
+          ++local.n_points;
+          if (!gap.possible || !(gap.g > tolerance))
+            continue;
+          ++local.n_inside;
+          if (gap.g > local.deepest)
+            {
+              local.deepest = gap.g;
+              local.where   = x;
+            }
+        }
+      Overlap<dim> global;
+      global.n_inside          = dealii::Utilities::MPI::sum(local.n_inside, communicator);
+      global.n_points          = dealii::Utilities::MPI::sum(local.n_points, communicator);
+      std::vector<double> mine = {local.deepest};
+      for (unsigned int d = 0; d < dim; ++d)
+        mine.push_back(local.where[d]);
+      // The deepest point of all ranks, the first rank's on a tie: the same on every rank.
+      for (const auto &part : dealii::Utilities::MPI::all_gather(communicator, mine))
+        if (part[0] > global.deepest)
+          {
+            global.deepest = part[0];
+            for (unsigned int d = 0; d < dim; ++d)
+              global.where[d] = part[1 + d];
+          }
+      return global;
+    }
+
+
+    template <int dim>
+    std::string
+    shape_name(const Obstacle<dim> &obstacle)
+    {
+      using Shape = typename Obstacle<dim>::Shape;
+      return obstacle.shape == Shape::plane    ? "plane"
+             : obstacle.shape == Shape::sphere ? "sphere"
+                                               : "flat punch";
+    }
+
+
+    std::string
+    number(const double x)
+    {
+      std::ostringstream text;
+      text << x;
+      return text.str();
+    }
+  } // namespace
+
+
+  template <int dim>
+  void
+  Scene<dim>::check_obstacles(const std::vector<double> &times)
+  {
+    // Far below any gap a scene means, far above the round-off of a point placed on the
+    // obstacle's surface (an obstacle that starts touching the body, gap 0).
+    double smallest_cell = grid.cell_size(0);
+    for (unsigned int d = 1; d < dim; ++d)
+      smallest_cell = std::min(smallest_cell, grid.cell_size(d));
+    const double tolerance = 1e-6 * smallest_cell;
+    for (auto &obstacle : obstacles)
+      {
+        obstacle.check_motion(times);
+        check_obstacle_start(obstacle, tolerance);
+        check_obstacle_path(obstacle, times, tolerance);
+        obstacle.set_time(0.);
+      }
+  }
+
+
+  template <int dim>
+  void
+  Scene<dim>::check_obstacle_start(Obstacle<dim> &obstacle, const double tolerance) const
+  {
+    using Shape = typename Obstacle<dim>::Shape;
+    obstacle.set_time(0.);
+    const auto inside = overlap(obstacle, particles, tolerance, communicator);
+    if (inside.n_inside == 0)
+      return;
+    const std::string where = "Contact/" + obstacle.name;
+    const std::string count =
+      inside.n_inside == inside.n_points
+        ? "all " + std::to_string(inside.n_points) + " material points of the body"
+        : std::to_string(inside.n_inside) + " of the body's " + std::to_string(inside.n_points) +
+            " material points";
+    // A face turned the wrong way holds the body and leaves none outside; turned round it
+    // holds none.
+    if (obstacle.shape != Shape::sphere)
+      {
+        Obstacle<dim> reversed = obstacle;
+        for (unsigned int d = 0; d < dim; ++d)
+          reversed.normal[d] = 0. - obstacle.normal[d]; // not -0
+        if (overlap(reversed, particles, tolerance, communicator).n_inside == 0)
+          throw InputError(where + "/Normal",
+                           "is " + format_point(obstacle.normal) + " (normalised), which puts " +
+                             count + " behind the " + shape_name(obstacle) +
+                             "'s face at t = 0, inside the obstacle; turned round it holds none",
+                           "give the outward normal of the obstacle's face, pointing from the "
+                           "obstacle towards the gel: " +
+                             format_point(reversed.normal));
+      }
+    const std::string how =
+      obstacle.shape == Shape::sphere
+        ? "move 'Center' out of the body or reduce 'Radius'"
+        : "move 'Center' by at least " + number(inside.deepest) + " along 'Normal'";
+    throw InputError(where + "/Center",
+                     "puts the " + shape_name(obstacle) + " around " + count +
+                       " at t = 0 (the deepest " + number(inside.deepest) + " inside, at " +
+                       format_point(inside.where) +
+                       "): contact acts on the body's surface only, so an obstacle that starts "
+                       "inside the body is never pushed out of it (the first step cannot "
+                       "converge), and one wholly inside the gel never touches it",
+                     "place the obstacle clear of the body at t = 0, touching its surface at "
+                     "most: " +
+                       how);
+  }
+
+
+  template <int dim>
+  void
+  Scene<dim>::check_obstacle_path(Obstacle<dim>             &obstacle,
+                                  const std::vector<double> &times,
+                                  const double               tolerance) const
+  {
+    for (const double t : times)
+      {
+        obstacle.set_time(t);
+        const auto inside = overlap(obstacle, particles, tolerance, communicator);
+        if (inside.n_points == 0 || inside.n_inside < inside.n_points)
+          continue;
+        const dealii::Tensor<1, dim> moved = obstacle.reference_point() - obstacle.center;
+        throw InputError("Contact/" + obstacle.name + "/Motion",
+                         "moves the " + shape_name(obstacle) + " by " + format_point(moved) +
+                           " by t = " + number(t) +
+                           ", where it would hold the whole body as it is at t = 0 (all " +
+                           std::to_string(inside.n_points) +
+                           " material points): the gel would have to be pressed to nothing, "
+                           "and the run would stop where it cannot converge",
+                         "give a motion that presses the obstacle into the body by less than "
+                         "the body's size (a slower speed, a ramp that ends earlier), or a "
+                         "shorter 'Time stepping/End time'");
+      }
   }
 
 

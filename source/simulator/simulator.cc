@@ -302,8 +302,7 @@ namespace GelMPM
     const double largest_mu = scene.regions.largest_swelling_chemical_potential();
     for (unsigned int i = 0; i < scene.boundary_conditions.n_pieces(); ++i)
       scene.boundary_conditions.piece(i).check_values(samples[i], times, largest_mu);
-    for (auto &obstacle : scene.obstacles)
-      obstacle.check_motion(times);
+    scene.check_obstacles(times);
   }
 
 

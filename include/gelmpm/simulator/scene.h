@@ -85,6 +85,18 @@ namespace GelMPM
     create_system();
 
     /**
+     * Throw InputError (naming the obstacle's entry) unless every rigid obstacle of "Contact" is
+     * finite at @p times (0 and the end time among them) and clear of the body at t = 0 (no
+     * material point inside it beyond round-off), and no motion takes it so far into the body
+     * that it would hold every material point of the initial body at one of @p times. Contact
+     * acts at the body's surface points only: an obstacle that starts inside the body is never
+     * pushed out of it (the first step fails, or a sphere wholly inside the gel never touches
+     * it), and a body pressed to nothing cannot converge. After create_material_points().
+     */
+    void
+    check_obstacles(const std::vector<double> &times);
+
+    /**
      * On several ranks: partition the cells anew so that each rank holds about as many material
      * points, moving the points with their cells. Nothing on one rank.
      *
@@ -135,6 +147,19 @@ namespace GelMPM
     dealii::Particles::ParticleHandler<dim>     particles;
     std::unique_ptr<DiscreteSpaces<dim>>        spaces;
     std::unique_ptr<MixedSystem<dim>>           system;
+
+  private:
+    /** Throw InputError if @p obstacle holds a material point at t = 0 (gap above
+     * @p tolerance). */
+    void
+    check_obstacle_start(Obstacle<dim> &obstacle, const double tolerance) const;
+
+    /** Throw InputError if @p obstacle holds every material point of the initial body at one
+     * of @p times. */
+    void
+    check_obstacle_path(Obstacle<dim>             &obstacle,
+                        const std::vector<double> &times,
+                        const double               tolerance) const;
   };
 } // namespace GelMPM
 
