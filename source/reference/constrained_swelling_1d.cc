@@ -1,4 +1,5 @@
 #include <gelmpm/reference/constrained_swelling_1d.h>
+#include <gelmpm/reference/numerical_tolerances.h>
 
 #include <algorithm>
 #include <cmath>
@@ -18,18 +19,6 @@ dgtsv_(const int *n,
 
 namespace GelMPM
 {
-  namespace
-  {
-    /**
-     * Relative tolerance of "the step reached its full size": the reference is independent of the
-     * solvers module on purpose, so it keeps its own copy of their time tolerance.
-     */
-    constexpr double relative_time_tolerance = 1e-12;
-
-    /** How far above J = 1 (the mixing energy's domain) a damped Newton state must stay. */
-    constexpr double above_dry_state = 1e-12;
-  } // namespace
-
   ConstrainedSwelling1D::ConstrainedSwelling1D(const Parameters &parameters)
     : parameters(parameters)
     , dt_next(parameters.first_step)
@@ -127,7 +116,7 @@ namespace GelMPM
           dt = std::min(dt, 2. * dt_old);
         if (t_end - t - dt < 1e-3 * dt)
           dt = t_end - t;
-        const bool full = dt >= dt_next * (1. - relative_time_tolerance);
+        const bool full = dt >= dt_next * (1. - ReferenceTolerances::relative_time_tolerance);
         step(dt);
         if (full)
           dt_next *= parameters.growth;
@@ -214,7 +203,7 @@ namespace GelMPM
         const double l03   = std::pow(parameters.lambda_0, 3);
         double       alpha = 1.;
         for (unsigned int i = 0; i < n; ++i)
-          while (l03 * (next[i] - alpha * update[i]) <= 1. + above_dry_state)
+          while (l03 * (next[i] - alpha * update[i]) <= 1. + ReferenceTolerances::above_dry_state)
             alpha *= 0.5;
         for (unsigned int i = 0; i < n; ++i)
           next[i] -= alpha * update[i];

@@ -1,4 +1,5 @@
 #include <gelmpm/reference/free_swelling_sphere_1d.h>
+#include <gelmpm/reference/numerical_tolerances.h>
 
 #include <algorithm>
 #include <cmath>
@@ -22,11 +23,6 @@ namespace GelMPM
 {
   namespace
   {
-    /** As in ConstrainedSwelling1D: "the step reached its full size", relative. */
-    constexpr double relative_time_tolerance = 1e-12;
-
-    /** How far above J = 1 (the mixing energy's domain) a damped Newton state must stay. */
-    constexpr double above_dry_state = 1e-12;
 
     /**
      * Half-bandwidths of the Jacobian in the unknowns' order mu_0, r_1, mu_1, r_2, ...,
@@ -144,7 +140,7 @@ namespace GelMPM
           dt = std::min(dt, 2. * dt_old);
         if (t_end - t - dt < 1e-3 * dt)
           dt = t_end - t;
-        const bool full = dt >= dt_next * (1. - relative_time_tolerance);
+        const bool full = dt >= dt_next * (1. - ReferenceTolerances::relative_time_tolerance);
         step(dt);
         if (full)
           dt_next *= parameters.growth;
@@ -302,7 +298,8 @@ namespace GelMPM
               {
                 const double r_a = k > 0 ? r_next[k] - alpha * update[r_column(k)] : 0.;
                 const double r_b = r_next[k + 1] - alpha * update[r_column(k + 1)];
-                admissible       = r_b > r_a && cell(k, r_a, r_b).J > 1. + above_dry_state;
+                admissible =
+                  r_b > r_a && cell(k, r_a, r_b).J > 1. + ReferenceTolerances::above_dry_state;
               }
             if (admissible || alpha < 1e-10)
               break;

@@ -89,6 +89,7 @@ function(gelmpm_pickup_cases)
 
   add_executable(${_program} EXCLUDE_FROM_ALL ${CMAKE_CURRENT_BINARY_DIR}/${_module}_cases.cc)
   deal_ii_setup_target(${_program})
+  gelmpm_use_pch(${_program})
   target_link_libraries(${_program} ${ARG_LIBRARIES})
   target_compile_definitions(${_program} PRIVATE SOURCE_DIR="${CMAKE_CURRENT_SOURCE_DIR}")
   # A case's main() is an ordinary function here: one that ends without a return would be
