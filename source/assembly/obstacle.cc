@@ -7,6 +7,7 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/lac/vector.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -216,7 +217,7 @@ namespace GelMPM
 
   template <int dim>
   dealii::Tensor<1, dim>
-  Obstacle<dim>::displacement(const double t)
+  Obstacle<dim>::displacement(const double t) const
   {
     dealii::Tensor<1, dim> u;
     if (!motion)
@@ -225,6 +226,24 @@ namespace GelMPM
     for (unsigned int d = 0; d < dim; ++d)
       u[d] = motion->value(center, d);
     return u;
+  }
+
+
+  template <int dim>
+  double
+  Obstacle<dim>::travel(const double t_begin, const double t_end) const
+  {
+    if (!motion)
+      return 0.;
+    constexpr unsigned int       n_samples = 8;
+    const dealii::Tensor<1, dim> start     = displacement(t_begin);
+    double                       farthest  = 0.;
+    for (unsigned int k = 1; k <= n_samples; ++k)
+      {
+        const double t = k == n_samples ? t_end : t_begin + (t_end - t_begin) * k / n_samples;
+        farthest       = std::max(farthest, (displacement(t) - start).norm());
+      }
+    return farthest;
   }
 
 

@@ -143,6 +143,31 @@ namespace GelMPM
 
 
   template <int dim>
+  typename MaterialPointModel<dim>::StepBound
+  MaterialPointModel<dim>::bound_step(const double t_begin, const double dt) const
+  {
+    const double largest = Obstacle<dim>::largest_travel_in_cells * scene.spaces->h_u();
+    StepBound    bound{dt, ""};
+    for (const auto &obstacle : scene.obstacles)
+      // A uniform motion meets the bound at once; a varying one within a few rounds, each
+      // shortening the step by at least 1 %.
+      for (double moved;
+           (moved = obstacle.travel(t_begin, t_begin + bound.dt)) > largest * (1. + 1e-9);)
+        {
+          std::ostringstream reason;
+          reason << "the obstacle '" << obstacle.name << "' would travel " << moved
+                 << " in it, more than " << Obstacle<dim>::largest_travel_in_cells
+                 << " cells of the grid (" << largest << "), where contact could miss it";
+          bound.reason = reason.str();
+          bound.dt *= std::clamp(largest / moved, 1e-3, 0.99);
+          if (bound.dt < 1e-300)
+            break;
+        }
+    return bound;
+  }
+
+
+  template <int dim>
   double
   MaterialPointModel<dim>::increment_deviation(const dealii::Vector<double> &solution,
                                                const double                  ratio) const

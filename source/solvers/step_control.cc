@@ -67,6 +67,18 @@ namespace GelMPM
   }
 
 
+  void
+  StepControl::limit_attempt(const double dt)
+  {
+    // A bracket's step forced to a shorter one no longer ends on the unstable time: bracketing
+    // starts again from the state it reaches, as after a failed attempt.
+    bisecting     = false;
+    attempt_limit = dt;
+    // Landing on a stop time or the end as attempt() does, rather than leaving a remainder.
+    current = settings_.next_step(time_, dt);
+  }
+
+
   double
   StepControl::attempt_size() const
   {

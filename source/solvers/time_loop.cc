@@ -41,6 +41,13 @@ namespace GelMPM
   }
 
 
+  SteppedModel::StepBound
+  SteppedModel::bound_step(const double, const double dt) const
+  {
+    return {dt, ""};
+  }
+
+
   double
   SteppedModel::largest_motion_in_cells(const dealii::Vector<double> &) const
   {
@@ -203,7 +210,9 @@ namespace GelMPM
         if ((signal_ = model.stop_signal()) != 0)
           return StepOutcome::interrupted;
         const double t_begin = control_.time();
-        const double step_dt = control_.attempt();
+        double       step_dt = control_.attempt();
+        if (!bound_attempt(t_begin, step_dt))
+          return StepOutcome::failed;
         model.prepare_attempt(t_begin, step_dt, last_dt, solution);
         NewtonReport report = solve_newton(model.system(),
                                            solution,
@@ -276,6 +285,32 @@ namespace GelMPM
           observer->accepted(accepted, solution);
         return StepOutcome::accepted;
       }
+  }
+
+
+  bool
+  TimeLoop::bound_attempt(const double t_begin, double &step_dt)
+  {
+    const auto bound = model.bound_step(t_begin, step_dt);
+    if (!(bound.dt < step_dt))
+      return true;
+    if (!(bound.dt >= time_stepping.minimum_step))
+      {
+        std::ostringstream why;
+        why << "the step at t/tau_d = " << t_begin << " would have to be shorter than 'Time "
+            << "stepping/Minimum step' = " << time_stepping.minimum_step << ": " << bound.reason;
+        failure_ = why.str();
+        log << "    " << failure_ << std::endl;
+        return false;
+      }
+    if (!step_bound_said)
+      log << "    step " << control_.step() + 1 << " at t = " << t_begin
+          << " shortened from dt = " << step_dt << " to " << bound.dt << ": " << bound.reason
+          << " (steps so shortened are not reported from here on)" << std::endl;
+    step_bound_said = true;
+    control_.limit_attempt(bound.dt);
+    step_dt = bound.dt;
+    return true;
   }
 
 

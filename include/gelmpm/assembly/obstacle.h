@@ -87,6 +87,26 @@ namespace GelMPM
     const dealii::Point<dim> &
     reference_point() const;
 
+    /**
+     * How far the obstacle travels in the step [@p t_begin, @p t_end]: the largest distance of
+     * its reference point from where it is at @p t_begin, sampled at 8 times within the step
+     * (its end included), so that a motion that goes and comes back within the step counts.
+     */
+    double
+    travel(const double t_begin, const double t_end) const;
+
+    /**
+     * The largest travel() of an obstacle in one step, in cells of the displacement grid (the
+     * step control shortens the steps to it, MaterialPointModel::bound_step()). Contact is
+     * found at the end of a step only: an obstacle that travels farther than the body is thick
+     * in one step passes through it unseen (a sphere moving 0.8 per step crossed a post 0.5
+     * wide without a contact force). Half a cell keeps every feature the grid resolves (a cell
+     * or more) from being jumped over, and bounds the penetration that one step's Newton
+     * iteration must push back to half a cell (the rigid flat punch's ramp moves it 0.36 cells
+     * per step, prm/flat_punch_rigid.prm).
+     */
+    static constexpr double largest_travel_in_cells = 0.5;
+
     /** The gap of the current position @p x. */
     Gap
     gap(const dealii::Point<dim> &x) const;
@@ -131,7 +151,7 @@ namespace GelMPM
 
     /** The motion's value at @p t. */
     dealii::Tensor<1, dim>
-    displacement(const double t);
+    displacement(const double t) const;
   };
 
 

@@ -67,6 +67,11 @@ namespace GelMPM
     double
     largest_motion_in_cells(const dealii::Vector<double> &solution) const override;
 
+    /** The longest step from @p t_begin, at most @p dt, in which no rigid obstacle travels
+     * more than Obstacle::largest_travel_in_cells cells of the displacement grid. */
+    StepBound
+    bound_step(const double t_begin, const double dt) const override;
+
     double
     increment_deviation(const dealii::Vector<double> &solution, const double ratio) const override;
 

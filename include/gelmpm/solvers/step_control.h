@@ -129,6 +129,14 @@ namespace GelMPM
     double
     attempt();
 
+    /**
+     * Shorten the current attempt to @p dt (below attempt_size()): a bound of the model's
+     * (SteppedModel::bound_step()), which acts as a step cap does: a step accepted at it sets
+     * the proposed step, from which the Newton rule grows the next.
+     */
+    void
+    limit_attempt(const double dt);
+
     /** The size of the current attempt (the last attempt() returned). */
     double
     attempt_size() const;

@@ -94,6 +94,23 @@ namespace GelMPM
     virtual bool
     measures_motion_in_cells() const;
 
+    /** What bound_step() allows, and why. */
+    struct StepBound
+    {
+      /** The longest step allowed (at most the step asked about). */
+      double dt = 0.;
+      /** What bounds it, for the log and a failure message (empty: nothing). */
+      std::string reason;
+    };
+
+    /**
+     * The longest step from @p t_begin, at most @p dt, that what the model prescribes itself
+     * allows: the material points bound the travel of a rigid obstacle in one step
+     * (Obstacle::largest_travel_in_cells). By default @p dt.
+     */
+    virtual StepBound
+    bound_step(const double t_begin, const double dt) const;
+
     /** The largest displacement of the converged @p solution, in cells of the grid. */
     virtual double
     largest_motion_in_cells(const dealii::Vector<double> &solution) const;
@@ -194,7 +211,8 @@ namespace GelMPM
    * used, the counters and the output schedule.
    *
    * Per step: the model's begin_step(), the observers' step_begins(); then attempts until one is
-   * accepted: StepControl gives its size, the model sets the boundary data and the first
+   * accepted: StepControl gives its size (shortened to what the model's bound_step() allows),
+   * the model sets the boundary data and the first
    * iterate, solve_newton() solves, and the attempt is judged in turn by the rules of 'Time
    * stepping' ('Largest increment', 'Displacement tolerance', 'Tolerance': the model's
    * estimates against StepControl's bounds) and by the observers (the signature). A failed
@@ -323,6 +341,13 @@ namespace GelMPM
     bool
     error_acceptable(const dealii::Vector<double> &solution, const double dt, std::string &failure);
 
+    /**
+     * Shorten the attempt @p step_dt from @p t_begin to what the model's bound_step() allows;
+     * false (and failure() says why) if that is below the minimum step.
+     */
+    bool
+    bound_attempt(const double t_begin, double &step_dt);
+
     /** Whether the output schedule falls on the step just accepted (and advance it). */
     bool
     output_due();
@@ -351,6 +376,8 @@ namespace GelMPM
     unsigned long n_newton_iterations   = 0;
     unsigned long n_factorizations      = 0;
     unsigned long n_uncontrolled_errors = 0;
+    /** Whether the log has said that the model bounds the steps (bound_step()). */
+    bool step_bound_said = false;
   };
 } // namespace GelMPM
 
