@@ -780,6 +780,9 @@ namespace GelMPM
             std::ostringstream message;
             message << "gelmpm: the run cannot converge beyond t/tau_d = " << current_time()
                     << "; results up to there are in " << output_settings.directory;
+            // Why, on stderr too: the log's line per attempt is not where one looks first.
+            if (!loop->failure().empty())
+              message << ": " << loop->failure();
             if (!loop->round_off_hint().empty())
               message << " (" << loop->round_off_hint() << ")";
             pcout << message.str() << std::endl;

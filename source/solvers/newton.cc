@@ -180,6 +180,14 @@ namespace GelMPM
       return report.residual_u * report.residual_u + report.residual_mu * report.residual_mu;
     };
 
+    // After a failed linear solve (of an earlier attempt or step) a first iterate that meets the
+    // tolerance proves nothing: the failures cut the step until the predictor's residual alone
+    // fell below it, and such steps were accepted without a single solve (GMRES restarted after
+    // every vector: steps of 1e-7 with no Newton iteration, the run crawling). One iteration,
+    // whose solve must succeed, or the attempt fails and the step is cut again.
+    const unsigned int minimum_iterations = linear_solver.last_call_failed()
+                                              ? std::max(settings.minimum_iterations, 1u)
+                                              : settings.minimum_iterations;
     // Whether the next iteration factorises the tangent at its iterate. Without reuse every
     // assembly includes the tangent, which the next iteration then factorises.
     bool fresh = !reuse || !linear_solver.has_factorization();
@@ -193,7 +201,7 @@ namespace GelMPM
             report.failure = "the residual is not finite";
             return report;
           }
-        if (k >= settings.minimum_iterations && report.residual_u <= settings.tolerance &&
+        if (k >= minimum_iterations && report.residual_u <= settings.tolerance &&
             report.residual_mu <= settings.tolerance)
           {
             report.converged = true;

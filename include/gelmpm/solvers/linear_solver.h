@@ -113,6 +113,14 @@ namespace GelMPM
     has_factorization() const;
 
     /**
+     * Whether the last factorize() or solve() failed (threw). A Newton solve then takes at least
+     * one iteration (solve_newton()): a state that meets the tolerance without a solve proves
+     * nothing once the solver has failed.
+     */
+    bool
+    last_call_failed() const;
+
+    /**
      * The LDL^T factorisation of the last factorize() when the matrices are symmetric and
      * MUMPS factorises them, else nullptr: its inertia is the signature of that matrix.
      */
@@ -174,6 +182,10 @@ namespace GelMPM
     std::pair<unsigned long, unsigned long>
     krylov_iterations() const;
 
+    /** The shortest 'Krylov restart' accepted (restart 2 stalled on the §4.1 test scene, 5 did
+     * not). */
+    static constexpr unsigned int smallest_krylov_restart = 10;
+
   private:
     /** 'automatic': choose MUMPS or Krylov at the first factorisation of @p K. */
     void
@@ -194,6 +206,7 @@ namespace GelMPM
     // The matrix the factorisation was analysed for (LDL^T path).
     mutable const Epetra_CrsMatrix *analysed_matrix = nullptr;
     mutable bool                    factorized      = false;
+    mutable bool                    call_failed     = false;
     bool                            keep_values     = false;
     mutable SparseEntries           factorized_entries;
     mutable unsigned int            symbolic_count = 0;

@@ -128,6 +128,11 @@ namespace GelMPM
    * converged state to the tolerance; near it an old tangent costs a few cheap iterations where
    * a fresh one costs an assembly of the tangent and a factorisation.
    *
+   * A first iterate that meets the tolerance is the solution (no iteration), unless the linear
+   * solver's last call failed (LinearSolver::last_call_failed()): then one iteration, whose solve
+   * must succeed, is taken, so that cutting the step after a failing solve cannot end in a step
+   * accepted without any solve.
+   *
    * @p system is any discretisation of the mixed u–mu step (NewtonSystem): the material point
    * system MixedSystem and the body-fitted FemMixedSystem.
    */
