@@ -50,6 +50,16 @@ namespace GelMPM
     discretisation.parse_parameters(prm);
     nitsche.parse_parameters(prm);
     contact.parse_parameters(prm, dim, obstacle_names);
+    // Both name statistics columns <name>_force_x, ...: the piece's force would be lost.
+    for (const auto &name : obstacle_names)
+      require(std::find(boundary_pieces.begin(), boundary_pieces.end(), name) ==
+                boundary_pieces.end(),
+              "Contact/Obstacles",
+              "names the obstacle '" + name +
+                "', and 'Boundary conditions/Pieces' names a piece '" + name +
+                "': both would write the statistics columns " + name +
+                "_force_x, ..., and the piece's force would be lost",
+              "give the obstacle a name of its own, e.g. '" + name + "_obstacle'");
     obstacles = parse_obstacles<dim>(prm, obstacle_names);
     for (auto &obstacle : obstacles)
       obstacle.check_inside_grid(grid.lower, grid.upper);
