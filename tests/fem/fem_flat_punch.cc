@@ -12,12 +12,13 @@
 //   between 8 x 8 and 16 x 16 cells to 2 % of its value and between the MPM and the 16 x 16 FE
 //   model to 6 % (measured: 1.2 % and 4.5 %; doc/fem_peer.md: the FE value converges at first
 //   order under refinement, towards -2.08 %);
-// - the failure of the body-fitted mesh documented in doc/fem_peer.md: at the scene's depth
-//   0.09 H, 32 x 32 cells with full Newton updates ('Newton/Line search = none') stop before the
-//   end of the ramp (at a punch depth between 0.06 and 0.09 H), with the largest ratio of
-//   principal stretches at a Gauss point above 2.3 (the compressed surface at the punch edge);
-//   with the damped Newton (the default, 'physical') the same mesh reaches the end of the ramp,
-//   at a stretch ratio above 3 (measured 3.26): that stop was Newton's, not the mesh's.
+// - the scene's depth 0.09 H on 16 x 16 cells: the ramp reaches its end with the punch at
+//   -0.09 H (to 1e-12), still undrained (|dV/V| < 1e-3; measured 3.0e-4). This mesh is far from
+//   where it gives out (doc/fem_peer.md: it passes 0.15 H; measured here, a ramp to 0.15 H ends
+//   at a largest stretch ratio of 5.8, against 2.2 at 0.09 H). The failure of the finer 32 x 32
+//   mesh at this depth is documented there but not asserted: its path runs at the edge of what
+//   that mesh survives, and whether the damped Newton gets through the ramp or stops at 0.0696 H
+//   depends on the BLAS kernel and the number of threads.
 #include <gelmpm/core/parameters.h>
 #include <gelmpm/fem/fem_flat_punch.h>
 
@@ -45,19 +46,15 @@ namespace
   };
 
   Run
-  run_fem(const unsigned int cells,
-          const double       depth,
-          const double       end_time,
-          const std::string &minimum_step = "1e-12",
-          const std::string &line_search  = "physical")
+  run_fem(const unsigned int cells, const double depth, const double end_time)
   {
     const auto  material      = FemFlatPunch::scene_material();
     const auto  settings      = GelMPM::fem_run_settings({{"Initial step", "3.125e-7"},
                                                           {"End time", GelMPM::entry_value(end_time)},
                                                           {"Step caps", "3.125e-6: 3.125e-7"},
                                                           {"Stop at times", "3.125e-6"},
-                                                          {"Minimum step", minimum_step}},
-                                                   {{"Line search", line_search}});
+                                                          {"Minimum step", "1e-12"}},
+                                                   {});
     const auto &time_stepping = settings.time_stepping;
     const auto &newton        = settings.newton;
 
@@ -136,22 +133,13 @@ main(int argc, char **argv)
   if (!(method_difference < 0.06))
     std::cout << "  (MPM " << drained << ", FE " << fine.volume_change_end << ")" << std::endl;
 
-  const Run    deep    = run_fem(32, 0.09, t_inc, "1e-9", "none");
-  const double reached = -deep.last.punch_displacement;
-  std::cout << "FE 32 x 32 at depth 0.09, full Newton: stops before the end of the ramp: "
-            << !deep.result.completed
-            << "; at a depth between 0.06 and 0.09: " << (reached > 0.06 && reached < 0.09)
-            << "; largest stretch ratio above 2.3: "
-            << (deep.last.deformation.max_stretch_ratio > 2.3) << std::endl;
-  if (!(reached > 0.06 && reached < 0.09 && deep.last.deformation.max_stretch_ratio > 2.3))
-    std::cout << "  (depth " << reached << ", stretch ratio "
-              << deep.last.deformation.max_stretch_ratio << ")" << std::endl;
-  const Run damped = run_fem(32, 0.09, t_inc, "1e-9", "physical");
-  std::cout << "FE 32 x 32 at depth 0.09, damped Newton: reaches the end of the ramp: "
-            << damped.result.completed << "; largest stretch ratio above 3: "
-            << (damped.last.deformation.max_stretch_ratio > 3.) << std::endl;
-  if (!(damped.result.completed && damped.last.deformation.max_stretch_ratio > 3.))
-    std::cout << "  (depth " << -damped.last.punch_displacement << ", stretch ratio "
-              << damped.last.deformation.max_stretch_ratio << ")" << std::endl;
+  const Run deep = run_fem(16, 0.09, t_inc);
+  std::cout << "FE 16 x 16 at the scene's depth 0.09: reaches the end of the ramp: "
+            << deep.result.completed << "; punch at -0.09 to 1e-12: " << (deep.punch_error < 1e-12)
+            << "; undrained |dV/V| below 1e-3: " << (std::abs(deep.volume_change_undrained) < 1e-3)
+            << std::endl;
+  if (!(deep.result.completed && std::abs(deep.volume_change_undrained) < 1e-3))
+    std::cout << "  (depth " << -deep.last.punch_displacement << ", dV/V "
+              << deep.volume_change_undrained << ")" << std::endl;
   return 0;
 }
