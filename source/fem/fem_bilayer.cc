@@ -1,3 +1,5 @@
+#include <gelmpm/core/input_error.h>
+#include <gelmpm/core/parameters.h>
 #include <gelmpm/core/round_off.h>
 #include <gelmpm/fem/fem_bilayer.h>
 
@@ -42,17 +44,21 @@ namespace GelMPM
                                   std::to_string(materials_.size()));
     if (!(parameters.length > 0.) || !(parameters.thickness > 0.))
       throw std::invalid_argument("the strip's length and thickness must be positive");
-    if (parameters.cells < 2 || parameters.cells % 2 != 0)
-      throw std::invalid_argument(
-        "the cells through the thickness must be even (the interface of the layers is a mesh "
-        "line), not " +
-        std::to_string(parameters.cells));
+    require(parameters.cells >= 2 && parameters.cells % 2 == 0,
+            "FE peer/Cells",
+            "is " + std::to_string(parameters.cells) +
+              ", but the cells through the thickness must be even: the interface of the layers "
+              "is a mesh line",
+            "give an even number, e.g. 8");
     const double along = parameters.cells * parameters.length / 2. / parameters.thickness;
     if (std::abs(along - std::round(along)) > 1e-9)
       throw std::invalid_argument("square cells need cells x length / (2 thickness) to be a whole "
                                   "number of cells along the half strip");
-    if (!(parameters.ramp_time > 0.))
-      throw std::invalid_argument("the ramp time must be positive");
+    require(parameters.ramp_time > 0.,
+            "FE peer/Ramp time",
+            "is " + entry_value(parameters.ramp_time) +
+              ", but the bath's ramp needs a positive time",
+            "give the scene's ramp time, e.g. 1 (tau_d)");
 
     dealii::GridGenerator::subdivided_hyper_rectangle(
       triangulation,

@@ -1,3 +1,5 @@
+#include <gelmpm/core/input_error.h>
+#include <gelmpm/core/parameters.h>
 #include <gelmpm/core/round_off.h>
 #include <gelmpm/fem/fem_column.h>
 
@@ -18,8 +20,11 @@ namespace GelMPM
       throw std::invalid_argument("the column's width and height must be positive");
     if (parameters.cells == 0)
       throw std::invalid_argument("the mesh needs at least one cell across the width");
-    if (!(parameters.ramp_time > 0.))
-      throw std::invalid_argument("the ramp time must be positive");
+    require(parameters.ramp_time > 0.,
+            "FE peer/Ramp time",
+            "is " + entry_value(parameters.ramp_time) +
+              ", but the ramp of mu needs a positive time",
+            "give the scene's t_inc, e.g. 0.75 (tau_d)");
     // Square cells: as many along the height as the aspect ratio asks for.
     const double along = parameters.cells * parameters.height / parameters.width;
     if (std::abs(along - std::round(along)) > 1e-9)

@@ -1,3 +1,5 @@
+#include <gelmpm/core/input_error.h>
+#include <gelmpm/core/parameters.h>
 #include <gelmpm/fem/fem_constrained_swelling.h>
 
 #include <deal.II/grid/grid_generator.h>
@@ -21,12 +23,20 @@ namespace GelMPM
     : material(material)
     , parameters(parameters)
   {
-    if (!(parameters.width > 0.) || !(parameters.height > 0.))
-      throw std::invalid_argument("the layer's width and height must be positive");
+    // The entries of gelmpm-fem-swelling's section 'FE peer' (PeerInput).
+    require(parameters.width > 0.,
+            "FE peer/Width",
+            "is " + entry_value(parameters.width) + ", but the layer needs a positive width",
+            "give the width of the layer in h_0, e.g. 0.2");
+    if (!(parameters.height > 0.))
+      throw std::invalid_argument("the layer's height must be positive");
     if (parameters.cells_x == 0 || parameters.cells_y == 0)
       throw std::invalid_argument("the mesh needs at least one cell in each direction");
-    if (!(parameters.grading >= 1.))
-      throw std::invalid_argument("the grading exponent must be at least 1 (1: uniform)");
+    require(parameters.grading >= 1.,
+            "FE peer/Grading",
+            "is " + entry_value(parameters.grading) +
+              ", below 1: the cells would grow towards the top instead of shrinking",
+            "give an exponent of at least 1 (1: uniform)");
 
     std::vector<std::vector<double>> steps(2);
     steps[0].assign(parameters.cells_x, parameters.width / parameters.cells_x);

@@ -1,3 +1,5 @@
+#include <gelmpm/core/input_error.h>
+#include <gelmpm/core/parameters.h>
 #include <gelmpm/core/round_off.h>
 #include <gelmpm/fem/fem_flat_punch.h>
 
@@ -29,8 +31,11 @@ namespace GelMPM
       throw std::invalid_argument("the gel's size must be positive");
     if (parameters.cells == 0)
       throw std::invalid_argument("the mesh needs at least one cell in each direction");
-    if (!(parameters.punch_width > 0.) || !(parameters.punch_width < parameters.size))
-      throw std::invalid_argument("the punch width must lie between 0 and the gel's size");
+    require(parameters.punch_width > 0. && parameters.punch_width < parameters.size,
+            "FE peer/Punch width",
+            "is " + entry_value(parameters.punch_width) + ", outside the gel's width (0, " +
+              entry_value(parameters.size) + ")",
+            "give the width of the scene's punch piece, e.g. 0.25");
     const double edge_cells = parameters.cells * parameters.punch_width / parameters.size;
     if (std::abs(edge_cells - std::round(edge_cells)) > 1e-9)
       {
@@ -40,15 +45,20 @@ namespace GelMPM
           {
             const double cells_under_punch = n * parameters.punch_width / parameters.size;
             if (std::abs(cells_under_punch - std::round(cells_under_punch)) < 1e-9)
-              fix = "; e.g. " + std::to_string(n) + " cells";
+              fix = ", e.g. " + std::to_string(n);
           }
-        throw std::invalid_argument(
-          "the punch edge must fall on a mesh vertex, but " + std::to_string(parameters.cells) +
-          " cells put it inside a cell (cells x punch width / size must be a whole number" + fix +
-          ")");
+        throw InputError("FE peer/Cells",
+                         "is " + std::to_string(parameters.cells) +
+                           ", which puts the punch's edge inside a cell, but it must fall on a "
+                           "mesh vertex",
+                         "give cells such that cells x 'Punch width' / size is a whole number" +
+                           fix);
       }
-    if (!(parameters.ramp_time > 0.))
-      throw std::invalid_argument("the ramp time must be positive");
+    require(parameters.ramp_time > 0.,
+            "FE peer/Ramp time",
+            "is " + entry_value(parameters.ramp_time) +
+              ", but the punch's motion needs a positive time",
+            "give the scene's ramp time, e.g. 3.125e-6 (tau_d)");
 
     dealii::GridGenerator::subdivided_hyper_rectangle(triangulation,
                                                       {parameters.cells, parameters.cells},

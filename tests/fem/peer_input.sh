@@ -5,8 +5,10 @@
 #   lambda_0 it reports (the Table 1 default is 1.2801);
 # - bad input exits with status 2 and one message naming the entry: a 3D scene ('Dimension'), the
 #   scene of another benchmark ('Time stepping/Characteristic length', 'Material/Regions'), a
-#   non-physical gel ('Material/Shear modulus'), a malformed peer entry ('FE peer/Cells'), an
-#   unknown entry, a gelmpm-only option; and nothing is written.
+#   non-physical gel ('Material/Shear modulus'), a malformed peer entry ('FE peer/Cells'), peer
+#   entries that the peer's mesh cannot take ('FE peer/Width' 0, 'FE peer/Cells' that put the
+#   punch's edge inside a cell, 'FE peer/Ramp time' 0: they ended with exit 1 and a message
+#   naming no entry), an unknown entry, a gelmpm-only option; and nothing is written.
 # Arguments: the build directory, the source directory.
 set -u
 build="$1"
@@ -38,12 +40,50 @@ check "negative modulus" 2 "Material/Shear modulus" "${build}/gelmpm-fem-swellin
   "${prm}/constrained_swelling.prm" --set "Material/Shear modulus=-1"
 check "malformed cells" 2 "FE peer/Cells" "${build}/gelmpm-fem-flat-punch" "${prm}/flat_punch.prm" \
   --set "FE peer/Cells=abc"
+check "zero width" 2 "'FE peer/Width' is 0" "${build}/gelmpm-fem-swelling" \
+  "${prm}/constrained_swelling.prm" --set "FE peer/Width=0"
+check "punch edge in a cell" 2 "'FE peer/Cells' is 21" "${build}/gelmpm-fem-flat-punch" \
+  "${prm}/flat_punch.prm" --set "FE peer/Cells=21"
+check "zero ramp time" 2 "'FE peer/Ramp time' is 0" "${build}/gelmpm-fem-column" \
+  "${prm}/column_buckling.prm" --set "FE peer/Ramp time=0"
 check "unknown entry" 2 "FE peer/Cels" "${build}/gelmpm-fem-flat-punch" "${prm}/flat_punch.prm" \
   --set "FE peer/Cels=4"
 check "gelmpm option" 2 "'--resume' is an option of gelmpm" "${build}/gelmpm-fem-swelling" \
   "${prm}/constrained_swelling.prm" --resume
+# A peer whose body is one gel refuses a scene with material regions (it dropped them silently).
+check "two gels" 2 "'Material/Regions' names the region(s) passive, but gelmpm-fem-swelling" \
+  "${build}/gelmpm-fem-swelling" "${prm}/bilayer_actuator.prm"
+check "column with a region" 2 "'Material/Regions' names the region(s) soft, but gelmpm-fem-column" \
+  "${build}/gelmpm-fem-column" "${prm}/column_buckling.prm" --set "Material/Regions=soft" \
+  --set "Material/soft/Selector=y < 1" --set "Material/soft/Flory-Huggins chi=0.3"
 if [[ -n "$(ls -A)" ]]; then
   echo "FAIL: files were written: $(ls -A)"
   failures=$((failures + 1))
 fi
+# The output directory is claimed as gelmpm claims its own (PeerInput::claim_output_directory):
+# a peer runs into a new directory and again into its own, but a directory that holds a gelmpm
+# run's results is refused and its statistics.csv left as it was (the peer overwrote it), and so
+# is a directory whose lock (gelmpm.lock) another run holds, here this script.
+short=(--set "Time stepping/End time=1e-3" --quiet)
+check "new directory" 0 "results: fem/statistics.csv" "${build}/gelmpm-fem-swelling" \
+  "${prm}/constrained_swelling.prm" --set "FE peer/Output directory=fem" "${short[@]}"
+check "own directory again" 0 "results: fem/statistics.csv" "${build}/gelmpm-fem-swelling" \
+  "${prm}/constrained_swelling.prm" --set "FE peer/Output directory=fem" "${short[@]}"
+"${build}/gelmpm" "${prm}/constrained_swelling.prm" --set "Output/Directory=mpm" \
+  --set "Time stepping/End time=1e-3" >/dev/null 2>&1
+before=$(md5sum <mpm/statistics.csv)
+check "gelmpm's directory" 2 "'FE peer/Output directory' is 'mpm', which holds the results of a gelmpm run" \
+  "${build}/gelmpm-fem-swelling" "${prm}/constrained_swelling.prm" \
+  --set "FE peer/Output directory=mpm" "${short[@]}"
+if [[ $(md5sum <mpm/statistics.csv) != "${before}" ]]; then
+  echo "FAIL: the gelmpm run's statistics.csv was changed"
+  failures=$((failures + 1))
+fi
+mkdir busy
+exec 9>busy/gelmpm.lock
+flock -n 9
+check "locked directory" 2 "'FE peer/Output directory' is 'busy', the output directory of another GelMPM run" \
+  "${build}/gelmpm-fem-swelling" "${prm}/constrained_swelling.prm" \
+  --set "FE peer/Output directory=busy" "${short[@]}"
+exec 9>&-
 exit ${failures}

@@ -68,8 +68,9 @@ namespace GelMPM
     layer_materials(const double chi_passive);
 
     /**
-     * Builds the mesh and the system with the layers of layer_materials(chi_passive); throws
-     * std::invalid_argument on invalid parameters.
+     * Builds the mesh and the system with the layers of layer_materials(chi_passive). Throws
+     * InputError naming the entry of gelmpm-fem-bilayer's section 'FE peer' on a value its mesh
+     * cannot take, std::invalid_argument on other invalid parameters.
      */
     explicit FemBilayer(const Parameters &parameters);
 

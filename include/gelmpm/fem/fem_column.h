@@ -75,7 +75,11 @@ namespace GelMPM
     double
     characteristic_length() const;
 
-    /** Builds the mesh and the system; throws std::invalid_argument on invalid parameters. */
+    /**
+     * Builds the mesh and the system. Throws InputError naming the entry of the tool's section
+     * 'FE peer' on a value its mesh cannot take, std::invalid_argument on other invalid
+     * parameters.
+     */
     FemColumn(const FloryRehnerGel<2> &material, const Parameters &parameters);
 
     /**

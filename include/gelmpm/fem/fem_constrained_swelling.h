@@ -47,7 +47,11 @@ namespace GelMPM
       double delta_h_over_h0 = 0.;
     };
 
-    /** Builds the mesh and the system; throws std::invalid_argument on invalid parameters. */
+    /**
+     * Builds the mesh and the system. Throws InputError naming the entry of the tool's section
+     * 'FE peer' on a value its mesh cannot take, std::invalid_argument on other invalid
+     * parameters.
+     */
     FemConstrainedSwelling(const FloryRehnerGel<2> &material, const Parameters &parameters);
 
     /**

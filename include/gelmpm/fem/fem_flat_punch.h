@@ -69,7 +69,11 @@ namespace GelMPM
     static FloryRehnerGel<2>
     scene_material();
 
-    /** Builds the mesh and the system; throws std::invalid_argument on invalid parameters. */
+    /**
+     * Builds the mesh and the system. Throws InputError naming the entry of the tool's section
+     * 'FE peer' on a value its mesh cannot take, std::invalid_argument on other invalid
+     * parameters.
+     */
     FemFlatPunch(const FloryRehnerGel<2> &material, const Parameters &parameters);
 
     /** Run to time_stepping.end_time, calling @p on_step after every converged step. */
