@@ -2,8 +2,10 @@
 # Sets up GelMPM on Debian 12: installs the Debian packages that are missing, configures and builds
 # into build/ (Release). Idempotent: a second call only rebuilds what changed.
 #
-#   bash contrib/setup.sh [--plotting]
+#   bash contrib/setup.sh [--plotting] [--target <target>]
 #
+# --target builds one target and what it needs instead of everything (contrib/run.sh builds only
+# gelmpm, not the peer and reference tools that the tests use).
 # --plotting also installs what the plotting scripts in contrib/plotting need (matplotlib, numpy;
 # they read .vtu files with VTK's Python module, as the tests do); run those scripts with
 # /usr/bin/python3, which sees Debian's packages.
@@ -36,9 +38,19 @@ packages=(
   g++            # compiler
   make           # build tool
 )
-if [[ "${1:-}" == "--plotting" ]]; then
-  packages+=(python3-numpy python3-matplotlib)
-fi
+targets=()
+while (($#)); do
+  case "$1" in
+    --plotting) packages+=(python3-numpy python3-matplotlib) ;;
+    --target)
+      [[ $# -ge 2 ]] || { echo "error: --target needs a target name, e.g. --target gelmpm" >&2; exit 1; }
+      targets=(--target "$2")
+      shift ;;
+    *) echo "error: unknown option '$1' (usage: contrib/setup.sh [--plotting] [--target <target>])" >&2
+       exit 1 ;;
+  esac
+  shift
+done
 
 missing=()
 for p in "${packages[@]}"; do
@@ -77,4 +89,4 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 if [[ ! -f "${build_dir}/CMakeCache.txt" ]]; then
   cmake -S "${top}" -B "${build_dir}" -DCMAKE_BUILD_TYPE="${build_type}" >/dev/null
 fi
-cmake --build "${build_dir}" -j "${jobs}"
+cmake --build "${build_dir}" -j "${jobs}" "${targets[@]}"
