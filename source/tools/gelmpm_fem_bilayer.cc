@@ -65,7 +65,7 @@ main(int argc, char **argv)
       {
         auto &prm            = input.peer_section();
         parameters.cells     = prm.get_integer("Cells");
-        parameters.u_degree  = prm.get_integer("Degree");
+        parameters.u_degree  = GelMPM::PeerInput::degree(prm);
         parameters.mu_bath   = prm.get_double("Bath");
         parameters.mu_start  = prm.get_double("Start");
         parameters.ramp_time = prm.get_double("Ramp time");

@@ -87,7 +87,7 @@ main(int argc, char **argv)
       {
         auto &prm              = input.peer_section();
         parameters.cells       = prm.get_integer("Cells");
-        parameters.u_degree    = prm.get_integer("Degree");
+        parameters.u_degree    = GelMPM::PeerInput::degree(prm);
         parameters.punch_width = prm.get_double("Punch width");
         parameters.depth       = prm.get_double("Depth");
         parameters.ramp_time   = prm.get_double("Ramp time");

@@ -62,7 +62,7 @@ main(int argc, char **argv)
         parameters.cells_y  = static_cast<unsigned int>(cells[1]);
         parameters.width    = prm.get_double("Width");
         parameters.grading  = prm.get_double("Grading");
-        parameters.u_degree = prm.get_integer("Degree");
+        parameters.u_degree = GelMPM::PeerInput::degree(prm);
         formulation         = prm.get("Formulation");
         directory           = prm.get("Output directory");
         input.leave_peer_section();

@@ -8,7 +8,8 @@
 #   non-physical gel ('Material/Shear modulus'), a malformed peer entry ('FE peer/Cells'), peer
 #   entries that the peer's mesh cannot take ('FE peer/Width' 0, 'FE peer/Cells' that put the
 #   punch's edge inside a cell, 'FE peer/Ramp time' 0: they ended with exit 1 and a message
-#   naming no entry), an unknown entry, a gelmpm-only option; and nothing is written.
+#   naming no entry), a degree above 10, an unknown entry, a gelmpm-only option; and nothing is
+#   written.
 # Arguments: the build directory, the source directory.
 set -u
 build="$1"
@@ -46,6 +47,9 @@ check "punch edge in a cell" 2 "'FE peer/Cells' is 21" "${build}/gelmpm-fem-flat
   "${prm}/flat_punch.prm" --set "FE peer/Cells=21"
 check "zero ramp time" 2 "'FE peer/Ramp time' is 0" "${build}/gelmpm-fem-column" \
   "${prm}/column_buckling.prm" --set "FE peer/Ramp time=0"
+# A degree without bound ran out of memory (std::bad_alloc after 21 s at 40).
+check "degree 40" 2 "'FE peer/Degree' is 40, above 10" "${build}/gelmpm-fem-swelling" \
+  "${prm}/constrained_swelling.prm" --set "FE peer/Degree=40"
 check "unknown entry" 2 "FE peer/Cels" "${build}/gelmpm-fem-flat-punch" "${prm}/flat_punch.prm" \
   --set "FE peer/Cels=4"
 check "gelmpm option" 2 "'--resume' is an option of gelmpm" "${build}/gelmpm-fem-swelling" \

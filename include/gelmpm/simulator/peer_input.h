@@ -66,6 +66,17 @@ namespace GelMPM
     static void
     declare_degree(dealii::ParameterHandler &prm);
 
+    /**
+     * 'Degree' of the section 'FE peer' (entered). Throws InputError above largest_degree, where
+     * the cell matrices and quadrature tables, growing as k^6, run out of memory long before a
+     * finer mesh of a lower degree would.
+     */
+    static unsigned int
+    degree(const dealii::ParameterHandler &prm);
+
+    /** The highest 'Degree' accepted. */
+    static constexpr unsigned int largest_degree = 10;
+
     /** Declare 'Output directory' in 'FE peer', with @p default_directory and @p contents. */
     static void
     declare_output_directory(dealii::ParameterHandler &prm,
