@@ -6,9 +6,9 @@
 #   bash contrib/utilities/blas_variants.sh [variant...]
 #
 # A variant is <OPENBLAS_CORETYPE>:<threads>, with "default" for the kernel OpenBLAS picks itself;
-# without arguments: default:1 Sandybridge:2 Prescott:1 (AVX, and SSE3 only: kernels that differ
-# from those of a current processor's AVX2/AVX-512). Each run re-runs every test (the stored
-# results of the deal.II-style cases are removed first) and prints ctest's summary; a log per
+# without arguments: default:1 Haswell:2 Prescott:1 (AVX2, and SSE3 only: kernels that differ
+# from those of a current processor's AVX-512; Haswell's with one thread once flipped a test).
+# Each run re-runs every test (the stored results of the deal.II-style cases are removed first) and prints ctest's summary; a log per
 # variant goes to <build>/blas-<variant>.log. Exit status: the number of variants that failed.
 # Environment: GELMPM_BUILD_DIR (default: build, which contrib/setup.sh makes).
 set -uo pipefail
@@ -16,7 +16,7 @@ top="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 build_dir="${GELMPM_BUILD_DIR:-${top}/build}"
 [[ -f "${build_dir}/CMakeCache.txt" ]] || { echo "error: no build in ${build_dir}: run contrib/setup.sh first" >&2; exit 1; }
 variants=("$@")
-((${#variants[@]})) || variants=(default:1 Sandybridge:2 Prescott:1)
+((${#variants[@]})) || variants=(default:1 Haswell:2 Prescott:1)
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 failed=0
 for variant in "${variants[@]}"; do
