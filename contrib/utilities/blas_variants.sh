@@ -8,8 +8,8 @@
 # A variant is <OPENBLAS_CORETYPE>:<threads>, with "default" for the kernel OpenBLAS picks itself;
 # without arguments: default:1 Haswell:2 Prescott:1 (AVX2, and SSE3 only: kernels that differ
 # from those of a current processor's AVX-512; Haswell's with one thread once flipped a test).
-# Each run re-runs every test (the stored results of the deal.II-style cases are removed first) and prints ctest's summary; a log per
-# variant goes to <build>/blas-<variant>.log. Exit status: the number of variants that failed.
+# Each run re-runs every test (the stored results of the deal.II-style cases are removed first)
+# and prints ctest's summary; a log per variant goes to <build>/blas-<variant>.log. Exit status: the number of variants that failed.
 # Environment: GELMPM_BUILD_DIR (default: build, which contrib/setup.sh makes).
 set -uo pipefail
 top="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
