@@ -10,12 +10,12 @@
 
 namespace GelMPM
 {
-  DirectoryLock::DirectoryLock(const std::string &directory)
+  DirectoryLock::DirectoryLock(const std::string &directory, const std::string &entry)
   {
     const std::string path = directory + "/" + file_name;
     descriptor             = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
     if (descriptor < 0)
-      throw InputError("Output/Directory",
+      throw InputError(entry,
                        "is '" + directory + "', which cannot hold the run's lock file '" +
                          file_name + "' (" + std::strerror(errno) + ")",
                        "choose a directory you can write to");
@@ -29,13 +29,14 @@ namespace GelMPM
         descriptor              = -1;
         const std::string owner = n > 0 ? std::string(text, n) : std::string();
         if (error == EWOULDBLOCK)
-          throw InputError("Output/Directory",
+          throw InputError(entry,
                            "is '" + directory + "', the output directory of another GelMPM run" +
                              (owner.empty() ? std::string() : " (process " + owner + ")") +
                              " that has not ended; both would write the same files",
                            "wait for that run to end, or give this run another directory, e.g. "
-                           "--set \"Output/Directory=rerun\"");
-        throw InputError("Output/Directory",
+                           "--set \"" +
+                             entry + "=rerun\"");
+        throw InputError(entry,
                          "is '" + directory + "', whose lock file '" + file_name +
                            "' cannot be locked (" + std::strerror(error) + ")",
                          "choose a directory on a file system that supports flock(2)");

@@ -1,9 +1,11 @@
 #include <gelmpm/core/input_error.h>
 #include <gelmpm/core/parameters.h>
+#include <gelmpm/io/output_directory.h>
 #include <gelmpm/simulator/peer_input.h>
 #include <gelmpm/simulator/scene_structure.h>
 #include <gelmpm/simulator/simulator.h>
 
+#include <filesystem>
 #include <sstream>
 
 namespace GelMPM
@@ -29,6 +31,7 @@ namespace GelMPM
                 "see '" + tool + " --help'");
     const auto cl = CommandLine::parse(arguments.size(), arguments.data());
     help          = cl.help;
+    scene_file    = cl.scene_file;
 
     prm.enter_subsection("FE peer");
     declare_peer(prm);
@@ -104,6 +107,44 @@ namespace GelMPM
                       default_directory,
                       dealii::Patterns::Anything(),
                       "The directory of " + contents + ".");
+  }
+
+
+  void
+  PeerInput::require_one_gel() const
+  {
+    if (regions.size() <= 1)
+      return;
+    std::string names;
+    for (unsigned int r = 1; r < regions.size(); ++r)
+      names += (r == 1 ? "" : ", ") + regions.name(r);
+    throw InputError("Material/Regions",
+                     "names the region(s) " + names + ", but " + tool +
+                       " builds its body of one gel, the section's own, and would drop them",
+                     "run the peer on the scene without its regions (--set \"Material/Regions=\"), "
+                     "or compare a body of two gels with gelmpm-fem-bilayer");
+  }
+
+
+  std::unique_ptr<DirectoryLock>
+  PeerInput::claim_output_directory(const std::string &directory) const
+  {
+    const std::string entry = "FE peer/Output directory";
+    check_output_directory(directory, entry, scene_file, false);
+    namespace fs = std::filesystem;
+    std::error_code error;
+    for (const char *name : {"parameters.prm", "original.prm", "particles.pvd", "checkpoint.bin"})
+      require(!fs::exists(fs::path(directory) / name, error),
+              entry,
+              "is '" + directory + "', which holds the results of a gelmpm run ('" + name +
+                "'): the peer's statistics.csv would replace that run's",
+              "give the peer a directory of its own, e.g. --set \"" + entry + "=fem\"");
+    fs::create_directories(directory, error);
+    require(!error,
+            entry,
+            "'" + directory + "' cannot be created (" + error.message() + ")",
+            "choose a directory you can write to");
+    return std::make_unique<DirectoryLock>(directory, entry);
   }
 
 

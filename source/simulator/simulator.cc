@@ -3,6 +3,7 @@
 #include <gelmpm/core/stop_request.h>
 #include <gelmpm/core/version.h>
 #include <gelmpm/io/file_writing.h>
+#include <gelmpm/io/output_directory.h>
 #include <gelmpm/io/piece_table.h>
 #include <gelmpm/particles/point_location.h>
 #include <gelmpm/particles/point_serialization.h>
@@ -29,21 +30,6 @@
 
 namespace GelMPM
 {
-  namespace
-  {
-    /** The names of the files a run writes into its output directory (but gelmpm.lock). */
-    const std::regex &
-    earlier_output_names()
-    {
-      static const std::regex names(
-        "(particles|grid|mode)(-[0-9]{5}(\\.[0-9]{4})?\\.p?vtu|\\.pvd)(\\.tmp)?|"
-        "(statistics|stability|events)\\.csv|parameters\\.prm|original\\.prm|"
-        "checkpoint\\.bin(\\.tmp)?|surface_.+-[0-9]{5}\\.csv(\\.tmp)?");
-      return names;
-    }
-  } // namespace
-
-
   template <int dim>
   void
   Simulator<dim>::declare_parameters(dealii::ParameterHandler &prm, const SceneStructure &structure)
@@ -310,67 +296,10 @@ namespace GelMPM
   void
   Simulator<dim>::check_output_directory(const bool resume) const
   {
-    namespace fs = std::filesystem;
-    std::error_code error;
-    const fs::path  scene_directory = fs::absolute(scene_file, error).parent_path();
-    // A run removes an earlier run's files from its directory and rewrites original.prm: run in
-    // a result's directory, it would destroy the result it was started from.
-    require(!fs::exists(output_settings.directory, error) ||
-              !fs::equivalent(output_settings.directory, scene_directory, error),
-            "Output/Directory",
-            "'" + output_settings.directory + "' is the directory of the scene file '" +
-              scene_file +
-              "', whose results (parameters.prm, original.prm, statistics.csv, "
-              ".vtu files) the run would overwrite",
-            "give the run another directory, e.g. --set \"Output/Directory=rerun\"");
-    // What creating or writing into it would fail on only once the run starts.
-    const std::string &directory = output_settings.directory;
-    if (fs::is_symlink(fs::symlink_status(directory, error)) && !fs::exists(directory, error))
-      throw InputError("Output/Directory",
-                       "is '" + directory + "', a symbolic link to '" +
-                         fs::read_symlink(directory, error).string() + "', which does not exist",
-                       "create the directory the link points to, or give another directory");
-    require(!fs::exists(directory, error) || fs::is_directory(directory, error),
-            "Output/Directory",
-            "is '" + directory + "', which is a file, not a directory",
-            "move that file away, or give the run another directory, e.g. --set "
-            "\"Output/Directory=rerun\"");
-    if (fs::is_directory(directory, error) && ::access(directory.c_str(), W_OK | X_OK) != 0)
-      throw InputError("Output/Directory",
-                       "is '" + directory + "', which this user cannot write into (" +
-                         std::strerror(errno) + ")",
-                       "give the directory write permission, or give another directory");
-    // An earlier run's file that the run removes or replaces, but cannot: a directory in its
-    // place (a device or a link is replaced; as checkpoint.bin --resume refuses it by name), or a
-    // file of another user where the sticky bit (/tmp) lets only its owner remove or rename it. The
-    // run would stop at its first write with exit status 1.
-    if (!fs::is_directory(directory, error))
-      return;
-    struct stat directory_status;
-    const bool  sticky = ::stat(directory.c_str(), &directory_status) == 0 &&
-                        (directory_status.st_mode & S_ISVTX) != 0 && ::geteuid() != 0 &&
-                        directory_status.st_uid != ::geteuid();
-    for (const auto &entry : fs::directory_iterator(directory, error))
-      {
-        const std::string name = entry.path().filename().string();
-        // --resume reads checkpoint.bin, and refuses what is not one by name.
-        if (!std::regex_match(name, earlier_output_names()) || (resume && name == "checkpoint.bin"))
-          continue;
-        const std::string path = entry.path().string();
-        if (entry.is_directory(error))
-          throw InputError("Output/Directory",
-                           "is '" + directory + "', which holds '" + name +
-                             "' that is a directory: the run cannot write its own '" + name +
-                             "' there",
-                           "remove '" + path + "', or give the run another directory");
-        struct stat file_status;
-        if (sticky && ::stat(path.c_str(), &file_status) == 0 && file_status.st_uid != ::geteuid())
-          throw InputError("Output/Directory",
-                           "is '" + directory + "', which holds '" + name +
-                             "' of another user, and its sticky bit lets only that user remove "
-                             "or replace it",
-                           "have '" + path + "' removed, or give the run another directory");
-      }
+    GelMPM::check_output_directory(output_settings.directory,
+                                   "Output/Directory",
+                                   scene_file,
+                                   resume);
   }
 
 
@@ -459,7 +388,7 @@ namespace GelMPM
     std::error_code error;
     for (const auto &entry : std::filesystem::directory_iterator(output_settings.directory, error))
       if (entry.is_regular_file() &&
-          std::regex_match(entry.path().filename().string(), earlier_output_names()))
+          std::regex_match(entry.path().filename().string(), run_output_names()))
         std::filesystem::remove(entry.path(), error);
   }
 

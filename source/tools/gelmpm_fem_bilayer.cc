@@ -100,7 +100,9 @@ main(int argc, char **argv)
                 << " (passive, chi " << materials[1].chi() << "), mu_0 " << materials[0].mu_0()
                 << std::endl;
 
-      std::filesystem::create_directories(directory);
+      // Held to the end: neither a gelmpm run nor another peer writes there meanwhile.
+      const auto lock = input.claim_output_directory(directory);
+
       const std::vector<std::string> columns = {"step",
                                                 "t_over_tau_d",
                                                 "dt",

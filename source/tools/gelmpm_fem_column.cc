@@ -61,6 +61,7 @@ main(int argc, char **argv)
             "Taylor-Hood finite-element peer of the MPM, for the scene prm/column_buckling.prm.");
           return 0;
         }
+      input.require_one_gel();
       GelMPM::FemColumn::Parameters parameters;
       {
         auto &prm            = input.peer_section();

@@ -82,6 +82,7 @@ main(int argc, char **argv)
             "Taylor-Hood finite-element peer of the MPM, for the scene prm/flat_punch.prm.");
           return 0;
         }
+      input.require_one_gel();
       GelMPM::FemFlatPunch::Parameters parameters;
       std::string                      directory;
       {
@@ -110,7 +111,9 @@ main(int argc, char **argv)
                 << " mu), depth " << parameters.depth << " H, lambda_0 " << material.lambda_0()
                 << std::endl;
 
-      std::filesystem::create_directories(directory);
+      // Held to the end: neither a gelmpm run nor another peer writes there meanwhile.
+      const auto lock = input.claim_output_directory(directory);
+
       const std::vector<std::string> columns = {"step",
                                                 "t_over_tau_d",
                                                 "dt",

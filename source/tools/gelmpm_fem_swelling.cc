@@ -53,6 +53,7 @@ main(int argc, char **argv)
             "peer of the MPM, for the scene prm/constrained_swelling.prm.");
           return 0;
         }
+      input.require_one_gel();
       GelMPM::FemConstrainedSwelling::Parameters parameters;
       std::string                                directory, formulation;
       {
@@ -86,7 +87,9 @@ main(int argc, char **argv)
                 << system.n_dofs() << " DoFs (" << system.n_u_dofs() << " u, " << system.n_mu_dofs()
                 << " mu), " << formulation << " form" << std::endl;
 
-      std::filesystem::create_directories(directory);
+      // Held to the end: neither a gelmpm run nor another peer writes there meanwhile.
+      const auto lock = input.claim_output_directory(directory);
+
       GelMPM::StatisticsFile statistics;
       statistics.open(directory + "/statistics.csv",
                       {"step",

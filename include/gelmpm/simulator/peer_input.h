@@ -1,6 +1,7 @@
 #ifndef gelmpm_simulator_peer_input_h
 #define gelmpm_simulator_peer_input_h
 
+#include <gelmpm/io/directory_lock.h>
 #include <gelmpm/material/flory_rehner_gel.h>
 #include <gelmpm/scene/material_regions.h>
 #include <gelmpm/solvers/linear_solver.h>
@@ -11,6 +12,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -83,6 +85,24 @@ namespace GelMPM
                              const std::string        &default_directory,
                              const std::string        &contents);
 
+    /**
+     * Throw InputError ('Material/Regions') if the scene has material regions: the peers whose
+     * body is one gel (all but gelmpm-fem-bilayer) would drop them without a word.
+     */
+    void
+    require_one_gel() const;
+
+    /**
+     * Claim @p directory ('FE peer/Output directory') for the tool's output as gelmpm claims its
+     * own 'Output/Directory': checked by check_output_directory(), refused if it holds the
+     * results of a gelmpm run (its parameters.prm, original.prm, particles.pvd or
+     * checkpoint.bin: the peer's statistics.csv would replace that run's), created, and locked
+     * (DirectoryLock, so that neither a gelmpm run nor another peer writes into it meanwhile).
+     * Throws InputError naming the entry. The lock is held while the returned object lives.
+     */
+    std::unique_ptr<DirectoryLock>
+    claim_output_directory(const std::string &directory) const;
+
     /** The parameters as read, in 'FE peer' for the tool's own entries. */
     dealii::ParameterHandler &
     peer_section();
@@ -91,7 +111,9 @@ namespace GelMPM
     leave_peer_section();
 
   private:
-    std::string              tool;
+    std::string tool;
+    /** The scene file given on the command line. */
+    std::string              scene_file;
     dealii::ParameterHandler prm;
   };
 } // namespace GelMPM
