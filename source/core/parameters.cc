@@ -1,4 +1,5 @@
 #include <gelmpm/core/input_error.h>
+#include <gelmpm/core/input_file.h>
 #include <gelmpm/core/parameters.h>
 
 #include <deal.II/base/exceptions.h>
@@ -59,6 +60,13 @@ namespace GelMPM
         throw InputError("",
                          "the scene file nests 'include' lines more than 32 deep",
                          "include fewer files");
+      if (!chain.empty())
+        require_bounded_file(file_name,
+                             "",
+                             "a parameter file ('include " + file_name + "' in '" + chain.back() +
+                               "')",
+                             largest_scene_file_bytes,
+                             "include a parameter file, or remove the line");
       std::ifstream in(file_name);
       if (!in || std::filesystem::is_directory(file_name))
         return; // deal.II reports a missing include file with its line number
@@ -379,6 +387,12 @@ namespace GelMPM
                   const bool                            skip_undefined)
   {
     {
+      // Before it is opened: opening a pipe waits for a writer.
+      require_bounded_file(file_name,
+                           "",
+                           "a scene file",
+                           largest_scene_file_bytes,
+                           "give a scene file, e.g. prm/constrained_swelling.prm");
       std::ifstream probe(file_name);
       require(static_cast<bool>(probe),
               "",

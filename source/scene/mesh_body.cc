@@ -1,5 +1,6 @@
 #include <gelmpm/core/format_point.h>
 #include <gelmpm/core/input_error.h>
+#include <gelmpm/core/input_file.h>
 #include <gelmpm/core/parameters.h>
 #include <gelmpm/scene/expression.h>
 #include <gelmpm/scene/mesh_body.h>
@@ -202,6 +203,8 @@ namespace GelMPM
     const std::string entry = "Geometry/Mesh file";
     const std::string fix   = "give a Gmsh .msh file (relative paths are taken from the directory "
                               "of the scene file)";
+    // Every read below runs to the end of the file (and opening a pipe waits for a writer).
+    require_bounded_file(file_name, entry, "a Gmsh mesh", largest_mesh_file_bytes, fix);
     {
       std::ifstream probe(file_name);
       require(static_cast<bool>(probe) && !std::filesystem::is_directory(file_name),
