@@ -4,7 +4,7 @@
 #include <gelmpm/particles/property_layout.h>
 #include <gelmpm/scene/boundary_conditions.h>
 #include <gelmpm/simulator/observables.h>
-#include <gelmpm/simulator/pore_geometry.h>
+#include <gelmpm/geometry/pore_geometry.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>

@@ -3,7 +3,7 @@
 // subtend, and of a polyline with a corner the corner's angle (1e-12); a polyline that passes
 // through itself is found, a spiral that does not is not; sharp corners are counted once per run
 // of consecutive sharp points.
-#include <gelmpm/simulator/pore_geometry.h>
+#include <gelmpm/geometry/pore_geometry.h>
 
 #include <cmath>
 #include <iostream>

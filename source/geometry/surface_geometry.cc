@@ -1,5 +1,5 @@
-#include <gelmpm/simulator/pore_geometry.h>
-#include <gelmpm/simulator/surface_geometry.h>
+#include <gelmpm/geometry/pore_geometry.h>
+#include <gelmpm/geometry/surface_geometry.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
-#ifndef gelmpm_simulator_surface_geometry_h
-#define gelmpm_simulator_surface_geometry_h
+#ifndef gelmpm_geometry_surface_geometry_h
+#define gelmpm_geometry_surface_geometry_h
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>

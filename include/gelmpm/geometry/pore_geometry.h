@@ -1,5 +1,5 @@
-#ifndef gelmpm_simulator_pore_geometry_h
-#define gelmpm_simulator_pore_geometry_h
+#ifndef gelmpm_geometry_pore_geometry_h
+#define gelmpm_geometry_pore_geometry_h
 
 #include <deal.II/base/point.h>
 

@@ -11,8 +11,8 @@
 //   ellipse none;
 // - a prolate trochoid (lambda = 1.5) loops once per period: three crossings over three periods
 //   are three folds with the approach criterion off, a curtate one (lambda = 0.5) none.
-#include <gelmpm/simulator/pore_geometry.h>
-#include <gelmpm/simulator/surface_geometry.h>
+#include <gelmpm/geometry/pore_geometry.h>
+#include <gelmpm/geometry/surface_geometry.h>
 
 #include <cmath>
 #include <functional>

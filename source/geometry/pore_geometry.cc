@@ -1,4 +1,4 @@
-#include <gelmpm/simulator/pore_geometry.h>
+#include <gelmpm/geometry/pore_geometry.h>
 
 #include <algorithm>
 #include <cmath>
