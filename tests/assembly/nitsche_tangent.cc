@@ -24,6 +24,7 @@
 #include <iostream>
 #include <random>
 
+#include "matrix_entries.h"
 #include "scene_fixture.h"
 
 using namespace dealii;
@@ -182,43 +183,27 @@ namespace
       state(i) = (i < n_u) ? 2e-3 * u(rng) : mu_0 + 0.02 * u(rng);
     const double dt = 0.05;
 
-    // The entries of the sparsity pattern, row by row (the same pattern for both).
-    const auto &matrix  = system.matrix();
-    const auto  entries = [&]() {
-      std::vector<double> K;
-      for (unsigned int i = 0; i < n; ++i)
-        for (auto it = matrix.begin(i); it != matrix.end(i); ++it)
-          K.push_back(it->value());
-      return K;
-    };
-    const auto asymmetry = [&]() {
-      double largest = 0.;
-      for (unsigned int i = 0; i < n; ++i)
-        for (auto it = matrix.begin(i); it != matrix.end(i); ++it)
-          largest = std::max(largest, std::abs(it->value() - matrix.el(it->column(), i)));
-      return largest;
-    };
-
+    // The entries of the sparsity pattern (the same pattern for both).
     system.set_reference_nitsche_tangent(true);
     system.assemble(state, dt, true);
-    const Vector<double>      residual            = system.residual();
-    const std::vector<double> K                   = entries();
-    const double              reference_asymmetry = symmetric ? asymmetry() : 0.;
+    const Vector<double> residual = system.residual();
+    const MatrixEntries  K(system.matrix());
+    const double         reference_asymmetry = symmetric ? K.asymmetry() : 0.;
 
     system.set_reference_nitsche_tangent(false);
     system.assemble(state, dt, true);
-    const std::vector<double> K_closed = entries();
-    double                    largest = 0., difference = 0.;
-    for (std::size_t e = 0; e < K.size(); ++e)
+    const MatrixEntries K_closed(system.matrix());
+    double              largest = 0., difference = 0.;
+    for (std::size_t e = 0; e < K.value.size(); ++e)
       {
-        largest    = std::max(largest, std::abs(K[e]));
-        difference = std::max(difference, std::abs(K_closed[e] - K[e]));
+        largest    = std::max(largest, std::abs(K.value[e]));
+        difference = std::max(difference, std::abs(K_closed.value[e] - K.value[e]));
       }
     double residual_difference = 0.;
     for (unsigned int i = 0; i < n; ++i)
       residual_difference =
         std::max(residual_difference, std::abs(system.residual()(i) - residual(i)));
-    const double closed_asymmetry = symmetric ? asymmetry() : 0.;
+    const double closed_asymmetry = symmetric ? K_closed.asymmetry() : 0.;
 
     if (printing())
       std::cerr << name << ": " << system.n_points() << " material points, max |K - K_ref| / max "
