@@ -15,6 +15,7 @@
 #include <random>
 #include <utility>
 
+#include "matrix_entries.h"
 #include "scene_fixture.h"
 
 using namespace dealii;
@@ -45,26 +46,21 @@ namespace
     system.set_generic_volume_tangent(true);
     system.assemble(state, dt, true);
     const Vector<double> residual = system.residual();
-    // The entries of the sparsity pattern, row by row (the same pattern for both).
-    const auto         &matrix = system.matrix();
-    std::vector<double> K;
-    for (unsigned int i = 0; i < n; ++i)
-      for (auto it = matrix.begin(i); it != matrix.end(i); ++it)
-        K.push_back(it->value());
+    // The entries of the sparsity pattern (the same pattern for both).
+    const MatrixEntries K(system.matrix());
 
     system.set_generic_volume_tangent(false);
     system.assemble(state, dt, true);
-    double      largest = 0., difference = 0., entry = 0.;
-    std::size_t e = 0;
-    for (unsigned int i = 0; i < n; ++i)
-      for (auto it = matrix.begin(i); it != matrix.end(i); ++it, ++e)
-        {
-          const double k = K[e], d = std::abs(it->value() - k);
-          largest    = std::max(largest, std::abs(k));
-          difference = std::max(difference, d);
-          if (d > 0.)
-            entry = std::max(entry, d / std::abs(k));
-        }
+    const MatrixEntries K_structured(system.matrix());
+    double              largest = 0., difference = 0., entry = 0.;
+    for (std::size_t e = 0; e < K.value.size(); ++e)
+      {
+        const double k = K.value[e], d = std::abs(K_structured.value[e] - k);
+        largest    = std::max(largest, std::abs(k));
+        difference = std::max(difference, d);
+        if (d > 0.)
+          entry = std::max(entry, d / std::abs(k));
+      }
     double residual_difference = 0.;
     for (unsigned int i = 0; i < n; ++i)
       residual_difference =
