@@ -141,10 +141,14 @@ namespace GelMPM
     , output_interval_time(output_interval_time)
     , next_output_time(output_interval_time)
   {
-    require(!(time_stepping.largest_increment > 0.) || model.measures_motion_in_cells(),
+    // The default bound is the material points'; a model without a grid ignores it.
+    if (!model.measures_motion_in_cells() && time_stepping.largest_increment_default)
+      this->time_stepping.largest_increment = 0.;
+    require(!(this->time_stepping.largest_increment > 0.) || model.measures_motion_in_cells(),
             "Time stepping/Largest increment",
             "bounds a step's motion in cells of the background grid, which this model has not",
-            "set it to 0 (its default)");
+            std::string("leave it at its default (") +
+              TimeStepping::default_largest_increment_text + ", ignored here) or set it to 0");
     for (const auto &[value, entry] :
          {std::make_pair(time_stepping.displacement_tolerance,
                          "Time stepping/Displacement tolerance"),

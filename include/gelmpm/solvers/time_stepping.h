@@ -36,8 +36,12 @@ namespace GelMPM
     unsigned int growth_below          = 6;
     double       cut_factor            = 0.5;
     unsigned int maximum_steps         = 1000000;
+    /** The default of 'Largest increment' (cells): doc/method.md, "Update after convergence". */
+    static constexpr const char *default_largest_increment_text = "2";
     /** Largest displacement of a material point in one step, in cells of the u grid; 0: off. */
-    double largest_increment = 0.;
+    double largest_increment = 2.;
+    /** Whether 'Largest increment' is its default (a model without a grid ignores it then). */
+    bool largest_increment_default = true;
     /** Largest predictor-corrector difference of a point's displacement in one step, in the
      * scene's length unit; 0: off. */
     double displacement_tolerance = 0.;
