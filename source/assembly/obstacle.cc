@@ -20,6 +20,8 @@ namespace GelMPM
     std::string
     number(const double x)
     {
+      if (std::isnan(x))
+        return "NaN"; // not "-nan" or "nan" as the sign bit happens to be
       std::ostringstream text;
       text << x;
       return text.str();
@@ -324,6 +326,9 @@ namespace GelMPM
   void
   Obstacle<dim>::check_inside_grid(const dealii::Point<dim> &lower, const dealii::Point<dim> &upper)
   {
+    // A motion that is not finite at t = 0 puts the obstacle nowhere: that is the motion's fault,
+    // not the centre's.
+    check_motion({0.});
     set_time(0.);
     const double reach  = shape == Shape::plane ? 0. : radius + edge_radius;
     bool         inside = true;
