@@ -52,17 +52,22 @@ namespace GelMPM
   {
     /**
      * Throw InputError if piece @p i selects surface points that an earlier piece takes: a point
-     * belongs to the first piece that selects it, so the later one is left without points.
+     * belongs to the first piece that selects it, so the later one is left without points. The
+     * elements for which @p no_boundary holds (the axis of an axisymmetric scene) are no surface
+     * points of any piece.
      */
-    template <int dim, typename Elements>
+    template <int dim, typename Elements, typename NoBoundary>
     void
     check_not_overlapped(const Elements                &elements,
                          const BoundaryConditions<dim> &boundary_conditions,
-                         const unsigned int             i)
+                         const unsigned int             i,
+                         const NoBoundary              &no_boundary)
     {
       const auto &piece = boundary_conditions.piece(i);
       for (const auto &e : elements)
         {
+          if (no_boundary(e))
+            continue;
           const dealii::Tensor<1, dim> normal = e.normal_area / e.normal_area.norm();
           if (!piece.selects(e.centre, normal, e.boundary_id, e.group_name))
             continue;
@@ -75,6 +80,40 @@ namespace GelMPM
                              " (a point belongs to the first piece that selects it)",
                            "make the selectors of '" + first.name + "' and '" + piece.name +
                              "' disjoint");
+        }
+    }
+
+    /**
+     * Throw InputError naming @p entry if @p body is inside somewhere on the line x = @p lower[0]
+     * beyond the axis of an axisymmetric scene, at the points where a level set's contour is
+     * sampled there (LevelSetBody): such a body crosses the axis. The sampling would otherwise
+     * find it reaching beyond the grid and ask for a lower 'Lower corner', which an axisymmetric
+     * scene must keep at x = 0.
+     */
+    template <int dim>
+    void
+    check_not_across_axis(const Body<dim>          &body,
+                          const std::string        &entry,
+                          const dealii::Point<dim> &lower,
+                          const dealii::Point<dim> &upper,
+                          const double              spacing)
+    {
+      const unsigned int n =
+        std::max(2u, static_cast<unsigned int>(std::ceil((upper[1] - lower[1]) / (0.5 * spacing))));
+      for (unsigned int j = 0; j <= n; ++j)
+        {
+          dealii::Point<dim> p = lower;
+          p[1] += j * (upper[1] - lower[1]) / n;
+          require(!body.inside(p),
+                  entry,
+                  "puts material at R = x < 0 in an axisymmetric scene, e.g. at " +
+                    format_point(p) +
+                    ": the body crosses the axis, and the meridian plane has "
+                    "nothing there",
+                  std::string("cut the body at the axis so that it lies at x >= 0") +
+                    (body.source() == BodySource::level_set ? " (for a level set phi: "
+                                                              "'max(phi, -x)')"
+                                                            : ""));
         }
     }
 
@@ -348,9 +387,21 @@ namespace GelMPM
       // a level set is sampled beyond it, so that its contour closes along the axis.
       dealii::Point<dim> sample_lower = grid.lower;
       if (grid.axisymmetric)
-        sample_lower[0] -= h_min;
+        {
+          sample_lower[0] -= h_min;
+          check_not_across_axis(body,
+                                geometry.entry(),
+                                sample_lower,
+                                grid.upper,
+                                h_min / surface_points_per_edge);
+        }
       const auto elements =
         body.surface_elements(h_min / surface_points_per_edge, sample_lower, grid.upper);
+      // The axis of an axisymmetric scene is no boundary of the revolved body (its area
+      // 2 pi R ds vanishes): u_r = 0 holds there by the axis unknowns (MixedSystem).
+      const auto on_axis = [&](const auto &e) {
+        return grid.axisymmetric && e.centre[0] <= on_axis_tolerance * h_min;
+      };
       std::vector<unsigned int> count(boundary_conditions.n_pieces(), 0);
       for (const auto &e : elements)
         {
@@ -363,9 +414,7 @@ namespace GelMPM
                   geometry.entry(),
                   "puts the body outside the background grid, e.g. at " + format_point(e.centre),
                   "enlarge 'Background grid/Lower corner' and 'Upper corner' or move the body");
-          // The axis of an axisymmetric scene is no boundary of the revolved body (its area
-          // 2 pi R ds vanishes): u_r = 0 holds there by the axis unknowns (MixedSystem).
-          if (grid.axisymmetric && e.centre[0] <= on_axis_tolerance * h_min)
+          if (on_axis(e))
             continue;
           const double                 area   = e.normal_area.norm();
           const dealii::Tensor<1, dim> normal = e.normal_area / area;
@@ -396,7 +445,7 @@ namespace GelMPM
         }
       for (unsigned int i = 0; i < boundary_conditions.n_pieces(); ++i)
         if (count[i] == 0)
-          check_not_overlapped(elements, boundary_conditions, i);
+          check_not_overlapped(elements, boundary_conditions, i, on_axis);
       for (unsigned int i = 0; i < boundary_conditions.n_pieces(); ++i)
         require(count[i] > 0,
                 "Boundary conditions/" + boundary_conditions.piece(i).name + "/Selector",
