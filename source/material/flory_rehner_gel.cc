@@ -7,17 +7,40 @@
 #include <cmath>
 #include <functional>
 #include <sstream>
+#include <string>
 
 namespace GelMPM
 {
   namespace
   {
     std::string
-    number(const double x)
+    number(const double x, const int precision = 6)
     {
       std::ostringstream text;
+      text.precision(precision);
       text << x;
       return text.str();
+    }
+
+
+    /** The fewest significant digits (at least 6) at which @p a and @p b print differently. */
+    int
+    distinguishing_precision(const double a, const double b)
+    {
+      int precision = 6;
+      while (precision < 17 && number(a, precision) == number(b, precision))
+        ++precision;
+      return precision;
+    }
+
+
+    /** @p bound with the fewest digits (at least @p precision) that do not exceed it. */
+    std::string
+    number_not_above(const double bound, int precision)
+    {
+      while (precision < 17 && std::stod(number(bound, precision)) > bound)
+        ++precision;
+      return number(bound, precision);
     }
   } // namespace
 
@@ -164,14 +187,17 @@ namespace GelMPM
     // bath above pure solvent (mu_0 > 0) would be solvent under pressure.
     const double l6      = std::pow(stretch, 6);
     const double chi_max = chi_ - l6 * mu_0_from_lambda_0(stretch, chi_, N_nu_);
+    // As many digits as it takes to tell chi from chi_max, and a bound that is one.
+    const int digits = distinguishing_precision(chi_, chi_max);
     require(chi_ <= chi_max,
             "Material/Flory-Huggins chi",
-            "is " + number(chi_) + ", above chi_max = " + number(chi_max) +
+            "is " + number(chi_, digits) + ", above chi_max = " + number(chi_max, digits) +
               " for 'Initial stretch' = " + number(stretch) + " and 'N nu' = " + number(N_nu_) +
               ": the initial state would be in equilibrium only with solvent above the pure "
               "solvent's chemical potential (mu_0/(k_BT) = " +
               number(mu_0_from_lambda_0(stretch, chi_, N_nu_)) + " > 0)",
-            "give 0 <= chi <= " + number(chi_max) + " or a smaller 'Initial stretch'");
+            "give 0 <= chi <= " + number_not_above(chi_max, digits) +
+              " or a smaller 'Initial stretch'");
   }
 
 
