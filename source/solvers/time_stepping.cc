@@ -45,20 +45,24 @@ namespace GelMPM
                       "1000000",
                       Patterns::Integer(1),
                       "Stop (cleanly, exit status 1) after this many steps.");
-    prm.declare_entry("Largest increment",
-                      default_largest_increment_text,
-                      Patterns::Double(0.),
-                      "A converged step in which some material point moves farther than this, in "
-                      "cells of the displacement grid, is retaken with the step times 'Cut factor' "
-                      "(the material point method integrates on the points, so they should cross "
-                      "at most a few cells per step; a step far beyond converges to a wrong state: "
-                      "the free-swelling square in one step of 1000 tau_d, its points moving up to "
-                      "9.9 cells, ended at J_mean 8.805 against 9.432; near an instability it also "
-                      "keeps Newton on the branch it started from). The default, 2, lies above the "
-                      "largest motion per step of the scenes in prm/ (1.55 cells) and well below "
-                      "where the error appears (doc/method.md, \"Update after convergence\"). "
-                      "Material point scenes only; the body-fitted peer, which has no grid, "
-                      "ignores the default and refuses another value. 0: no limit.");
+    prm.declare_entry(
+      "Largest increment",
+      default_largest_increment_text,
+      Patterns::Double(0.),
+      "A converged step in which some material point moves farther than this, in "
+      "cells of the displacement grid, is retaken with the step times 'Cut factor' "
+      "(the material point method integrates on the points, so they should cross "
+      "at most a few cells per step; a step far beyond converges to a wrong state: "
+      "the free-swelling square in one step of 1000 tau_d, its points moving up to "
+      "9.9 cells, ended at J_mean 8.805 against 9.432; near an instability it also "
+      "keeps Newton on the branch it started from). At its default, 2, it bounds the "
+      "steps that no error estimate judges ('Displacement tolerance', "
+      "'Tolerance': every step of a scene without them, else the first, the one "
+      "after a perturbation, one far longer than the last), well below where the "
+      "error appears and above what the scenes in prm/ move in such steps "
+      "(doc/method.md, \"Update after convergence\"); a value given bounds every "
+      "step. Material point scenes only; the body-fitted peer, which has no grid, "
+      "ignores the default and refuses another value. 0: no limit.");
     prm.declare_entry(
       "Displacement tolerance",
       "0",

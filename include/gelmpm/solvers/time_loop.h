@@ -334,6 +334,21 @@ namespace GelMPM
     StepOutcome
     advance();
 
+    /** Whether 'Time stepping/Displacement tolerance' judges the current step. */
+    bool
+    displacement_rule_judges() const;
+
+    /** Whether 'Time stepping/Tolerance' judges the current step, of size @p dt. */
+    bool
+    tolerance_rule_judges(const double dt) const;
+
+    /**
+     * Whether 'Time stepping/Largest increment' bounds the current step, of size @p dt: always
+     * when the scene sets it, at its default only where no error estimate judges the step.
+     */
+    bool
+    increment_bound_applies(const double dt) const;
+
     /**
      * Whether the converged @p solution of a step of @p dt may be accepted under the rules of
      * 'Time stepping' (else StepControl has proposed a shorter step and @p failure says why).

@@ -40,7 +40,8 @@ namespace GelMPM
     static constexpr const char *default_largest_increment_text = "2";
     /** Largest displacement of a material point in one step, in cells of the u grid; 0: off. */
     double largest_increment = 2.;
-    /** Whether 'Largest increment' is its default (a model without a grid ignores it then). */
+    /** Whether 'Largest increment' is its default: it then bounds only the steps no error
+     * estimate judges, and a model without a grid ignores it. */
     bool largest_increment_default = true;
     /** Largest predictor-corrector difference of a point's displacement in one step, in the
      * scene's length unit; 0: off. */
