@@ -289,6 +289,48 @@ namespace GelMPM
     for (unsigned int i = 0; i < scene.boundary_conditions.n_pieces(); ++i)
       scene.boundary_conditions.piece(i).check_values(samples[i], times, largest_mu);
     scene.check_obstacles(times);
+
+    // A prescribed chemical potential that starts away from the body's mu_0 (the functions are
+    // at t = 0 now): said only if the run then fails (jump_hint()).
+    const double mu_0    = scene.regions[0].mu_0();
+    double       largest = 0.1 * std::abs(mu_0);
+    for (unsigned int i = 0; i < scene.boundary_conditions.n_pieces(); ++i)
+      {
+        const auto &piece = scene.boundary_conditions.piece(i);
+        if (!piece.chemical_potential_prescribed())
+          continue;
+        for (const auto &x : samples[i])
+          if (const double mu = piece.chemical_potential_value().value(x);
+              std::abs(mu - mu_0) > largest)
+            {
+              largest = std::abs(mu - mu_0);
+              std::ostringstream words;
+              words << "the chemical potential prescribed on '" << piece.name
+                    << "' jumps at t = 0 from the gel's mu_0/(k_BT) = " << mu_0 << " to " << mu;
+              boundary_jump = words.str();
+            }
+      }
+  }
+
+
+  template <int dim>
+  std::string
+  Simulator<dim>::jump_hint(const double t) const
+  {
+    double h = scene.grid.cell_size(0);
+    for (unsigned int d = 1; d < dim; ++d)
+      h = std::min(h, scene.grid.cell_size(d));
+    const double cell_diffusion_time = std::pow(h / time_stepping.characteristic_length, 2);
+    if (boundary_jump.empty() || !(t < cell_diffusion_time))
+      return "";
+    std::ostringstream hint;
+    hint << boundary_jump << ", and the run failed before solvent could diffuse across one cell "
+         << "(at t/tau_d ~ (h/L)^2 = " << cell_diffusion_time
+         << "): the layer the jump swells is thinner than a cell, its points distort more at "
+            "every step until Newton finds no state, and shorter steps do not resolve it. Ramp "
+            "the prescribed value from mu_0 instead (e.g. over 50 tau_d, as "
+            "tests/simulator/free_swelling_scene.prm does), which lets the gel swell more evenly";
+    return hint.str();
   }
 
 
@@ -712,6 +754,8 @@ namespace GelMPM
             // Why, on stderr too: the log's line per attempt is not where one looks first.
             if (!loop->failure().empty())
               message << ": " << loop->failure();
+            if (const auto hint = jump_hint(current_time()); !hint.empty())
+              message << "; " << hint;
             if (!loop->round_off_hint().empty())
               message << " (" << loop->round_off_hint() << ")";
             pcout << message.str() << std::endl;

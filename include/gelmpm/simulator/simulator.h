@@ -124,9 +124,20 @@ namespace GelMPM
     /** InputError if the extended bases cannot be built on the initial configuration. */
     void
     check_grid_resolves_body();
-    /** InputError if a boundary function is not finite on its piece during the run. */
+    /**
+     * InputError if a boundary function is not finite on its piece during the run. Notes a jump
+     * of a prescribed chemical potential at t = 0 (boundary_jump).
+     */
     void
     check_boundary_values();
+
+    /**
+     * Why a run that cannot converge at @p t (tau_d) may fail there, from boundary_jump: a
+     * jump of the boundary's chemical potential swells a layer thinner than a cell until
+     * solvent has diffused across one, at t ~ (h/L)^2; empty otherwise.
+     */
+    std::string
+    jump_hint(const double t) const;
 
     /** prepare_output_directory()'s work, on the one rank that does it. */
     void
@@ -235,8 +246,11 @@ namespace GelMPM
     BoundaryBalance<dim>           balance;
     StabilitySettings              stability;
 
-    std::string                scene_file;
-    std::string                parameters_as_used;
+    std::string scene_file;
+    std::string parameters_as_used;
+    /** The largest jump of a prescribed chemical potential at t = 0 away from mu_0, in words
+     * (empty: none above a tenth of |mu_0|). */
+    std::string                boundary_jump;
     dealii::ConditionalOStream pcout;
     // Errors and stops, which every rank meets together, are reported by rank 0 alone.
     dealii::ConditionalOStream pcerr;
