@@ -1,10 +1,10 @@
 #include <gelmpm/core/collective.h>
 #include <gelmpm/core/input_error.h>
+#include <gelmpm/geometry/pore_geometry.h>
 #include <gelmpm/io/file_writing.h>
 #include <gelmpm/particles/property_layout.h>
 #include <gelmpm/scene/boundary_conditions.h>
 #include <gelmpm/simulator/observables.h>
-#include <gelmpm/geometry/pore_geometry.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>

@@ -2,10 +2,10 @@
 #define gelmpm_simulator_observables_h
 
 #include <gelmpm/assembly/contact_settings.h>
+#include <gelmpm/geometry/surface_geometry.h>
 #include <gelmpm/io/statistics_file.h>
 #include <gelmpm/material/flory_rehner_gel.h>
 #include <gelmpm/scene/material_regions.h>
-#include <gelmpm/geometry/surface_geometry.h>
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/particles/particle_handler.h>
