@@ -1,8 +1,8 @@
 # One step of 1000 tau_d on the free-swelling square, without caps: Newton converged (residual
 # 1e-15) to a wrong state, J_mean 8.805 (range 8.38-9.44) against the 9.432 of normal steps, with
 # exit status 0 and not a word; its points moved up to 9.9 cells. The default 'Largest increment'
-# (2 cells, on the steps that no error estimate judges) now retakes such a step shorter, the log
-# says why, and the run reaches the equilibrium of normal steps: J_mean 9.4311 in 22 steps, and
+# (5 cells, on the steps that no error estimate judges) now retakes such a step shorter, the log
+# says why, and the run reaches the equilibrium of normal steps: J_mean 9.4309 in 17 steps, and
 # with 'Displacement tolerance' (which cannot judge a first step) 9.4312 in 40. The ten digits of
 # J_mean are not compared, only the 0.1 % that tells the equilibrium from the wrong state.
 source "$(dirname "$0")/common.sh"
@@ -14,7 +14,7 @@ one_step() { # name, extra arguments...
   local status=$?
   echo "$name: exit status $status"; cat "$name.err"
   check $status "$name: the run should reach its end"
-  grep -q "failed (a material point moves .* cells, more than 'Time stepping/Largest increment' = 2)" \
+  grep -q "failed (a material point moves .* cells, more than 'Time stepping/Largest increment' = 5)" \
     "$name.out"
   check $? "$name: the log does not say that the step was retaken for its motion"
   local j_mean

@@ -37,9 +37,9 @@ namespace GelMPM
     double       cut_factor            = 0.5;
     unsigned int maximum_steps         = 1000000;
     /** The default of 'Largest increment' (cells): doc/method.md, "Update after convergence". */
-    static constexpr const char *default_largest_increment_text = "2";
+    static constexpr const char *default_largest_increment_text = "5";
     /** Largest displacement of a material point in one step, in cells of the u grid; 0: off. */
-    double largest_increment = 2.;
+    double largest_increment = 5.;
     /** Whether 'Largest increment' is its default: it then bounds only the steps no error
      * estimate judges, and a model without a grid ignores it. */
     bool largest_increment_default = true;
