@@ -154,7 +154,10 @@ namespace GelMPM
         r.F_p[i][j] = props[Layout::F + i * dim + j];
     r.mu_n     = props[Layout::mu];
     r.dmu_last = props[Layout::mu_increment];
-    r.gel      = &materials[region_of_point<dim>(props)];
+    // The point's material state, from the one place that maps a point to its constants.
+    const auto material = material_state_of(materials, props);
+    r.region            = material.region;
+    r.gel               = material.gel;
     if (spaces.axisymmetric() && r.X0[0] > 0.)
       {
         r.radius = r.x[0] + r.edge_offset[0];

@@ -1,4 +1,5 @@
 #include <gelmpm/io/particle_output.h>
+#include <gelmpm/particles/material_state.h>
 #include <gelmpm/particles/property_layout.h>
 
 #include <deal.II/base/data_out_base.h>
@@ -71,11 +72,10 @@ namespace GelMPM
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = 0; j < dim; ++j)
             F[i][j] = props[Layout::F + i * dim + j];
-        const double               mu       = props[Layout::mu];
-        const unsigned int         region   = region_of_point<dim>(props);
-        const FloryRehnerGel<dim> &material = materials[region];
-        const double               stretch  = out_of_plane_stretch_of<dim>(props);
-        const double               J        = material.J(F, stretch);
+        const double mu       = props[Layout::mu];
+        const auto   material = material_state_of(materials, props);
+        const double stretch  = out_of_plane_stretch_of<dim>(props);
+        const double J        = material.gel->J(F, stretch);
 
         DataOutBase::Patch<0, dim> patch;
         const Point<dim>           x = position_of(particle.get_location(), props);
@@ -90,7 +90,7 @@ namespace GelMPM
         patch.data(5, 0)                 = props[Layout::measure_n];
         const unsigned int first_stretch = regions ? 7 : 6;
         if (regions)
-          patch.data(6, 0) = region;
+          patch.data(6, 0) = material.region;
         // Principal stretches from F F^T by Jacobi rotations: the closed-form eigenvalues of a
         // nearly isotropic tensor take the root of a discriminant that round-off can make
         // slightly negative, a NaN in ParaView (sorted in descending order either way).
@@ -100,7 +100,7 @@ namespace GelMPM
           patch.data(first_stretch + d, 0) = std::sqrt(std::max(principal[dim - 1 - d].first, 0.));
         if (J > 1.)
           {
-            const Tensor<2, dim> sigma = material.stress(F, mu, stretch) * transpose(F) / J;
+            const Tensor<2, dim> sigma = material.gel->stress(F, mu, stretch) * transpose(F) / J;
             for (unsigned int i = 0; i < dim; ++i)
               for (unsigned int j = 0; j < dim; ++j)
                 patch.data(stress_first + i * dim + j, 0) = sigma[i][j];

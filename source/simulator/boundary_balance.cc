@@ -1,4 +1,5 @@
 #include <gelmpm/core/input_error.h>
+#include <gelmpm/particles/material_state.h>
 #include <gelmpm/particles/property_layout.h>
 #include <gelmpm/simulator/boundary_balance.h>
 
@@ -106,10 +107,9 @@ namespace GelMPM
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = 0; j < dim; ++j)
             F[i][j] = props[Layout::F + i * dim + j];
-        volume +=
-          props[Layout::measure_n] *
-          (1. -
-           1. / material[region_of_point<dim>(props)].J(F, out_of_plane_stretch_of<dim>(props)));
+        const double J =
+          material_state_of(material, props).gel->J(F, out_of_plane_stretch_of<dim>(props));
+        volume += props[Layout::measure_n] * (1. - 1. / J);
       }
     return dealii::Utilities::MPI::sum(volume, communicator);
   }

@@ -3,6 +3,7 @@
 
 #include <gelmpm/assembly/discretisation.h>
 #include <gelmpm/material/flory_rehner_gel.h>
+#include <gelmpm/particles/material_state.h>
 #include <gelmpm/particles/property_layout.h>
 #include <gelmpm/scene/boundary_conditions.h>
 #include <gelmpm/scene/material_regions.h>
@@ -49,7 +50,8 @@ namespace GelMPM
     dealii::Tensor<1, dim>     u_n;         // x_n - X_0
     dealii::Tensor<1, dim>     du_last;     // x_n - x_{n-1}
     dealii::Tensor<2, dim>     F_p;         // F_n F_0
-    const FloryRehnerGel<dim> *gel;         // the gel of the point's region
+    unsigned int               region;      // the point's material region and
+    const FloryRehnerGel<dim> *gel;         // its gel (material_state_of())
     double                     mobility;    // m_n in the weak form's units
     double                     mu_n;        // mu at the point, last converged step
     double                     dmu_last;    // mu_n - mu_{n-1}
