@@ -1,14 +1,18 @@
 #include <gelmpm/core/collective.h>
 #include <gelmpm/core/format_point.h>
 #include <gelmpm/core/input_error.h>
+#include <gelmpm/io/grid_output.h>
 #include <gelmpm/particles/property_layout.h>
+#include <gelmpm/simulator/rigid_motion.h>
 #include <gelmpm/simulator/scene.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/distributed/tria.h>
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 namespace GelMPM
 {
@@ -63,6 +67,23 @@ namespace GelMPM
     obstacles = parse_obstacles<dim>(prm, obstacle_names);
     for (auto &obstacle : obstacles)
       obstacle.check_inside_grid(grid.lower, grid.upper);
+    check_points_per_cell();
+  }
+
+
+  template <int dim>
+  void
+  Scene<dim>::check_points_per_cell() const
+  {
+    // With 2 x 2 points per cell the swollen cells at a cut boundary hold too few points to keep
+    // the B-spline stiffness definite: §4.1 stops at 11.3 tau_d, every step size failing, while
+    // 3 x 3 runs to the end with degree 2 and 3.
+    require(generator.points_per_cell >= 3,
+            "Material points/Points per cell",
+            "is " + std::to_string(generator.points_per_cell) +
+              ": with fewer than 3 points per cell and direction the cells at the body's boundary "
+              "hold too few points to keep the stiffness definite once the gel swells",
+            "use at least 3 (the paper: 5 to 8)");
   }
 
 
@@ -310,6 +331,150 @@ namespace GelMPM
                                                 triangulation->get_communicator());
     if (contact.enabled())
       system->set_contact(contact, obstacles);
+  }
+
+
+  template <int dim>
+  std::vector<unsigned int>
+  Scene<dim>::volume_points_per_cell() const
+  {
+    auto count = GridOutput<dim>::count_volume_points(particles, spaces->u_space());
+    if (Collective::is_parallel(communicator))
+      dealii::Utilities::MPI::sum(count, communicator, count);
+    return count;
+  }
+
+
+  template <int dim>
+  void
+  Scene<dim>::check_grid_resolves_body()
+  {
+    const auto        volume_points = volume_points_per_cell();
+    std::vector<bool> has_material(volume_points.size());
+    for (unsigned int c = 0; c < has_material.size(); ++c)
+      has_material[c] = volume_points[c] > 0;
+    try
+      {
+        spaces->reinit(has_material);
+      }
+    catch (const std::runtime_error &e)
+      {
+        throw InputError("Background grid/Cells",
+                         "cannot carry the body's initial configuration: " + std::string(e.what()),
+                         "refine the grid or enlarge it ('Background grid/Upper corner')");
+      }
+  }
+
+
+  template <int dim>
+  std::vector<std::vector<dealii::Point<dim>>>
+  Scene<dim>::boundary_samples() const
+  {
+    std::vector<std::vector<dealii::Point<dim>>> points(boundary_conditions.n_pieces());
+    // (piece, X_0) of the surface points of every rank, in the order of the ranks, so that
+    // every rank checks the same samples and fails or passes with the others.
+    std::vector<double> local;
+    for (const auto &p : particles)
+      {
+        const auto props = p.get_properties();
+        const int  piece = piece_of(props);
+        if (piece < 0)
+          continue;
+        local.push_back(piece);
+        for (unsigned int d = 0; d < dim; ++d)
+          local.push_back(props[PropertyLayout<dim>::position_0 + d]);
+      }
+    for (const auto &part : dealii::Utilities::MPI::all_gather(communicator, local))
+      for (std::size_t k = 0; k < part.size(); k += dim + 1)
+        {
+          dealii::Point<dim> x;
+          for (unsigned int d = 0; d < dim; ++d)
+            x[d] = part[k + 1 + d];
+          points[static_cast<unsigned int>(part[k])].push_back(x);
+        }
+    std::vector<std::vector<dealii::Point<dim>>> samples(points.size());
+    for (unsigned int i = 0; i < points.size(); ++i)
+      {
+        const std::size_t stride = points[i].size() / 64 + 1;
+        for (std::size_t k = 0; k < points[i].size(); k += stride)
+          samples[i].push_back(points[i][k]);
+      }
+    return samples;
+  }
+
+
+  template <int dim>
+  std::string
+  Scene<dim>::check_boundary_values(const double end_time)
+  {
+    // Samples of each piece and times over the run: enough to catch an expression that is not
+    // finite (1/0, log(-1)) before the run cuts its steps without saying why.
+    const auto          samples = boundary_samples();
+    std::vector<double> times;
+    for (unsigned int k = 0; k <= 8; ++k)
+      times.push_back(end_time * k / 8.);
+    const double largest_mu = regions.largest_swelling_chemical_potential();
+    for (unsigned int i = 0; i < boundary_conditions.n_pieces(); ++i)
+      boundary_conditions.piece(i).check_values(samples[i], times, largest_mu);
+    check_obstacles(times);
+    return boundary_jump(samples);
+  }
+
+
+  template <int dim>
+  std::string
+  Scene<dim>::boundary_jump(const std::vector<std::vector<dealii::Point<dim>>> &samples) const
+  {
+    // The functions are at t = 0 (check_values() leaves them there).
+    const double mu_0    = regions[0].mu_0();
+    double       largest = 0.1 * std::abs(mu_0);
+    std::string  jump;
+    for (unsigned int i = 0; i < boundary_conditions.n_pieces(); ++i)
+      {
+        const auto &piece = boundary_conditions.piece(i);
+        if (!piece.chemical_potential_prescribed())
+          continue;
+        for (const auto &x : samples[i])
+          if (const double mu = piece.chemical_potential_value().value(x);
+              std::abs(mu - mu_0) > largest)
+            {
+              largest = std::abs(mu - mu_0);
+              std::ostringstream words;
+              words << "the chemical potential prescribed on '" << piece.name
+                    << "' jumps at t = 0 from the gel's mu_0/(k_BT) = " << mu_0 << " to " << mu;
+              jump = words.str();
+            }
+      }
+    return jump;
+  }
+
+
+  template <int dim>
+  void
+  Scene<dim>::check_rigid_motions() const
+  {
+    const auto motions = unheld_rigid_motions(particles,
+                                              boundary_conditions,
+                                              contact,
+                                              grid.lower,
+                                              grid.upper,
+                                              communicator,
+                                              grid.axisymmetric);
+    if (motions.empty())
+      return;
+    std::string list;
+    for (unsigned int i = 0; i < motions.size(); ++i)
+      list += (i == 0 ? "" : i + 1 == motions.size() ? " and " : ", ") + motions[i];
+    // The tangent is singular along them: the solver gives the body an arbitrary amount of
+    // them, made of round-off (a quarter square free on all sides ended its swelling 6 % of
+    // its size off its symmetric position, without a word).
+    throw InputError("Boundary conditions",
+                     "leave the body free in " + list +
+                       ": no piece prescribes the displacement along such a motion and no "
+                       "contact plane lies across it, so the tangent is singular and the solves "
+                       "move the body by an arbitrary amount of it made of round-off",
+                     "give the pieces on the body's planes of symmetry 'Displacement = normal', "
+                     "or hold a piece by 'Displacement = fixed'");
   }
 
 

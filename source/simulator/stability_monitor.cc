@@ -1,9 +1,66 @@
+#include <gelmpm/core/collective.h>
+#include <gelmpm/core/input_error.h>
 #include <gelmpm/simulator/stability_monitor.h>
 
+#include <deal.II/base/mpi.h>
+
 #include <cmath>
+#include <sstream>
+#include <utility>
 
 namespace GelMPM
 {
+  template <int dim>
+  void
+  StabilityMonitor<dim>::check_settings(const StabilitySettings &settings,
+                                        const Scene<dim>        &scene,
+                                        const TimeStepping      &time_stepping)
+  {
+    require(!settings.enabled() || scene.nitsche.symmetry > 0.,
+            "Stability/Inertia",
+            "needs a symmetric tangent, but 'Nitsche/Variant = skew-symmetric'",
+            "use the symmetric Nitsche variant or switch the stability analysis off");
+    // Both are dense analyses of the whole tangent, made for small discretisations: they read
+    // the matrix's rows on the rank that holds them, which on several ranks is a part.
+    for (const auto &[on, entry] :
+         {std::make_pair(settings.inf_sup, "Stability/Inf-sup constant"),
+          std::make_pair(settings.condition, "Stability/Condition number")})
+      require(!on || !Collective::is_parallel(scene.communicator),
+              entry,
+              "is a dense analysis of the whole tangent and is computed on one MPI rank only, but "
+              "the run has " +
+                std::to_string(dealii::Utilities::MPI::n_mpi_processes(scene.communicator)) +
+                " ranks",
+              "run the scene on one rank (without mpirun) or set the entry to false");
+    require(settings.perturbation_direction.size() >= dim,
+            "Stability/Perturbation direction",
+            "has fewer components than the scene's dimension " + std::to_string(dim),
+            "give one component per coordinate direction");
+    double in_plane = 0.;
+    for (unsigned int d = 0; d < dim; ++d)
+      in_plane += settings.perturbation_direction[d] * settings.perturbation_direction[d];
+    require(settings.perturbation_amplitude == 0. || in_plane > 0.,
+            "Stability/Perturbation direction",
+            "has no component in the scene's " + std::to_string(dim) +
+              " coordinate directions (a third component is ignored in 2D)",
+            "give the direction the gel is to leave the unstable branch in, e.g. '1, 0'");
+    // Bracket ends closer than this are one time for the step arithmetic (times are sums of
+    // many steps, compared to relative_time_tolerance): a narrower bracket would end at zero
+    // width, both of its ends on the same side of the loss of stability.
+    const double narrowest_bracket = 100. * relative_time_tolerance * time_stepping.end_time;
+    if (settings.bisection_tolerance > 0. && settings.bisection_tolerance < narrowest_bracket)
+      {
+        std::ostringstream problem, fix;
+        problem << "is " << settings.bisection_tolerance
+                << ", below 1e-10 times 'Time stepping/End time' (" << narrowest_bracket
+                << "), the narrowest bracket that the step arithmetic resolves";
+        fix << "give at least " << narrowest_bracket
+            << " (tau_d), e.g. 1e-3, or 0 for no bisection";
+        throw InputError("Stability/Bisection tolerance", problem.str(), fix.str());
+      }
+  }
+
+
   template <int dim>
   StabilityMonitor<dim>::StabilityMonitor(
     const StabilitySettings                                   &settings,

@@ -97,6 +97,39 @@ namespace GelMPM
     check_obstacles(const std::vector<double> &times);
 
     /**
+     * Throw InputError ('Background grid/Cells') unless the extended bases can be built on the
+     * initial configuration: the first step builds them, and here a grid too coarse for the body
+     * is still bad input. After create_material_points().
+     */
+    void
+    check_grid_resolves_body();
+
+    /**
+     * Throw InputError unless every boundary function is finite on its piece at times over
+     * [0, @p end_time] (and a prescribed bath stays below the largest chemical potential with a
+     * swollen equilibrium), and unless the obstacles pass check_obstacles() at those times. After
+     * create_material_points(); the functions are left at t = 0.
+     *
+     * Returns the largest jump of a prescribed chemical potential at t = 0 away from the gel's
+     * mu_0, in words (empty: none above a tenth of |mu_0|): a run that then fails early says it
+     * (such a jump swells a layer thinner than a cell).
+     */
+    std::string
+    check_boundary_values(const double end_time);
+
+    /**
+     * Throw InputError ('Boundary conditions') if no boundary condition and no contact plane
+     * holds the body against a rigid motion: the tangent would be singular along it. After
+     * create_material_points().
+     */
+    void
+    check_rigid_motions() const;
+
+    /** The volume points in each cell of the background grid, over all ranks. */
+    std::vector<unsigned int>
+    volume_points_per_cell() const;
+
+    /**
      * On several ranks: partition the cells anew so that each rank holds about as many material
      * points, moving the points with their cells. Nothing on one rank.
      *
@@ -149,6 +182,21 @@ namespace GelMPM
     std::unique_ptr<MixedSystem<dim>>           system;
 
   private:
+    /** Throw InputError ('Material points/Points per cell') below 3 points per direction. */
+    void
+    check_points_per_cell() const;
+
+    /**
+     * Up to 64 surface points spread over each boundary piece (their X_0), the same on every
+     * rank.
+     */
+    std::vector<std::vector<dealii::Point<dim>>>
+    boundary_samples() const;
+
+    /** The largest jump of a prescribed chemical potential at t = 0 at @p samples, in words. */
+    std::string
+    boundary_jump(const std::vector<std::vector<dealii::Point<dim>>> &samples) const;
+
     /** Throw InputError if @p obstacle holds a material point at t = 0 (gap above
      * @p tolerance). */
     void

@@ -34,6 +34,18 @@ namespace GelMPM
   {
   public:
     /**
+     * Throw InputError where the 'Stability' section does not fit the rest of the scene: an
+     * analysis of the inertia with the skew-symmetric Nitsche variant, a dense analysis on
+     * several ranks, a perturbation direction without a component in the scene's @p dim
+     * directions, or a bisection tolerance below what the step arithmetic of @p time_stepping
+     * resolves. (The section's own values are checked by StabilitySettings.)
+     */
+    static void
+    check_settings(const StabilitySettings &settings,
+                   const Scene<dim>        &scene,
+                   const TimeStepping      &time_stepping);
+
+    /**
      * Watch the steps of @p loop on @p scene. @p statistics receives the step's columns,
      * @p stability_file one row per bracketed onset; @p write_event writes an events.csv row
      * (name, t/tau_d); @p record_mode keeps the critical mode of an accepted step for output
