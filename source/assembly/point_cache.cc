@@ -149,9 +149,7 @@ namespace GelMPM
         r.u_n[d]         = r.x[d] + r.edge_offset[d] - r.X0[d];
         r.du_last[d]     = props[Layout::increment + d];
       }
-    for (unsigned int i = 0; i < dim; ++i)
-      for (unsigned int j = 0; j < dim; ++j)
-        r.F_p[i][j] = props[Layout::F + i * dim + j];
+    r.F_p      = deformation_gradient_of<dim>(props);
     r.mu_n     = props[Layout::mu];
     r.dmu_last = props[Layout::mu_increment];
     // The point's material state, from the one place that maps a point to its constants.

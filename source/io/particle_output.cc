@@ -67,15 +67,12 @@ namespace GelMPM
     patches.reserve(particles.n_locally_owned_particles());
     for (const auto &particle : particles)
       {
-        const auto     props = particle.get_properties();
-        Tensor<2, dim> F;
-        for (unsigned int i = 0; i < dim; ++i)
-          for (unsigned int j = 0; j < dim; ++j)
-            F[i][j] = props[Layout::F + i * dim + j];
-        const double mu       = props[Layout::mu];
-        const auto   material = material_state_of(materials, props);
-        const double stretch  = out_of_plane_stretch_of<dim>(props);
-        const double J        = material.gel->J(F, stretch);
+        const auto           props    = particle.get_properties();
+        const Tensor<2, dim> F        = deformation_gradient_of<dim>(props);
+        const double         mu       = props[Layout::mu];
+        const auto           material = material_state_of(materials, props);
+        const double         stretch  = out_of_plane_stretch_of<dim>(props);
+        const double         J        = material.gel->J(F, stretch);
 
         DataOutBase::Patch<0, dim> patch;
         const Point<dim>           x = position_of(particle.get_location(), props);

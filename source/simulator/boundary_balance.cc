@@ -103,13 +103,7 @@ namespace GelMPM
         const auto props = p.get_properties();
         if (kind_of(props) != PointKind::volume)
           continue;
-        dealii::Tensor<2, dim> F;
-        for (unsigned int i = 0; i < dim; ++i)
-          for (unsigned int j = 0; j < dim; ++j)
-            F[i][j] = props[Layout::F + i * dim + j];
-        const double J =
-          material_state_of(material, props).gel->J(F, out_of_plane_stretch_of<dim>(props));
-        volume += props[Layout::measure_n] * (1. - 1. / J);
+        volume += props[Layout::measure_n] * (1. - 1. / volume_ratio_of(material, props));
       }
     return dealii::Utilities::MPI::sum(volume, communicator);
   }

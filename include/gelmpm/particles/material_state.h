@@ -5,6 +5,8 @@
 #include <gelmpm/particles/property_layout.h>
 #include <gelmpm/scene/material_regions.h>
 
+#include <deal.II/base/tensor.h>
+
 namespace GelMPM
 {
   /**
@@ -33,6 +35,29 @@ namespace GelMPM
   {
     const unsigned int region = region_of_point<dim>(properties);
     return {region, &regions[region]};
+  }
+
+
+  /** F_n F_0 of the point whose property array is @p properties (PropertyLayout::F). */
+  template <int dim, typename Properties>
+  inline dealii::Tensor<2, dim>
+  deformation_gradient_of(const Properties &properties)
+  {
+    dealii::Tensor<2, dim> F;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        F[i][j] = properties[PropertyLayout<dim>::F + i * dim + j];
+    return F;
+  }
+
+
+  /** The volume ratio J (dry state to Omega_n) of the point: its gel on its F and F_33. */
+  template <int dim, typename Properties>
+  inline double
+  volume_ratio_of(const MaterialRegions<dim> &regions, const Properties &properties)
+  {
+    return material_state_of(regions, properties)
+      .gel->J(deformation_gradient_of<dim>(properties), out_of_plane_stretch_of<dim>(properties));
   }
 } // namespace GelMPM
 
