@@ -14,7 +14,7 @@ namespace GelMPM
   template <int dim>
   void
   ContactAssembler<dim>::set_settings(const ContactSettings            &settings,
-                                      const std::vector<Obstacle<dim>> &rigid)
+                                      const std::vector<Obstacle<dim>> *obstacles)
   {
     contact = settings;
     Point<dim> lower, upper;
@@ -23,24 +23,52 @@ namespace GelMPM
         lower[d] = this->spaces.u_space().basis_1d(d).x_min();
         upper[d] = this->spaces.u_space().basis_1d(d).x_max();
       }
-    obstacles.clear();
+    sides.clear();
     for (const auto &plane : settings.planes(lower, upper))
-      obstacles.push_back(
-        Obstacle<dim>::grid_side("grid side", plane.axis, plane.value, plane.sign));
-    n_sides = obstacles.size();
-    obstacles.insert(obstacles.end(), rigid.begin(), rigid.end());
-    any_impermeable = std::any_of(rigid.begin(), rigid.end(), [](const auto &obstacle) {
-      return !obstacle.permeable;
-    });
+      sides.push_back(Obstacle<dim>::grid_side("grid side", plane.axis, plane.value, plane.sign));
+    rigid = obstacles;
+    any_impermeable =
+      rigid != nullptr && std::any_of(rigid->begin(), rigid->end(), [](const auto &obstacle) {
+        return !obstacle.permeable;
+      });
   }
 
 
   template <int dim>
   void
-  ContactAssembler<dim>::set_time(const double t)
+  ContactAssembler<dim>::start_block(AssemblyScratch<dim> &s,
+                                     const unsigned int /*n_points*/,
+                                     const bool with_matrix) const
   {
-    for (unsigned int k = n_sides; k < obstacles.size(); ++k)
-      obstacles[k].set_time(t);
+    if (with_matrix && contact.method == ContactSettings::Method::nitsche)
+      start_displacement_nitsche_block(s, this->tangent.template batched<dim>());
+  }
+
+
+  template <int dim>
+  void
+  ContactAssembler<dim>::finish_block(AssemblyScratch<dim> &s,
+                                      AssemblyCopy         &copy,
+                                      const bool            with_matrix) const
+  {
+    if (with_matrix && contact.method == ContactSettings::Method::nitsche)
+      add_displacement_nitsche_block(s, copy);
+  }
+
+
+  template <int dim>
+  const Obstacle<dim> &
+  ContactAssembler<dim>::obstacle(const unsigned int k) const
+  {
+    return k < sides.size() ? sides[k] : (*rigid)[k - sides.size()];
+  }
+
+
+  template <int dim>
+  unsigned int
+  ContactAssembler<dim>::n_obstacles() const
+  {
+    return sides.size() + n_rigid_obstacles();
   }
 
 
@@ -56,7 +84,7 @@ namespace GelMPM
   bool
   ContactAssembler<dim>::on_contact_plane(const unsigned int axis, const double sign) const
   {
-    return std::any_of(obstacles.begin(), obstacles.begin() + n_sides, [&](const auto &side) {
+    return std::any_of(sides.begin(), sides.end(), [&](const auto &side) {
       return side.normal[axis] == -sign;
     });
   }
@@ -66,7 +94,7 @@ namespace GelMPM
   unsigned int
   ContactAssembler<dim>::n_rigid_obstacles() const
   {
-    return obstacles.size() - n_sides;
+    return rigid == nullptr ? 0 : rigid->size();
   }
 
 
@@ -74,7 +102,7 @@ namespace GelMPM
   const Obstacle<dim> &
   ContactAssembler<dim>::rigid_obstacle(const unsigned int k) const
   {
-    return obstacles[n_sides + k];
+    return (*rigid)[k];
   }
 
 
@@ -82,7 +110,7 @@ namespace GelMPM
   unsigned int
   ContactAssembler<dim>::index_of_rigid(const unsigned int k) const
   {
-    return n_sides + k;
+    return sides.size() + k;
   }
 
 
@@ -118,7 +146,7 @@ namespace GelMPM
                                const Tensor<2, dim>   &delta_F,
                                const double            mu) const
   {
-    const auto gap = obstacles[k].gap(position(r, du));
+    const auto gap = obstacle(k).gap(position(r, du));
     if (!gap.possible)
       return {false, -std::numeric_limits<double>::infinity()};
     if (contact.method == ContactSettings::Method::nitsche)
@@ -141,8 +169,8 @@ namespace GelMPM
   {
     if (!any_impermeable || !applies(point))
       return false;
-    for (unsigned int k = n_sides; k < obstacles.size(); ++k)
-      if (!obstacles[k].permeable && state(k, point, du, delta_F, mu).first)
+    for (unsigned int k = 0; k < n_rigid_obstacles(); ++k)
+      if (!rigid_obstacle(k).permeable && state(index_of_rigid(k), point, du, delta_F, mu).first)
         return true;
     return false;
   }
@@ -157,7 +185,7 @@ namespace GelMPM
   {
     bool   is_active   = false;
     double penetration = -std::numeric_limits<double>::infinity();
-    for (unsigned int k = 0; k < obstacles.size(); ++k)
+    for (unsigned int k = 0; k < n_obstacles(); ++k)
       {
         const auto [active, g] = state(k, r, du, delta_F, mu);
         penetration            = std::max(penetration, g);
@@ -196,7 +224,7 @@ namespace GelMPM
                                      with_matrix,
                                      s,
                                      copy,
-                                     this->reference_nitsche_tangent);
+                                     this->tangent.reference_nitsche);
             // The curvature of a sphere or a punch's rounded edge: beta g dm/dx, the derivative
             // of g m beyond m (x) m.
             if (with_matrix && gap.dm_dx != Tensor<2, dim>())
@@ -262,7 +290,7 @@ namespace GelMPM
   {
     if (!applies(point))
       return;
-    add_obstacle(obstacles[k], point, nitsche_traction(point, s), with_matrix, s, copy);
+    add_obstacle(obstacle(k), point, nitsche_traction(point, s), with_matrix, s, copy);
   }
 
 
@@ -278,8 +306,11 @@ namespace GelMPM
       return;
     // Once per point for all obstacles.
     const Tensor<1, dim> traction = nitsche_traction(point, s);
-    for (const auto &obstacle : obstacles)
-      add_obstacle(obstacle, point, traction, with_matrix, s, copy);
+    for (const auto &side : sides)
+      add_obstacle(side, point, traction, with_matrix, s, copy);
+    if (rigid != nullptr)
+      for (const auto &obstacle : *rigid)
+        add_obstacle(obstacle, point, traction, with_matrix, s, copy);
   }
 
 

@@ -508,7 +508,10 @@ namespace GelMPM
   add_displacement_nitsche_block(AssemblyScratch<dim> &s, AssemblyCopy &copy)
   {
     auto &B = s.nitsche_batch;
-    B.open  = false;
+    // Once per block, whichever of the terms that gather into the batch closes it first.
+    if (!B.open)
+      return;
+    B.open = false;
     if (B.n_straight == 0)
       return;
     using dealii::types::blas_int;
@@ -558,6 +561,28 @@ namespace GelMPM
 
   template <int dim>
   void
+  DisplacementNitscheAssembler<dim>::start_block(AssemblyScratch<dim> &s,
+                                                 const unsigned int /*n_points*/,
+                                                 const bool with_matrix) const
+  {
+    if (with_matrix)
+      start_displacement_nitsche_block(s, this->tangent.template batched<dim>());
+  }
+
+
+  template <int dim>
+  void
+  DisplacementNitscheAssembler<dim>::finish_block(AssemblyScratch<dim> &s,
+                                                  AssemblyCopy         &copy,
+                                                  const bool            with_matrix) const
+  {
+    if (with_matrix)
+      add_displacement_nitsche_block(s, copy);
+  }
+
+
+  template <int dim>
+  void
   DisplacementNitscheAssembler<dim>::assemble(const PointRecord<dim> &point,
                                               const double /*dt*/,
                                               const bool            with_matrix,
@@ -575,7 +600,7 @@ namespace GelMPM
                              with_matrix,
                              s,
                              copy,
-                             this->reference_nitsche_tangent);
+                             this->tangent.reference_nitsche);
     const unsigned int mu0 = dim * s.n_u;
     for (unsigned int b = 0; b < s.n_mu; ++b)
       copy.residual(mu0 + b) += this->nitsche.symmetry * point.adjoint_solvent_n * s.M[b];

@@ -8,6 +8,7 @@
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <numeric>
@@ -33,15 +34,62 @@ namespace GelMPM
     , communicator(communicator)
     , cache(materials, boundary_conditions, spaces, communicator)
     , projection(cache, spaces, communicator)
-    , traction(boundary_conditions, nitsche, spaces)
-    , displacement_nitsche(boundary_conditions, nitsche, spaces)
-    , contact(boundary_conditions, nitsche, spaces)
-    , chemical_potential_nitsche(boundary_conditions, nitsche, spaces)
-    , solvent_flux(boundary_conditions, nitsche, spaces)
-    , surface_terms{
-        {&traction, &displacement_nitsche, &contact, &chemical_potential_nitsche, &solvent_flux}}
   {
-    chemical_potential_nitsche.set_contact(contact);
+    build_terms();
+  }
+
+
+  template <int dim>
+  void
+  MixedSystem<dim>::build_terms()
+  {
+    scene_terms = setup_assemblers<dim>(
+      {boundary_conditions, nitsche, spaces_, tangent, contact_settings, obstacles});
+    terms.clear();
+    volume_terms.clear();
+    surface_terms.clear();
+    contact = nullptr;
+    for (const auto *list : {&scene_terms, &added_terms})
+      for (const auto &term : *list)
+        {
+          terms.push_back(term.get());
+          (term->at_volume_points() ? volume_terms : surface_terms).push_back(term.get());
+          if (const auto *c = dynamic_cast<const ContactAssembler<dim> *>(term.get()))
+            contact = c;
+        }
+  }
+
+
+  template <int dim>
+  void
+  MixedSystem<dim>::add_term(std::unique_ptr<PointAssembler<dim>> term)
+  {
+    added_terms.push_back(std::move(term));
+    build_terms();
+  }
+
+
+  template <int dim>
+  const std::vector<const PointAssembler<dim> *> &
+  MixedSystem<dim>::assemblers() const
+  {
+    return terms;
+  }
+
+
+  template <int dim>
+  std::vector<std::pair<unsigned int, unsigned int>>
+  MixedSystem<dim>::cell_couplings() const
+  {
+    std::vector<std::pair<unsigned int, unsigned int>> pairs;
+    for (const auto *term : terms)
+      term->add_cell_couplings(cache, pairs);
+    for (auto &[a, b] : pairs)
+      if (b < a)
+        std::swap(a, b);
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    return pairs;
   }
 
 
@@ -59,8 +107,9 @@ namespace GelMPM
           on_axis[i] = true;
       }
     // On several ranks the rows' owners follow the cells' holders too (a repartition).
+    auto couplings = cell_couplings();
     bool new_pattern =
-      cache.classification() != pattern_classification ||
+      cache.classification() != pattern_classification || couplings != pattern_couplings ||
       (Collective::is_parallel(communicator) && cache.cell_holder() != pattern_holder);
     if (Collective::is_parallel(communicator))
       {
@@ -79,11 +128,12 @@ namespace GelMPM
     if (new_pattern)
       {
         before_new_pattern();
-        build_sparsity_pattern();
+        build_sparsity_pattern(couplings);
         projection.forget_patterns();
         // Only now: a setup that throws on the way leaves the next one to rebuild the pattern.
         pattern_classification = cache.classification();
         pattern_holder         = cache.cell_holder();
+        pattern_couplings      = std::move(couplings);
       }
     return new_pattern;
   }
@@ -91,15 +141,35 @@ namespace GelMPM
 
   template <int dim>
   void
-  MixedSystem<dim>::build_sparsity_pattern()
+  MixedSystem<dim>::unknowns_of_cell(const unsigned int                            u_cell,
+                                     std::vector<dealii::types::global_dof_index> &dofs) const
   {
-    // Every unknown of a cell with points couples with every other one of that cell.
+    cache.unknowns_of_block(PointBlock{u_cell, spaces_.mu_cell_of(u_cell), 0, 0}, dofs);
+  }
+
+
+  template <int dim>
+  void
+  MixedSystem<dim>::build_sparsity_pattern(
+    const std::vector<std::pair<unsigned int, unsigned int>> &couplings)
+  {
+    // Every unknown of a cell with points couples with every other one of that cell, and with
+    // every unknown of the cells the terms couple it with.
     dealii::DynamicSparsityPattern               pattern(spaces_.n_dofs(), spaces_.n_dofs());
-    std::vector<dealii::types::global_dof_index> dofs;
+    std::vector<dealii::types::global_dof_index> dofs, other;
     for (const PointBlock &b : cache.blocks())
       {
         cache.unknowns_of_block(b, dofs);
         for (const auto row : dofs)
+          pattern.add_entries(row, dofs.begin(), dofs.end(), true);
+      }
+    for (const auto &[a, b] : couplings)
+      {
+        unknowns_of_cell(a, dofs);
+        unknowns_of_cell(b, other);
+        for (const auto row : dofs)
+          pattern.add_entries(row, other.begin(), other.end(), true);
+        for (const auto row : other)
           pattern.add_entries(row, dofs.begin(), dofs.end(), true);
       }
     residual_.reinit(spaces_.n_dofs());
@@ -120,7 +190,7 @@ namespace GelMPM
           }
         return;
       }
-    const auto [owned, relevant] = owned_and_relevant_dofs();
+    const auto [owned, relevant] = owned_and_relevant_dofs(couplings);
     dealii::TrilinosWrappers::SparsityPattern distributed(owned, owned, relevant, communicator);
     for (const auto row : relevant)
       {
@@ -135,7 +205,8 @@ namespace GelMPM
 
   template <int dim>
   std::pair<dealii::IndexSet, dealii::IndexSet>
-  MixedSystem<dim>::owned_and_relevant_dofs() const
+  MixedSystem<dim>::owned_and_relevant_dofs(
+    const std::vector<std::pair<unsigned int, unsigned int>> &couplings) const
   {
     // A B-spline function spans q + 1 cells, more than a ghost layer: ownership is decided on
     // the replicated classification instead. Each unknown belongs to the rank that holds the
@@ -167,6 +238,12 @@ namespace GelMPM
         cache.unknowns_of_block(b, dofs);
         relevant.add_indices(dofs.begin(), dofs.end());
       }
+    for (const auto &pair : couplings)
+      for (const unsigned int c : {pair.first, pair.second})
+        {
+          unknowns_of_cell(c, dofs);
+          relevant.add_indices(dofs.begin(), dofs.end());
+        }
     relevant.add_indices(owned);
     owned.compress();
     relevant.compress();
@@ -204,7 +281,9 @@ namespace GelMPM
           dealii::scalar_product(outer(r.projector * (r.u_n - u_bar_n), r.normal), start.dP_n_dmu);
       }
     boundary_conditions.set_time(t_over_tau_d);
-    contact.set_time(t_over_tau_d);
+    if (obstacles != nullptr)
+      for (auto &obstacle : *obstacles)
+        obstacle.set_time(t_over_tau_d);
     for (auto &r : cache.points())
       {
         if (r.kind == PointKind::volume || r.piece < 0)
@@ -416,7 +495,9 @@ namespace GelMPM
   {
     // Each obstacle's own contact terms, tested with w = e_k as boundary_balances() tests the
     // pieces' terms: the force on the gel is minus their sum, the force on the obstacle their sum.
-    std::vector<ObstacleReaction> reactions(contact.n_rigid_obstacles());
+    if (contact == nullptr)
+      return {};
+    std::vector<ObstacleReaction> reactions(contact->n_rigid_obstacles());
     AssemblyScratch<dim>          scratch;
     AssemblyCopy                  copy;
     for (const auto &block : cache.blocks())
@@ -424,36 +505,36 @@ namespace GelMPM
         bool has_contact_points = false;
         for (unsigned int p = block.first; p < block.end && !has_contact_points; ++p)
           has_contact_points = cache.points()[p].kind != PointKind::volume &&
-                               cache.points()[p].assembled && contact.applies(cache.points()[p]);
+                               cache.points()[p].assembled && contact->applies(cache.points()[p]);
         if (!has_contact_points)
           continue;
         scratch.gather_block_coefficients(block, spaces_, solution);
         for (unsigned int p = block.first; p < block.end; ++p)
           {
             const PointRecord<dim> &point = cache.points()[p];
-            if (point.kind == PointKind::volume || !point.assembled || !contact.applies(point))
+            if (point.kind == PointKind::volume || !point.assembled || !contact->applies(point))
               continue;
             scratch.evaluate_point_fields(point, cache);
             for (unsigned int k = 0; k < reactions.size(); ++k)
               {
-                const unsigned int index = contact.index_of_rigid(k);
-                const auto [active, g]   = contact.state(index,
-                                                       point,
-                                                       scratch.du_at_point,
-                                                       scratch.delta_F,
-                                                       scratch.mu_at_point);
+                const unsigned int index = contact->index_of_rigid(k);
+                const auto [active, g]   = contact->state(index,
+                                                        point,
+                                                        scratch.du_at_point,
+                                                        scratch.delta_F,
+                                                        scratch.mu_at_point);
                 (void)g;
                 if (!active)
                   continue;
                 copy.residual.reinit(dim * scratch.n_u + scratch.n_mu);
-                contact.assemble_obstacle(index, point, false, scratch, copy);
+                contact->assemble_obstacle(index, point, false, scratch, copy);
                 auto &reaction = reactions[k];
                 for (unsigned int a = 0; a < scratch.n_u; ++a)
                   for (unsigned int d = 0; d < dim; ++d)
                     reaction.force[d] += copy.residual(dim * a + d);
                 reaction.area += point.measure;
                 reaction.radius = std::max(reaction.radius,
-                                           contact.rigid_obstacle(k).distance_from_axis(
+                                           contact->rigid_obstacle(k).distance_from_axis(
                                              point.x + point.edge_offset + scratch.du_at_point));
               }
           }
@@ -496,14 +577,8 @@ namespace GelMPM
       copy.matrix.reinit(n, n);
 
     scratch.gather_block_coefficients(block, spaces_, solution);
-    if (with_matrix)
-      {
-        // Batched (3D), every term adds both triangles to the copy.
-        if (!volume_term.batched())
-          scratch.volume_lower.reinit(n, n);
-        volume_term.start_block(scratch, block.end - block.first);
-        start_displacement_nitsche_block(scratch, volume_term.batched());
-      }
+    for (const auto *term : terms)
+      term->start_block(scratch, block.end - block.first, with_matrix);
 
     unsigned int failed_point = block.first;
     try
@@ -517,24 +592,13 @@ namespace GelMPM
             scratch.evaluate_point_fields(point, cache);
 
             if (point.kind == PointKind::volume)
-              volume_term.assemble(point, dt, with_matrix, scratch, copy);
+              for (const auto *term : volume_terms)
+                term->assemble(point, dt, with_matrix, scratch, copy);
             else
               add_surface_point(point, dt, with_matrix, scratch, copy);
           }
-        if (with_matrix)
-          {
-            volume_term.add_block_tangent(scratch, copy);
-            add_displacement_nitsche_block(scratch, copy);
-          }
-        if (with_matrix && !volume_term.batched())
-          for (unsigned int r = 0; r < n; ++r)
-            for (unsigned int c = 0; c <= r; ++c)
-              {
-                const double value = scratch.volume_lower(r, c);
-                copy.matrix(r, c) += value;
-                if (c != r)
-                  copy.matrix(c, r) += value;
-              }
+        for (const auto *term : terms)
+          term->finish_block(scratch, copy, with_matrix);
         if (!on_axis.empty())
           hold_axis_in_block(copy, with_matrix);
       }
@@ -554,7 +618,7 @@ namespace GelMPM
                                       AssemblyScratch<dim>   &scratch,
                                       AssemblyCopy           &copy) const
   {
-    for (const PointAssembler<dim> *term : surface_terms)
+    for (const auto *term : surface_terms)
       term->assemble(point, dt, with_matrix, scratch, copy);
   }
 
@@ -600,7 +664,11 @@ namespace GelMPM
     const auto                &points = cache.points();
     std::vector<unsigned char> outside(points.size(), 0);
     std::vector<Point<dim>>    moved(points.size());
-    const auto                 update_point = [&](const unsigned int p) {
+    // Per direction, whether the lower and the upper side of the grid are contact planes.
+    std::array<std::array<bool, 2>, dim> on_contact_plane{};
+    for (unsigned int d = 0; d < dim && contact != nullptr; ++d)
+      on_contact_plane[d] = {{contact->on_contact_plane(d, -1.), contact->on_contact_plane(d, 1.)}};
+    const auto update_point = [&](const unsigned int p) {
       const PointRecord<dim> &r    = cache.points()[p];
       const auto [du, delta_F, mu] = cache.fields_at(r, solution);
 
@@ -609,7 +677,7 @@ namespace GelMPM
       // stays lambda_0; in an axisymmetric scene the hoop stretch is r_{n+1}/R_0.
       const double lambda_0 = r.gel->lambda_0();
       const double hoop     = r.axisymmetric() ? (r.radius + du[0]) / r.X0[0] : 1.;
-      const double J_n = hoop * dealii::determinant(F_p) / std::pow(lambda_0, dim);
+      const double J_n      = hoop * dealii::determinant(F_p) / std::pow(lambda_0, dim);
 
       auto props = cache.particle(p)->get_properties();
       for (unsigned int i = 0; i < dim; ++i)
@@ -647,11 +715,11 @@ namespace GelMPM
         {
           const auto  &basis     = spaces_.u_space().basis_1d(d);
           const double tolerance = 0.25 * basis.cell_size();
-          const bool   held = r.kind == PointKind::volume || r.projector[d][d] > 0.5;
-          if ((held || contact.on_contact_plane(d, -1.)) && x[d] < basis.x_min() &&
+          const bool   held      = r.kind == PointKind::volume || r.projector[d][d] > 0.5;
+          if ((held || on_contact_plane[d][0]) && x[d] < basis.x_min() &&
               x[d] > basis.x_min() - tolerance)
             x[d] = basis.x_min();
-          if ((held || contact.on_contact_plane(d, 1.)) && x[d] > basis.x_max() &&
+          if ((held || on_contact_plane[d][1]) && x[d] > basis.x_max() &&
               x[d] < basis.x_max() + tolerance)
             x[d] = basis.x_max();
           if (x[d] < basis.x_min() || x[d] > basis.x_max())
@@ -737,10 +805,21 @@ namespace GelMPM
 
   template <int dim>
   void
-  MixedSystem<dim>::set_contact(const ContactSettings            &settings,
-                                const std::vector<Obstacle<dim>> &obstacles)
+  MixedSystem<dim>::set_contact(const ContactSettings &settings)
   {
-    contact.set_settings(settings, obstacles);
+    contact_settings = settings;
+    obstacles        = nullptr;
+    build_terms();
+  }
+
+
+  template <int dim>
+  void
+  MixedSystem<dim>::set_contact(const ContactSettings &settings, std::vector<Obstacle<dim>> &rigid)
+  {
+    contact_settings = settings;
+    obstacles        = &rigid;
+    build_terms();
   }
 
 
@@ -750,7 +829,7 @@ namespace GelMPM
   {
     unsigned int active      = 0;
     double       penetration = 0.;
-    if (!contact.enabled())
+    if (contact == nullptr)
       return {active, penetration};
     for (const auto &r : cache.points())
       {
@@ -758,7 +837,7 @@ namespace GelMPM
             boundary_conditions.piece(r.piece).displacement_prescribed())
           continue;
         const auto [du, delta_F, mu] = cache.fields_at(r, solution);
-        const auto [is_active, g]    = contact.state(r, du, delta_F, mu);
+        const auto [is_active, g]    = contact->state(r, du, delta_F, mu);
         penetration                  = std::max(penetration, g);
         active += is_active;
       }

@@ -41,9 +41,9 @@ namespace GelMPM
       return;
 
     // A volume point's tangent is symmetric (A has the major symmetry A_iJkL = A_kLiJ, and
-    // K_mu,u = K_u,mu^T): only its lower triangle is summed here, and MixedSystem::assemble_block()
-    // mirrors the block's sum once.
-    if (generic_tangent)
+    // K_mu,u = K_u,mu^T): only its lower triangle is summed here, and finish_block() mirrors the
+    // block's sum once.
+    if (tangent.generic_volume)
       add_generic_tangent(point, state, dt, s);
     else if (batched())
       gather_tangent(point, state, dt, s);
@@ -54,12 +54,19 @@ namespace GelMPM
 
   template <int dim>
   void
-  VolumeTermAssembler<dim>::start_block(AssemblyScratch<dim> &s, const unsigned int n_points) const
+  VolumeTermAssembler<dim>::start_block(AssemblyScratch<dim> &s,
+                                        const unsigned int    n_points,
+                                        const bool            with_matrix) const
   {
+    if (!with_matrix)
+      return;
     auto &B    = s.batch;
     B.n_points = 0;
     if (!batched())
-      return;
+      {
+        s.volume_lower.reinit(s.mu0() + s.n_mu, s.mu0() + s.n_mu);
+        return;
+      }
     B.capacity             = std::max(B.capacity, n_points);
     const unsigned int n_u = s.n_u, n_mu = s.n_mu;
     const auto         grow = [](std::vector<double> &v, const std::size_t size) {
@@ -123,6 +130,31 @@ namespace GelMPM
         {
           B.GM[b + n_mu * (dim * p + J)]  = s.GM[b][J];
           B.wGM[b + n_mu * (dim * p + J)] = -Vdtm * s.GM[b][J];
+        }
+  }
+
+
+  template <int dim>
+  void
+  VolumeTermAssembler<dim>::finish_block(AssemblyScratch<dim> &s,
+                                         AssemblyCopy         &copy,
+                                         const bool            with_matrix) const
+  {
+    if (!with_matrix)
+      return;
+    if (batched())
+      {
+        add_block_tangent(s, copy);
+        return;
+      }
+    const unsigned int n = s.mu0() + s.n_mu;
+    for (unsigned int r = 0; r < n; ++r)
+      for (unsigned int c = 0; c <= r; ++c)
+        {
+          const double value = s.volume_lower(r, c);
+          copy.matrix(r, c) += value;
+          if (c != r)
+            copy.matrix(c, r) += value;
         }
   }
 

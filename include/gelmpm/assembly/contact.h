@@ -2,8 +2,8 @@
 #define gelmpm_assembly_contact_h
 
 #include <gelmpm/assembly/contact_settings.h>
-#include <gelmpm/assembly/obstacle.h>
 #include <gelmpm/assembly/point_assembler.h>
+#include <gelmpm/scene/obstacle.h>
 
 #include <utility>
 #include <vector>
@@ -23,7 +23,10 @@ namespace GelMPM
    *   (add_displacement_nitsche() with Pi = m (x) m, g m and beta_c) where f beta_c g -
    *   m . (P_n N) > 0, Nitsche's active set (f = 'Active set factor', 1: the augmented one).
    * The active set is that of the Newton iterate (semi-smooth Newton). The obstacles are summed
-   * in their order, the grid sides first. Off (nothing added) until set_settings() enables it.
+   * in their order, the grid sides first. The grid sides are the term's own; the rigid obstacles
+   * are the scene's (Scene::obstacles), which the term reads where they are and does not copy:
+   * their owner moves them (MixedSystem::set_boundary_values()). Off (nothing added) until
+   * set_settings() enables it.
    */
   template <int dim>
   class ContactAssembler final : public SurfaceTermAssembler<dim>
@@ -32,13 +35,21 @@ namespace GelMPM
     using SurfaceTermAssembler<dim>::SurfaceTermAssembler;
 
     /** Use @p settings, with the planes on the sides of the background grid they name, and the
-     * rigid @p obstacles after them. */
+     * rigid @p obstacles after them (none if nullptr; they must outlive the term). */
     void
-    set_settings(const ContactSettings &settings, const std::vector<Obstacle<dim>> &obstacles);
+    set_settings(const ContactSettings &settings, const std::vector<Obstacle<dim>> *obstacles);
 
-    /** Move the rigid obstacles to time @p t (in tau_d). */
+    /** With the tangent, Nitsche's method: start_displacement_nitsche_block(). */
     void
-    set_time(const double t);
+    start_block(AssemblyScratch<dim> &scratch,
+                const unsigned int    n_points,
+                const bool            with_matrix) const override;
+
+    /** With the tangent, Nitsche's method: add_displacement_nitsche_block(). */
+    void
+    finish_block(AssemblyScratch<dim> &scratch,
+                 AssemblyCopy         &copy,
+                 const bool            with_matrix) const override;
 
     /** Whether contact is imposed at all. */
     bool
@@ -137,10 +148,19 @@ namespace GelMPM
     static dealii::Point<dim>
     position(const PointRecord<dim> &point, const dealii::Tensor<1, dim> &du);
 
-    ContactSettings            contact;
-    std::vector<Obstacle<dim>> obstacles;
-    /** The number of grid sides at the front of obstacles. */
-    unsigned int n_sides = 0;
+    /** The obstacle @p k: the grid sides, then the rigid obstacles. */
+    const Obstacle<dim> &
+    obstacle(const unsigned int k) const;
+
+    /** The number of obstacles, grid sides and rigid ones. */
+    unsigned int
+    n_obstacles() const;
+
+    ContactSettings contact;
+    /** The planes of symmetry on the grid's sides, fixed plane obstacles. */
+    std::vector<Obstacle<dim>> sides;
+    /** The scene's rigid obstacles (nullptr: none). */
+    const std::vector<Obstacle<dim>> *rigid = nullptr;
     /** Whether any obstacle is impermeable. */
     bool any_impermeable = false;
   };

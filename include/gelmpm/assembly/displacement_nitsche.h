@@ -51,8 +51,9 @@ namespace GelMPM
   /**
    * Adds the displacement-displacement part of the gathered Nitsche tangents of the block to
    * @p copy (both triangles, as VolumeTermAssembler::add_block_tangent() does) and closes the
-   * block: two dgemm, of which the inner dimension is 3 + 2 dim resp. 4 per point, instead of
-   * the closed form's loop over the pairs of functions of every point.
+   * block (nothing if it is closed, so that each term that gathers into it may call this): two
+   * dgemm, of which the inner dimension is 3 + 2 dim resp. 4 per point, instead of the closed
+   * form's loop over the pairs of functions of every point.
    */
   template <int dim>
   void
@@ -93,12 +94,24 @@ namespace GelMPM
   public:
     using SurfaceTermAssembler<dim>::SurfaceTermAssembler;
 
+    /** With the tangent: start_displacement_nitsche_block(). */
+    void
+    start_block(AssemblyScratch<dim> &scratch,
+                const unsigned int    n_points,
+                const bool            with_matrix) const override;
+
     void
     assemble(const PointRecord<dim> &point,
              const double            dt,
              const bool              with_matrix,
              AssemblyScratch<dim>   &scratch,
              AssemblyCopy           &copy) const override;
+
+    /** With the tangent: add_displacement_nitsche_block(). */
+    void
+    finish_block(AssemblyScratch<dim> &scratch,
+                 AssemblyCopy         &copy,
+                 const bool            with_matrix) const override;
   };
 } // namespace GelMPM
 

@@ -1,17 +1,14 @@
 #ifndef gelmpm_assembly_mixed_system_h
 #define gelmpm_assembly_mixed_system_h
 
-#include <gelmpm/assembly/chemical_potential_nitsche.h>
+#include <gelmpm/assembly/assemblers.h>
 #include <gelmpm/assembly/contact.h>
 #include <gelmpm/assembly/contact_settings.h>
 #include <gelmpm/assembly/discretisation.h>
-#include <gelmpm/assembly/displacement_nitsche.h>
-#include <gelmpm/assembly/neumann_terms.h>
 #include <gelmpm/assembly/nitsche_settings.h>
 #include <gelmpm/assembly/point_assembler.h>
 #include <gelmpm/assembly/point_cache.h>
 #include <gelmpm/assembly/point_projection.h>
-#include <gelmpm/assembly/volume_term.h>
 #include <gelmpm/core/newton_system.h>
 #include <gelmpm/core/non_physical_state.h>
 #include <gelmpm/core/sparse_entries.h>
@@ -19,6 +16,7 @@
 #include <gelmpm/particles/property_layout.h>
 #include <gelmpm/scene/boundary_conditions.h>
 #include <gelmpm/scene/material_regions.h>
+#include <gelmpm/scene/obstacle.h>
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/mpi.h>
@@ -30,7 +28,6 @@
 #include <deal.II/lac/vector.h>
 #include <deal.II/particles/particle_handler.h>
 
-#include <array>
 #include <functional>
 #include <memory>
 #include <string>
@@ -71,11 +68,10 @@ namespace GelMPM
    *
    * The class holds the parts together: the point cache, the sparsity pattern of the global
    * tangent (NewtonSystem's matrix and residual), the boundary data of a step and the point
-   * updates. Each term of the
-   * weak form is an assembler of its own (PointAssembler): VolumeTermAssembler at volume points;
-   * TractionAssembler, DisplacementNitscheAssembler, ContactAssembler,
-   * ChemicalPotentialNitscheAssembler and SolventFluxAssembler, in this order, at the surface
-   * points of a piece. The projections are PointProjection's; the error norms of a step are in
+   * updates. Each term of the weak form is an assembler of its own (PointAssembler), and the
+   * scene's terms are one list, built by setup_assemblers() with the terms the scene needs, in
+   * the order of the sums; the class knows no term but contact, whose state and reactions it
+   * reports. The projections are PointProjection's; the error norms of a step are in
    * mixed_system_errors.cc.
    *
    * On several MPI ranks each rank holds the material points of its cells and assembles them;
@@ -235,10 +231,30 @@ namespace GelMPM
 
     /**
      * Keep the free surfaces behind the planes of symmetry of @p settings (the "Contact"
-     * section) and out of the rigid @p obstacles; off until called.
+     * section); off until called. Builds the list of terms anew.
      */
     void
-    set_contact(const ContactSettings &settings, const std::vector<Obstacle<dim>> &obstacles = {});
+    set_contact(const ContactSettings &settings);
+
+    /**
+     * set_contact(), and keep the free surfaces out of the scene's rigid @p obstacles too: the
+     * contact term reads them where they are (they must outlive the system), and
+     * set_boundary_values() moves them to the time of the step's end.
+     */
+    void
+    set_contact(const ContactSettings &settings, std::vector<Obstacle<dim>> &obstacles);
+
+    /**
+     * Add @p term to the end of the scene's terms (a term the scene file does not describe: a
+     * test's, or one whose owner builds it). Kept when set_contact() builds the list anew; its
+     * couplings (PointAssembler::add_cell_couplings()) enter the pattern at the next setup().
+     */
+    void
+    add_term(std::unique_ptr<PointAssembler<dim>> term);
+
+    /** The terms of the weak form, in the order of the sums (setup_assemblers(), add_term()). */
+    const std::vector<const PointAssembler<dim> *> &
+    assemblers() const;
 
     /**
      * The contact state of @p solution: the number of surface points on which the contact
@@ -310,7 +326,7 @@ namespace GelMPM
     void
     set_generic_volume_tangent(const bool generic)
     {
-      volume_term.set_generic_tangent(generic);
+      tangent.generic_volume = generic;
     }
 
     /**
@@ -323,8 +339,7 @@ namespace GelMPM
     void
     set_reference_nitsche_tangent(const bool reference)
     {
-      displacement_nitsche.set_reference_nitsche_tangent(reference);
-      contact.set_reference_nitsche_tangent(reference);
+      tangent.reference_nitsche = reference;
     }
 
   private:
@@ -336,16 +351,34 @@ namespace GelMPM
     std::vector<unsigned int>
     assembly_order() const;
 
-    /** The sparsity pattern of the step's tangent, and the matrix and residual on it. */
+    /** The pairs of cells the terms couple beyond the blocks (add_cell_couplings()), sorted. */
+    std::vector<std::pair<unsigned int, unsigned int>>
+    cell_couplings() const;
+
+    /**
+     * The sparsity pattern of the step's tangent, with the couplings @p couplings between cells,
+     * and the matrix and residual on it.
+     */
     void
-    build_sparsity_pattern();
+    build_sparsity_pattern(const std::vector<std::pair<unsigned int, unsigned int>> &couplings);
+
+    /** The unknowns of the cell @p u_cell with volume points, sorted. */
+    void
+    unknowns_of_cell(const unsigned int                            u_cell,
+                     std::vector<dealii::types::global_dof_index> &dofs) const;
 
     /**
      * On several ranks: the unknowns whose rows of the tangent this rank owns, and those its
-     * points contribute to (which it writes, sent to their owners by compress()).
+     * points contribute to (which it writes, sent to their owners by compress()), with the
+     * cells of @p couplings.
      */
     std::pair<dealii::IndexSet, dealii::IndexSet>
-    owned_and_relevant_dofs() const;
+    owned_and_relevant_dofs(
+      const std::vector<std::pair<unsigned int, unsigned int>> &couplings) const;
+
+    /** The list of terms of the scene and the contact settings, with the added terms after it. */
+    void
+    build_terms();
 
     /** The block's local residual (and tangent) from the terms at its points. */
     void
@@ -356,7 +389,7 @@ namespace GelMPM
                    AssemblyScratch<dim>         &scratch,
                    AssemblyCopy                 &copy) const;
 
-    /** The surface terms at a surface point of a piece, in their order (surface_terms). */
+    /** The surface terms at a surface point of a piece, in their order. */
     void
     add_surface_point(const PointRecord<dim> &point,
                       const double            dt,
@@ -380,20 +413,24 @@ namespace GelMPM
     PointCache<dim>      cache;
     PointProjection<dim> projection;
 
-    // The terms of the weak form: one at volume points, the others at surface points in the
-    // order of surface_terms.
-    VolumeTermAssembler<dim>                         volume_term;
-    TractionAssembler<dim>                           traction;
-    DisplacementNitscheAssembler<dim>                displacement_nitsche;
-    ContactAssembler<dim>                            contact;
-    ChemicalPotentialNitscheAssembler<dim>           chemical_potential_nitsche;
-    SolventFluxAssembler<dim>                        solvent_flux;
-    const std::array<const PointAssembler<dim> *, 5> surface_terms;
+    // How the terms form their tangents (they refer to it), the "Contact" section and the
+    // scene's rigid obstacles (nullptr: none), which set_boundary_values() moves.
+    TangentOptions              tangent;
+    ContactSettings             contact_settings;
+    std::vector<Obstacle<dim>> *obstacles = nullptr;
 
-    // The classification (cells with volume points) and the cells' holders the sparsity
-    // pattern was built for.
-    std::vector<bool>         pattern_classification;
-    std::vector<unsigned int> pattern_holder;
+    // The terms of the weak form: the scene's (setup_assemblers()) and the added ones (add_term()),
+    // and, in the order of the sums, all of them, those at volume points and those at surface
+    // points; the contact term among them (nullptr: contact off).
+    std::vector<std::unique_ptr<PointAssembler<dim>>> scene_terms, added_terms;
+    std::vector<const PointAssembler<dim> *>          terms, volume_terms, surface_terms;
+    const ContactAssembler<dim>                      *contact = nullptr;
+
+    // The classification (cells with volume points), the cells' holders and the terms' couplings
+    // between cells the sparsity pattern was built for.
+    std::vector<bool>                                  pattern_classification;
+    std::vector<unsigned int>                          pattern_holder;
+    std::vector<std::pair<unsigned int, unsigned int>> pattern_couplings;
     // On several ranks: the cells of this rank's blocks when the pattern was built.
     std::vector<unsigned int> pattern_block_cells;
 

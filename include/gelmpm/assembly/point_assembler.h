@@ -13,6 +13,7 @@
 
 #include <cstdlib>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace GelMPM
@@ -123,15 +124,54 @@ namespace GelMPM
 
 
   /**
-   * @brief One term of the weak form at one material point (after Lethe's assemblers, one class
-   * per term): adds the term's residual and, with @p with_matrix, its tangent to the block's
-   * local system in @p copy, from the fields in @p scratch (evaluated at @p point).
+   * @brief How the terms form their tangents: in closed form from the structure of A_n and, in
+   * 3D, gathered and contracted once per block (the defaults), or the former assemblies, kept as
+   * the references the defaults are tested against (doc/performance.md, "Assembly at its flop
+   * limit"). Each environment variable (any value) sets its option at construction, to time both
+   * with one binary. MixedSystem holds one, its terms read it.
+   */
+  struct TangentOptions
+  {
+    /** Contract the volume points' tangent with the entries of A_n
+     * (GELMPM_GENERIC_VOLUME_TANGENT). */
+    bool generic_volume = std::getenv("GELMPM_GENERIC_VOLUME_TANGENT") != nullptr;
+    /** Sum the volume points' tangent point by point (GELMPM_POINTWISE_VOLUME_TANGENT). */
+    bool pointwise_volume = std::getenv("GELMPM_POINTWISE_VOLUME_TANGENT") != nullptr;
+    /** Take the displacement Nitsche tangent's third-derivative term by a central difference of
+     * A_n (add_displacement_nitsche_reference(); GELMPM_REFERENCE_NITSCHE_TANGENT). */
+    bool reference_nitsche = std::getenv("GELMPM_REFERENCE_NITSCHE_TANGENT") != nullptr;
+
+    /**
+     * Whether the tangents of a block's volume points and of its displacement Nitsche terms are
+     * gathered and contracted once per block by BLAS (VolumeTermAssembler::add_block_tangent(),
+     * add_displacement_nitsche_block()): in 3D, unless a volume option asks for the former sum.
+     */
+    template <int dim>
+    bool
+    batched() const
+    {
+      return dim == 3 && !generic_volume && !pointwise_volume;
+    }
+  };
+
+
+  /**
+   * @brief One term of the weak form (after Lethe's assemblers, one class per term): at each
+   * material point it applies to, adds the term's residual and, with @p with_matrix, its tangent
+   * to the block's local system in @p copy, from the fields in @p scratch (evaluated at the
+   * point).
    *
-   * MixedSystem calls VolumeTermAssembler at the volume points and its list of surface terms,
-   * in a fixed order, at the surface points of a piece: traction, displacement Nitsche, plane
-   * contact, chemical-potential Nitsche, solvent flux. Each decides itself whether it applies
-   * at a point (from its piece). The order is that of the sums: a new term goes to the end of
-   * the list, so that the results of the others stay bit for bit.
+   * MixedSystem holds the scene's terms as one list (assemblers(), built once per scene with
+   * the terms the scene needs) and, for each block of assembly (one background cell and its
+   * points): calls start_block() of every term, assemble() of the volume terms at each volume
+   * point and of the surface terms at each surface point of a piece, then finish_block() of
+   * every term, all in the list's order. That order is the order of the floating-point sums: a
+   * new term goes to the end of the list, so that the results of the others stay bit for bit.
+   * A surface term decides itself from the point's piece whether it applies there.
+   *
+   * A term that couples the unknowns of two cells that are not neighbours (a pair term: a
+   * surface point against the surface of another part of the body) declares the pairs of cells
+   * in add_cell_couplings(); the sparsity pattern then holds the entries between their unknowns.
    */
   template <int dim>
   class PointAssembler
@@ -139,19 +179,64 @@ namespace GelMPM
   public:
     virtual ~PointAssembler() = default;
 
+    /** Whether the term is assembled at the volume points (else at the surface points of a
+     * piece). */
+    virtual bool
+    at_volume_points() const = 0;
+
+    /**
+     * Before the points of a block (the block's coefficients are in @p scratch), of at most
+     * @p n_points points: prepare what the term gathers over the block. Nothing by default.
+     */
+    virtual void
+    start_block(AssemblyScratch<dim> & /*scratch*/,
+                const unsigned int /*n_points*/,
+                const bool /*with_matrix*/) const
+    {}
+
     virtual void
     assemble(const PointRecord<dim> &point,
              const double            dt,
              const bool              with_matrix,
              AssemblyScratch<dim>   &scratch,
              AssemblyCopy           &copy) const = 0;
+
+    /**
+     * After the points of a block: add what the term gathered over them to @p copy. Nothing by
+     * default.
+     */
+    virtual void
+    finish_block(AssemblyScratch<dim> & /*scratch*/,
+                 AssemblyCopy & /*copy*/,
+                 const bool /*with_matrix*/) const
+    {}
+
+    /**
+     * The couplings beyond the blocks: append to @p pairs each pair (a, b) of background cells
+     * (PointBlock::u_cell of two blocks of @p cache, cells with volume points) whose unknowns
+     * this term couples although no block holds both, so that the sparsity pattern holds the
+     * entries between all unknowns of a and all of b, both ways. Every unknown of a block
+     * already couples with every other one of it, so a term that adds only to its point's
+     * block declares nothing (the default).
+     *
+     * Asked at every MixedSystem::setup() (once per step, after the cache is gathered from the
+     * points at x_n), on each rank for the pairs its own points make: the pattern is built anew
+     * when the pairs of all terms (sorted, without repetitions) differ from those it was built
+     * for, so that a pair term whose pairs do not change over steps keeps the linear solver's
+     * analysis. The term writes the entries of a pair itself; a block's AssemblyCopy holds the
+     * unknowns of its own cell only.
+     */
+    virtual void
+    add_cell_couplings(const PointCache<dim> & /*cache*/,
+                       std::vector<std::pair<unsigned int, unsigned int>> & /*pairs*/) const
+    {}
   };
 
 
   /**
    * @brief A term at the surface points of a boundary piece: what such terms read besides the
-   * point and its fields, the piece's conditions, the Nitsche settings and the spaces (the grid
-   * spacings h_u and h_mu of the penalties).
+   * point and its fields, the piece's conditions, the Nitsche settings, the spaces (the grid
+   * spacings h_u and h_mu of the penalties) and how tangents are formed.
    */
   template <int dim>
   class SurfaceTermAssembler : public PointAssembler<dim>
@@ -159,24 +244,18 @@ namespace GelMPM
   public:
     SurfaceTermAssembler(const BoundaryConditions<dim> &boundary_conditions,
                          const NitscheSettings         &nitsche,
-                         const DiscreteSpaces<dim>     &spaces)
+                         const DiscreteSpaces<dim>     &spaces,
+                         const TangentOptions          &tangent)
       : boundary_conditions(boundary_conditions)
       , nitsche(nitsche)
       , spaces(spaces)
+      , tangent(tangent)
     {}
 
-    /**
-     * Whether the terms that call add_displacement_nitsche() (the prescribed displacements and
-     * Nitsche contact) take its tangent's third-derivative term by a central difference
-     * (@p reference true: add_displacement_nitsche_reference(), the former assembly, kept as the
-     * reference) instead of in closed form (the default). The environment variable
-     * GELMPM_REFERENCE_NITSCHE_TANGENT (any value) sets it at construction, to time both with
-     * one binary (doc/performance.md, "Assembly at its flop limit").
-     */
-    void
-    set_reference_nitsche_tangent(const bool reference)
+    bool
+    at_volume_points() const override
     {
-      reference_nitsche_tangent = reference;
+      return false;
     }
 
   protected:
@@ -190,7 +269,9 @@ namespace GelMPM
     const BoundaryConditions<dim> &boundary_conditions;
     const NitscheSettings         &nitsche;
     const DiscreteSpaces<dim>     &spaces;
-    bool reference_nitsche_tangent = std::getenv("GELMPM_REFERENCE_NITSCHE_TANGENT") != nullptr;
+    /** The terms that call add_displacement_nitsche() (the prescribed displacements and
+     * Nitsche contact) read TangentOptions::reference_nitsche and batched(). */
+    const TangentOptions &tangent;
   };
 } // namespace GelMPM
 

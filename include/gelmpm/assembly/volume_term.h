@@ -3,8 +3,6 @@
 
 #include <gelmpm/assembly/point_assembler.h>
 
-#include <cstdlib>
-
 namespace GelMPM
 {
   /**
@@ -20,15 +18,15 @@ namespace GelMPM
    * the mobility m_p of eq. (21) frozen over the step (PointRecord::mobility).
    *
    * The tangent of a volume point is symmetric (A has the major symmetry and K_mu,u = K_u,mu^T):
-   * only its lower triangle is summed, into AssemblyScratch::volume_lower, which the caller
-   * mirrors once per block (MixedSystem::assemble_block()).
+   * only its lower triangle is summed, into AssemblyScratch::volume_lower, which finish_block()
+   * mirrors once per block.
    *
    * The displacement block of the tangent is contracted with the structure of A_n
    * (FloryRehnerGel::Incremental::S, dFit, a, b) rather than with its dim^4 entries:
    *   K(a,i; c,k) = V_p [delta_ik G_a . S G_c + a h_a[k] h_c[i] + b h_a[i] h_c[k]],
    * h_a = dF^{-T} G_a, two products per entry instead of dim (doc/performance.md, "Assembly at its
    * flop limit"). The contraction with A_n (the former assembly) is kept as the reference this is
-   * tested against (tests/assembly/volume_tangent), selected by set_generic_tangent().
+   * tested against (tests/assembly/volume_tangent), selected by TangentOptions::generic_volume.
    *
    * In 3D the points of a block (one background cell) share their functions, and the sums over
    * the points are matrix products: the factors h_p, G_p, S_p G_p, M_p and grad M_p of the
@@ -39,6 +37,27 @@ namespace GelMPM
   class VolumeTermAssembler final : public PointAssembler<dim>
   {
   public:
+    /** With the tangent formed as @p tangent says (TangentOptions::generic_volume: contracted
+     * with the entries of A_n; pointwise_volume: summed point by point; batched()). */
+    explicit VolumeTermAssembler(const TangentOptions &tangent)
+      : tangent(tangent)
+    {}
+
+    bool
+    at_volume_points() const override
+    {
+      return true;
+    }
+
+    /**
+     * Before the points of a block of at most @p n_points points, with the tangent: an empty
+     * batch (batched()), or else an empty lower triangle AssemblyScratch::volume_lower.
+     */
+    void
+    start_block(AssemblyScratch<dim> &scratch,
+                const unsigned int    n_points,
+                const bool            with_matrix) const override;
+
     void
     assemble(const PointRecord<dim> &point,
              const double            dt,
@@ -47,32 +66,13 @@ namespace GelMPM
              AssemblyCopy           &copy) const override;
 
     /**
-     * Whether the tangent is contracted with the entries of A_n (@p generic true: the reference,
-     * about twice the flops and not vectorised) or with its structure (the default).
+     * After the points of a block, with the tangent: add_block_tangent() (batched()), or else the
+     * lower triangle summed point by point, mirrored, into @p copy's matrix.
      */
     void
-    set_generic_tangent(const bool generic)
-    {
-      generic_tangent = generic;
-    }
-
-    /**
-     * Whether the volume points' tangent is summed point by point (@p pointwise true:
-     * add_structured_tangent(), the former assembly) instead of gathered and contracted once per
-     * block (the default in 3D: start_block(), add_block_tangent()). The environment variable
-     * GELMPM_POINTWISE_VOLUME_TANGENT (any value) sets it at construction, to time both with one
-     * binary. It also keeps the surface points' displacement Nitsche tangents point by point
-     * (batched()).
-     */
-    void
-    set_pointwise_tangent(const bool pointwise)
-    {
-      pointwise_tangent = pointwise;
-    }
-
-    /** Before the points of a block of at most @p n_points points: an empty batch. */
-    void
-    start_block(AssemblyScratch<dim> &scratch, const unsigned int n_points) const;
+    finish_block(AssemblyScratch<dim> &scratch,
+                 AssemblyCopy         &copy,
+                 const bool            with_matrix) const override;
 
     /**
      * After the points of a block: the tangent of its volume points from the batch, by five
@@ -83,14 +83,14 @@ namespace GelMPM
     add_block_tangent(AssemblyScratch<dim> &scratch, AssemblyCopy &copy) const;
 
     /**
-     * Whether this assembler batches the tangent of the block's volume points; MixedSystem
-     * batches the surface points' displacement Nitsche tangents likewise
+     * Whether this assembler batches the tangent of the block's volume points (in 3D, unless
+     * TangentOptions says otherwise); the displacement Nitsche terms batch theirs likewise
      * (start_displacement_nitsche_block()).
      */
     bool
     batched() const
     {
-      return dim == 3 && !generic_tangent && !pointwise_tangent;
+      return tangent.batched<dim>();
     }
 
   private:
@@ -115,8 +115,7 @@ namespace GelMPM
                         const double                                     dt,
                         AssemblyScratch<dim>                            &scratch) const;
 
-    bool generic_tangent   = std::getenv("GELMPM_GENERIC_VOLUME_TANGENT") != nullptr;
-    bool pointwise_tangent = std::getenv("GELMPM_POINTWISE_VOLUME_TANGENT") != nullptr;
+    const TangentOptions &tangent;
   };
 } // namespace GelMPM
 

@@ -171,7 +171,10 @@ namespace GelMPM
     DiscretisationSettings      discretisation;
     NitscheSettings             nitsche;
     ContactSettings             contact;
-    /** The rigid obstacles of "Contact" ('Obstacles'), at t = 0. */
+    /**
+     * The rigid obstacles of "Contact" ('Obstacles'), one object each: the contact term refers
+     * to them and the system moves them to the end of each step (at t = 0 until the first).
+     */
     std::vector<Obstacle<dim>> obstacles;
 
     MPI_Comm                                    communicator;

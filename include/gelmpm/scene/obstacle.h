@@ -1,5 +1,5 @@
-#ifndef gelmpm_assembly_obstacle_h
-#define gelmpm_assembly_obstacle_h
+#ifndef gelmpm_scene_obstacle_h
+#define gelmpm_scene_obstacle_h
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/parsed_function.h>
@@ -17,6 +17,12 @@ namespace GelMPM
    * flat-ended punch, moved by a prescribed displacement of its reference point. The sides of the
    * background grid that are planes of symmetry ('Contact/Grid sides') are fixed plane obstacles
    * (grid_side()), so that one contact term (ContactAssembler) serves both.
+   *
+   * One object per obstacle of 'Contact/Obstacles', owned by the scene (Scene::obstacles): it
+   * knows its motion and where it is at the time of its last set_time(). The contact term refers
+   * to it without a copy, the mixed system moves it to the end of each step
+   * (MixedSystem::set_boundary_values()), the step control asks it how far it travels in a step
+   * (travel()) and the scene's checks move it over the run's times and back to t = 0.
    *
    * Geometry, with c(t) = 'Center' + 'Motion'(t) the reference point at time t (in tau_d) and nu
    * the unit 'Normal' (the outward normal of the obstacle's face: from the obstacle towards the

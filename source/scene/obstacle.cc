@@ -1,8 +1,8 @@
-#include <gelmpm/assembly/obstacle.h>
 #include <gelmpm/core/format_point.h>
 #include <gelmpm/core/input_error.h>
 #include <gelmpm/core/parameters.h>
 #include <gelmpm/scene/expression.h>
+#include <gelmpm/scene/obstacle.h>
 
 #include <deal.II/base/utilities.h>
 #include <deal.II/lac/vector.h>
