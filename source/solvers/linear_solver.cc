@@ -67,6 +67,19 @@ namespace GelMPM
       "On a compact 3D body the nested dissection takes about half the flops, on "
       "a slender one about twice (doc/performance.md, 'The ordering of the direct "
       "solver'). On several MPI ranks MUMPS always orders by itself.");
+    prm.declare_entry(
+      "Compression",
+      "0",
+      dealii::Patterns::Double(0., 0.1),
+      "MUMPS LDL^T (the symmetric Nitsche variant): the dropping threshold of a block "
+      "low-rank factorisation (MUMPS's BLR; blocks of the fronts and of their contribution "
+      "blocks replaced by low-rank products that drop less than this, relative to the "
+      "tangent's norm). 0 (the default): full rank. The solves are then approximate and "
+      "Newton takes the more iterations the larger the threshold; the factors and the "
+      "operations shrink the more the larger the 3D body (doc/performance.md, 'Compressed "
+      "factorisations'). The inertia is that of a matrix within about the threshold of the "
+      "tangent: the stability analysis's signature is unchanged unless an eigenvalue lies "
+      "that close to zero.");
     prm.declare_entry("Krylov tolerance",
                       "1e-8",
                       dealii::Patterns::Double(1e-14, 0.1),
@@ -160,6 +173,12 @@ namespace GelMPM
                                                   : "Krylov";
     memory_share = prm.get_double("Automatic memory share");
     ordering     = SymmetricFactorization::parse_ordering(prm.get("Ordering"));
+    compression  = prm.get_double("Compression");
+    require(compression == 0. || solver == "MUMPS" || automatic,
+            "Linear solver/Compression",
+            "is " + prm.get("Compression") + " with Solver = " + solver +
+              ", which factorises nothing by MUMPS",
+            "set Solver = MUMPS (or automatic), or Compression = 0");
     krylov_settings.relative_tolerance = prm.get_double("Krylov tolerance");
     krylov_settings.max_iterations     = prm.get_integer("Krylov iterations");
     krylov_settings.restart            = prm.get_integer("Krylov restart");
@@ -188,6 +207,11 @@ namespace GelMPM
   void
   LinearSolver::set_symmetric(const bool symmetric_matrices)
   {
+    require(symmetric_matrices || compression == 0.,
+            "Linear solver/Compression",
+            "compresses MUMPS's LDL^T, which only the symmetric tangent of Nitsche/Variant = "
+            "symmetric has (the skew-symmetric variant's is factorised as LU)",
+            "set Nitsche/Variant = symmetric, or Compression = 0");
     new_pattern();
     symmetric = symmetric_matrices;
   }
@@ -316,12 +340,14 @@ namespace GelMPM
               {
                 ldlt = std::make_unique<SymmetricFactorization>();
                 ldlt->set_ordering(ordering);
+                ldlt->set_compression(compression);
                 ldlt->factorize(K);
                 analysed_matrix = &matrix;
                 ++symbolic_count;
               }
             else
               ldlt->refactorize(K);
+            add_factor_statistics(ldlt->statistics());
           }
         catch (const std::exception &e)
           {
@@ -503,6 +529,41 @@ namespace GelMPM
   }
 
 
+  void
+  LinearSolver::add_factor_statistics(const FactorStatistics &factor) const
+  {
+    factor_totals.flops += factor.flops;
+    factor_totals.full_rank_flops += factor.full_rank_flops;
+    factor_totals.entries = std::max(factor_totals.entries, factor.entries);
+    factor_totals.full_rank_entries =
+      std::max(factor_totals.full_rank_entries, factor.full_rank_entries);
+    factor_totals.memory = std::max(factor_totals.memory, factor.memory);
+  }
+
+
+  FactorStatistics
+  LinearSolver::factor_statistics() const
+  {
+    return factor_totals;
+  }
+
+
+  std::string
+  LinearSolver::compression_report() const
+  {
+    if (compression == 0. || factor_totals.full_rank_flops == 0.)
+      return "";
+    std::ostringstream report;
+    report.precision(3);
+    report << "block low-rank at " << compression << ": "
+           << 100. * factor_totals.flops / factor_totals.full_rank_flops
+           << " % of the full-rank operations, the largest factors "
+           << 100. * factor_totals.entries / factor_totals.full_rank_entries
+           << " % of their full-rank entries";
+    return report.str();
+  }
+
+
   std::string
   LinearSolver::name() const
   {
@@ -515,6 +576,8 @@ namespace GelMPM
         flops.precision(3);
         flops << ", " << ldlt->factorization_flops() << " flops the last";
         used += ", " + ldlt->ordering_used() + flops.str();
+        if (compression > 0.)
+          used += ", " + compression_report();
       }
     return automatic ? "automatic: " + used + (choice.empty() ? "" : "; " + choice) : used;
   }

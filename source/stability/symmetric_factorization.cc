@@ -31,11 +31,13 @@ namespace GelMPM
     // The pivot order (1-based) of the nested dissection, for the gathered entries.
     std::vector<MUMPS_INT> pivot_order;
     Ordering               ordering = Ordering::fewest_flops;
-    double   comparison_threshold   = SymmetricFactorization::default_comparison_threshold;
-    MPI_Comm communicator           = MPI_COMM_SELF;
-    bool     distributed            = false;
-    bool     initialized            = false;
-    bool     factorized             = false;
+    double comparison_threshold     = SymmetricFactorization::default_comparison_threshold;
+    // The dropping threshold of the block low-rank factorisation (0: full rank).
+    double   compression  = 0.;
+    MPI_Comm communicator = MPI_COMM_SELF;
+    bool     distributed  = false;
+    bool     initialized  = false;
+    bool     factorized   = false;
 
     /**
      * Start MUMPS on the communicator of the matrix. On several ranks each passes the entries of
@@ -171,6 +173,7 @@ namespace GelMPM
     analyse()
     {
       pivot_order.clear();
+      use_compression();
       if (distributed || ordering != Ordering::nested_dissection)
         use_mumps_ordering();
       else
@@ -190,6 +193,29 @@ namespace GelMPM
           use_mumps_ordering();
           call(1);
         }
+    }
+
+    /**
+     * Block low-rank compression of the fronts (ICNTL(35) = 2: in the factorisation and the
+     * solution) at the dropping threshold CNTL(7), which MUMPS reads at the analysis; the
+     * contribution blocks are compressed too (ICNTL(37) = 1), since the full-rank fronts and
+     * their contribution blocks, not the factors, set the peak memory of a 3D factorisation.
+     */
+    void
+    use_compression()
+    {
+      mumps.icntl[icntl(35)] = compression > 0. ? 2 : 0;
+      mumps.icntl[icntl(37)] = compression > 0. ? 1 : 0;
+      mumps.cntl[6]          = compression; // CNTL(7)
+    }
+
+    /** An entry of INFOG that counts entries, read through MUMPS's convention for large
+     * values (negative: millions). */
+    double
+    infog_count(const int i) const
+    {
+      const MUMPS_INT value = mumps.infog[i - 1];
+      return value < 0 ? -1e6 * value : static_cast<double>(value);
     }
 
     void
@@ -282,6 +308,41 @@ namespace GelMPM
   SymmetricFactorization::factorization_flops() const
   {
     return data->mumps.rinfog[2];
+  }
+
+
+  void
+  SymmetricFactorization::set_compression(const double dropping_threshold)
+  {
+    if (!(dropping_threshold >= 0.) || dropping_threshold >= 1.)
+      throw std::invalid_argument("the dropping threshold of a block low-rank factorisation "
+                                  "lies in [0, 1)");
+    data->compression = dropping_threshold;
+  }
+
+
+  double
+  SymmetricFactorization::compression() const
+  {
+    return data->compression;
+  }
+
+
+  FactorStatistics
+  SymmetricFactorization::statistics() const
+  {
+    if (!data->factorized)
+      throw std::logic_error("SymmetricFactorization::statistics() before factorize()");
+    const auto      &m = data->mumps;
+    FactorStatistics result;
+    result.full_rank_flops   = m.rinfog[2];  // RINFOG(3)
+    result.flops             = m.rinfog[13]; // RINFOG(14): the compressed blocks' own
+    result.full_rank_entries = data->infog_count(29);
+    result.entries = data->compression > 0. ? data->infog_count(35) : result.full_rank_entries;
+    result.memory  = 1e6 * m.infog[21]; // INFOG(22), MB on all ranks
+    if (result.flops <= 0.)
+      result.flops = result.full_rank_flops;
+    return result;
   }
 
 

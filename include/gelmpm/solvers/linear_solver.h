@@ -182,11 +182,29 @@ namespace GelMPM
     std::pair<unsigned long, unsigned long>
     krylov_iterations() const;
 
+    /**
+     * The LDL^T factorisations' operations (summed over all so far, made and at full rank), and
+     * the largest factors' entries and MUMPS memory of any (zero without LDL^T).
+     */
+    FactorStatistics
+    factor_statistics() const;
+
+    /**
+     * With 'Compression': the share of the full-rank operations and of the full-rank factors'
+     * entries the block low-rank factorisations took (empty at full rank).
+     */
+    std::string
+    compression_report() const;
+
     /** The shortest 'Krylov restart' accepted (restart 2 stalled on the §4.1 test scene, 5 did
      * not). */
     static constexpr unsigned int smallest_krylov_restart = 10;
 
   private:
+    /** Count the last LDL^T factorisation's operations, entries and memory. */
+    void
+    add_factor_statistics(const FactorStatistics &factor) const;
+
     /** 'automatic': choose MUMPS or Krylov at the first factorisation of @p K. */
     void
     decide(const dealii::TrilinosWrappers::SparseMatrix &K) const;
@@ -198,7 +216,10 @@ namespace GelMPM
     // The fill-reducing ordering of MUMPS's LDL^T analyses.
     SymmetricFactorization::Ordering ordering = SymmetricFactorization::Ordering::fewest_flops;
     mutable std::string              choice;
-    bool                             symmetric = false;
+    // The dropping threshold of MUMPS's block low-rank LDL^T (0: full rank).
+    double                   compression = 0.;
+    mutable FactorStatistics factor_totals;
+    bool                     symmetric = false;
     // The kept factorisation: a cache, so solve() stays const for its callers.
     mutable std::unique_ptr<Epetra_LinearProblem>   problem;
     mutable std::unique_ptr<Amesos_BaseSolver>      factorisation;

@@ -30,6 +30,23 @@ namespace GelMPM
 
 
   /**
+   * @brief What a factorisation took: its floating-point operations and the entries of its
+   * factors, as made and as they would have been at full rank, and MUMPS's memory.
+   */
+  struct FactorStatistics
+  {
+    /** Operations of the factorisation made (RINFOG(14)), and at full rank (RINFOG(3)). */
+    double flops           = 0.;
+    double full_rank_flops = 0.;
+    /** Entries of the factors kept (INFOG(35) compressed, INFOG(29) at full rank). */
+    double entries           = 0.;
+    double full_rank_entries = 0.;
+    /** Bytes MUMPS used in the factorisation, all ranks (INFOG(22)). */
+    double memory = 0.;
+  };
+
+
+  /**
    * @brief Symmetric indefinite LDL^T factorisation K = L D L^T by MUMPS (SYM = 2), through its
    * C interface, giving the inertia of K and solves with K.
    *
@@ -144,6 +161,26 @@ namespace GelMPM
      */
     double
     factorization_flops() const;
+
+    /**
+     * Factorise with block low-rank compression from now on (MUMPS's BLR, ICNTL(35)): blocks of
+     * the fronts are replaced by low-rank products wherever that drops less than
+     * @p dropping_threshold (CNTL(7), relative to the matrix's norm); 0 (the default) factorises
+     * at full rank. The factors are then those of a matrix within about that threshold of K:
+     * solves are approximate (Newton's iteration corrects them) and the inertia is that of the
+     * perturbed matrix, which equals K's wherever no eigenvalue of K lies within about the
+     * threshold times its norm of zero. Takes effect at the next analysis (factorize()).
+     */
+    void
+    set_compression(const double dropping_threshold);
+
+    /** The dropping threshold of the block low-rank compression (0: full rank). */
+    double
+    compression() const;
+
+    /** Operations, entries and memory of the last factorisation. */
+    FactorStatistics
+    statistics() const;
 
     /** Floating-point operations the last analysis estimated for the factorisation (RINFOG(1)). */
     double
