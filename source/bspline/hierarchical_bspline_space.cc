@@ -91,6 +91,19 @@ namespace GelMPM
 
 
   template <int dim>
+  std::vector<std::vector<unsigned int>>
+  HierarchicalBSplineSpace<dim>::refined_cells() const
+  {
+    std::vector<std::vector<unsigned int>> cells(spaces.size() - 1);
+    for (unsigned int l = 0; l + 1 < spaces.size(); ++l)
+      for (unsigned int c = 0; c < refined[l].size(); ++c)
+        if (refined[l][c])
+          cells[l].push_back(c);
+    return cells;
+  }
+
+
+  template <int dim>
   unsigned int
   HierarchicalBSplineSpace<dim>::n_active_functions() const
   {
@@ -468,7 +481,49 @@ namespace GelMPM
   }
 
 
+  template <int dim>
+  std::vector<std::vector<unsigned int>>
+  subdivision_refinement(const HierarchicalBSplineSpace<dim> &mu)
+  {
+    const auto                             mu_cells = mu.refined_cells();
+    std::vector<std::vector<unsigned int>> u_cells(mu_cells.size());
+    for (unsigned int l = 0; l < mu_cells.size(); ++l)
+      {
+        const BSplineSpace<dim>      &coarse = mu.level_space(l);
+        std::array<unsigned int, dim> n_fine = coarse.n_cells_per_direction();
+        dealii::Point<dim>            lower, upper;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            n_fine[d] *= 2;
+            lower[d] = coarse.basis_1d(d).x_min();
+            upper[d] = coarse.basis_1d(d).x_max();
+          }
+        // u's grid of level l, for its cell numbering.
+        const BSplineSpace<dim> fine(1, lower, upper, n_fine);
+        for (const unsigned int c : mu_cells[l])
+          {
+            const auto parent = coarse.cell_multi_index(c);
+            for (unsigned int k = 0; k < (1u << dim); ++k)
+              {
+                std::array<unsigned int, dim> child;
+                for (unsigned int d = 0; d < dim; ++d)
+                  child[d] = 2 * parent[d] + ((k >> d) & 1u);
+                u_cells[l].push_back(fine.cell_index(child));
+              }
+          }
+        std::sort(u_cells[l].begin(), u_cells[l].end());
+      }
+    return u_cells;
+  }
+
+
   template class HierarchicalBSplineSpace<1>;
   template class HierarchicalBSplineSpace<2>;
   template class HierarchicalBSplineSpace<3>;
+  template std::vector<std::vector<unsigned int>>
+  subdivision_refinement(const HierarchicalBSplineSpace<1> &);
+  template std::vector<std::vector<unsigned int>>
+  subdivision_refinement(const HierarchicalBSplineSpace<2> &);
+  template std::vector<std::vector<unsigned int>>
+  subdivision_refinement(const HierarchicalBSplineSpace<3> &);
 } // namespace GelMPM

@@ -9,7 +9,6 @@
 
 #include <gelmpm/bspline/hierarchical_bspline_space.h>
 
-#include <deal.II/lac/lapack_templates.h>
 #include <deal.II/lac/vector.h>
 
 #include <algorithm>
@@ -17,7 +16,6 @@
 #include <functional>
 #include <iostream>
 #include <random>
-#include <stdexcept>
 #include <string>
 
 #include "hierarchical_setup.h"
@@ -45,98 +43,6 @@ namespace
         f *= factor;
       }
     return f;
-  }
-
-  /**
-   * The least-squares solution of A x = b, A of m rows and n columns stored by columns, by
-   * LAPACK's dgelsd (SVD without the m x m factor, which LAPACKFullMatrix::compute_svd() forms).
-   */
-  Vector<double>
-  least_squares(std::vector<double> &A,
-                const unsigned int   m,
-                const unsigned int   n,
-                std::vector<double>  b)
-  {
-    const types::blas_int        M = m, N = n, one = 1;
-    types::blas_int              rank = 0, info = 0, query = -1;
-    const double                 rcond = -1.; // machine precision
-    std::vector<double>          s(n);
-    std::vector<types::blas_int> iwork(3 * n * 32 + 11 * n);
-    double                       size = 0.;
-    gelsd(&M,
-          &N,
-          &one,
-          A.data(),
-          &M,
-          b.data(),
-          &M,
-          s.data(),
-          &rcond,
-          &rank,
-          &size,
-          &query,
-          iwork.data(),
-          &info);
-    std::vector<double>   work(static_cast<std::size_t>(size) + 1);
-    const types::blas_int lwork = work.size();
-    gelsd(&M,
-          &N,
-          &one,
-          A.data(),
-          &M,
-          b.data(),
-          &M,
-          s.data(),
-          &rcond,
-          &rank,
-          work.data(),
-          &lwork,
-          iwork.data(),
-          &info);
-    if (info != 0)
-      throw std::runtime_error("dgelsd failed");
-    Vector<double> x(n);
-    for (unsigned int j = 0; j < n; ++j)
-      x(j) = b[j];
-    return x;
-  }
-
-  /** The coefficients of the least-squares fit of @p f at (q + 2)^dim points per leaf cell. */
-  template <int dim>
-  Vector<double>
-  fit(const HierarchicalBSplineSpace<dim>             &space,
-      const std::function<double(const Point<dim> &)> &f,
-      std::mt19937                                    &rng)
-  {
-    unsigned int per_cell = 1;
-    for (unsigned int d = 0; d < dim; ++d)
-      per_cell *= space.degree() + 2;
-    const unsigned int          m = per_cell * space.n_leaf_cells(), n = space.n_active_functions();
-    std::vector<double>         A(static_cast<std::size_t>(m) * n, 0.), b(m);
-    std::vector<double>         values;
-    std::vector<Tensor<1, dim>> gradients;
-    unsigned int                row = 0;
-    for (unsigned int leaf = 0; leaf < space.n_leaf_cells(); ++leaf)
-      {
-        const auto              &cell  = space.leaf_cell(leaf);
-        const BSplineSpace<dim> &level = space.level_space(cell.level);
-        const auto               index = level.cell_multi_index(cell.cell);
-        Box<dim>                 Q;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            Q.lower[d] = index[d] * level.cell_size(d);
-            Q.upper[d] = (index[d] + 1) * level.cell_size(d);
-          }
-        for (unsigned int k = 0; k < per_cell; ++k, ++row)
-          {
-            const Point<dim> p = random_point<dim>(rng, Q);
-            space.evaluate(p, leaf, values, gradients);
-            for (unsigned int a = 0; a < values.size(); ++a)
-              A[static_cast<std::size_t>(space.leaf_functions(leaf)[a]) * m + row] = values[a];
-            b[row] = f(p);
-          }
-      }
-    return least_squares(A, m, n, b);
   }
 
   /** max |fit - f| at 500 random points. */

@@ -98,6 +98,9 @@ namespace GelMPM
     /** Whether cell @p cell of level @p level is refined (lies in Ω^{level+1}). */
     bool
     is_refined(const unsigned int level, const unsigned int cell) const;
+    /** Per level but the last, its refined cells (increasing index): the constructor's input. */
+    std::vector<std::vector<unsigned int>>
+    refined_cells() const;
 
     unsigned int
     n_active_functions() const;
@@ -194,6 +197,19 @@ namespace GelMPM
     std::vector<std::vector<unsigned int>>  functions_of_leaf;
     std::vector<dealii::FullMatrix<double>> coefficients_of_leaf;
   };
+
+
+  /**
+   * The refined cells (constructor argument) of the displacement space of a subdivision pair
+   * whose chemical-potential space is @p mu: the same domains Ω^l on grids of half the cell size
+   * (2 n_cells per direction at level 0), that is, per level l the 2^dim cells of u's level-l
+   * grid inside each refined cell of μ's level-l grid. On every leaf cell of u of level l, the
+   * leaf cell of μ that holds it has the same level and twice its size: μ stays one level coarser
+   * than u everywhere, as on the uniform grid.
+   */
+  template <int dim>
+  std::vector<std::vector<unsigned int>>
+  subdivision_refinement(const HierarchicalBSplineSpace<dim> &mu);
 } // namespace GelMPM
 
 #endif
