@@ -5,6 +5,8 @@
 #include <gelmpm/assembly/neumann_terms.h>
 #include <gelmpm/assembly/volume_term.h>
 
+#include <algorithm>
+
 namespace GelMPM
 {
   namespace
@@ -77,6 +79,93 @@ namespace GelMPM
   }
 
 
+  template <int dim>
+  void
+  TermList<dim>::build(const AssemblerInputs<dim> &inputs)
+  {
+    scene_terms = setup_assemblers(inputs);
+    index();
+  }
+
+
+  template <int dim>
+  void
+  TermList<dim>::add(std::unique_ptr<PointAssembler<dim>> term)
+  {
+    added_terms.push_back(std::move(term));
+    index();
+  }
+
+
+  template <int dim>
+  void
+  TermList<dim>::index()
+  {
+    terms.clear();
+    volume_terms.clear();
+    surface_terms.clear();
+    contact_term = nullptr;
+    for (const auto *list : {&scene_terms, &added_terms})
+      for (const auto &term : *list)
+        {
+          terms.push_back(term.get());
+          (term->at_volume_points() ? volume_terms : surface_terms).push_back(term.get());
+          if (const auto *contact = dynamic_cast<const ContactAssembler<dim> *>(term.get()))
+            contact_term = contact;
+        }
+  }
+
+
+  template <int dim>
+  const std::vector<const PointAssembler<dim> *> &
+  TermList<dim>::all() const
+  {
+    return terms;
+  }
+
+
+  template <int dim>
+  const std::vector<const PointAssembler<dim> *> &
+  TermList<dim>::at_volume_points() const
+  {
+    return volume_terms;
+  }
+
+
+  template <int dim>
+  const std::vector<const PointAssembler<dim> *> &
+  TermList<dim>::at_surface_points() const
+  {
+    return surface_terms;
+  }
+
+
+  template <int dim>
+  const ContactAssembler<dim> *
+  TermList<dim>::contact() const
+  {
+    return contact_term;
+  }
+
+
+  template <int dim>
+  std::vector<std::pair<unsigned int, unsigned int>>
+  TermList<dim>::cell_couplings(const PointCache<dim> &cache) const
+  {
+    std::vector<std::pair<unsigned int, unsigned int>> pairs;
+    for (const auto *term : terms)
+      term->add_cell_couplings(cache, pairs);
+    for (auto &[a, b] : pairs)
+      if (b < a)
+        std::swap(a, b);
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    return pairs;
+  }
+
+
+  template class TermList<2>;
+  template class TermList<3>;
   template std::vector<std::unique_ptr<PointAssembler<2>>>
   setup_assemblers(const AssemblerInputs<2> &);
   template std::vector<std::unique_ptr<PointAssembler<3>>>

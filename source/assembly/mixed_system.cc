@@ -43,20 +43,7 @@ namespace GelMPM
   void
   MixedSystem<dim>::build_terms()
   {
-    scene_terms = setup_assemblers<dim>(
-      {boundary_conditions, nitsche, spaces_, tangent, contact_settings, obstacles});
-    terms.clear();
-    volume_terms.clear();
-    surface_terms.clear();
-    contact = nullptr;
-    for (const auto *list : {&scene_terms, &added_terms})
-      for (const auto &term : *list)
-        {
-          terms.push_back(term.get());
-          (term->at_volume_points() ? volume_terms : surface_terms).push_back(term.get());
-          if (const auto *c = dynamic_cast<const ContactAssembler<dim> *>(term.get()))
-            contact = c;
-        }
+    terms.build({boundary_conditions, nitsche, spaces_, tangent, contact_settings, obstacles});
   }
 
 
@@ -64,8 +51,7 @@ namespace GelMPM
   void
   MixedSystem<dim>::add_term(std::unique_ptr<PointAssembler<dim>> term)
   {
-    added_terms.push_back(std::move(term));
-    build_terms();
+    terms.add(std::move(term));
   }
 
 
@@ -73,23 +59,7 @@ namespace GelMPM
   const std::vector<const PointAssembler<dim> *> &
   MixedSystem<dim>::assemblers() const
   {
-    return terms;
-  }
-
-
-  template <int dim>
-  std::vector<std::pair<unsigned int, unsigned int>>
-  MixedSystem<dim>::cell_couplings() const
-  {
-    std::vector<std::pair<unsigned int, unsigned int>> pairs;
-    for (const auto *term : terms)
-      term->add_cell_couplings(cache, pairs);
-    for (auto &[a, b] : pairs)
-      if (b < a)
-        std::swap(a, b);
-    std::sort(pairs.begin(), pairs.end());
-    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-    return pairs;
+    return terms.all();
   }
 
 
@@ -107,7 +77,7 @@ namespace GelMPM
           on_axis[i] = true;
       }
     // On several ranks the rows' owners follow the cells' holders too (a repartition).
-    auto couplings = cell_couplings();
+    auto couplings = terms.cell_couplings(cache);
     bool new_pattern =
       cache.classification() != pattern_classification || couplings != pattern_couplings ||
       (Collective::is_parallel(communicator) && cache.cell_holder() != pattern_holder);
@@ -495,6 +465,7 @@ namespace GelMPM
   {
     // Each obstacle's own contact terms, tested with w = e_k as boundary_balances() tests the
     // pieces' terms: the force on the gel is minus their sum, the force on the obstacle their sum.
+    const auto *contact = terms.contact();
     if (contact == nullptr)
       return {};
     std::vector<ObstacleReaction> reactions(contact->n_rigid_obstacles());
@@ -577,7 +548,7 @@ namespace GelMPM
       copy.matrix.reinit(n, n);
 
     scratch.gather_block_coefficients(block, spaces_, solution);
-    for (const auto *term : terms)
+    for (const auto *term : terms.all())
       term->start_block(scratch, block.end - block.first, with_matrix);
 
     unsigned int failed_point = block.first;
@@ -592,12 +563,12 @@ namespace GelMPM
             scratch.evaluate_point_fields(point, cache);
 
             if (point.kind == PointKind::volume)
-              for (const auto *term : volume_terms)
+              for (const auto *term : terms.at_volume_points())
                 term->assemble(point, dt, with_matrix, scratch, copy);
             else
               add_surface_point(point, dt, with_matrix, scratch, copy);
           }
-        for (const auto *term : terms)
+        for (const auto *term : terms.all())
           term->finish_block(scratch, copy, with_matrix);
         if (!on_axis.empty())
           hold_axis_in_block(copy, with_matrix);
@@ -618,7 +589,7 @@ namespace GelMPM
                                       AssemblyScratch<dim>   &scratch,
                                       AssemblyCopy           &copy) const
   {
-    for (const auto *term : surface_terms)
+    for (const auto *term : terms.at_surface_points())
       term->assemble(point, dt, with_matrix, scratch, copy);
   }
 
@@ -665,6 +636,7 @@ namespace GelMPM
     std::vector<unsigned char> outside(points.size(), 0);
     std::vector<Point<dim>>    moved(points.size());
     // Per direction, whether the lower and the upper side of the grid are contact planes.
+    const auto                          *contact = terms.contact();
     std::array<std::array<bool, 2>, dim> on_contact_plane{};
     for (unsigned int d = 0; d < dim && contact != nullptr; ++d)
       on_contact_plane[d] = {{contact->on_contact_plane(d, -1.), contact->on_contact_plane(d, 1.)}};
@@ -829,6 +801,7 @@ namespace GelMPM
   {
     unsigned int active      = 0;
     double       penetration = 0.;
+    const auto  *contact     = terms.contact();
     if (contact == nullptr)
       return {active, penetration};
     for (const auto &r : cache.points())

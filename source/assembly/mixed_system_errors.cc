@@ -25,7 +25,7 @@ namespace GelMPM
         if (r.projector.norm_square() > 0.)
           u_error = std::max(u_error, (r.projector * (r.u_n + du - r.u_bar)).norm());
         if (boundary_conditions.piece(r.piece).chemical_potential_prescribed() &&
-            !(contact != nullptr && contact->seals(r, du, delta_F, mu)))
+            !(terms.contact() != nullptr && terms.contact()->seals(r, du, delta_F, mu)))
           mu_error = std::max(mu_error, std::abs(mu - r.mu_bar));
       }
     return {dealii::Utilities::MPI::max(u_error, communicator),

@@ -1,14 +1,17 @@
 #ifndef gelmpm_assembly_assemblers_h
 #define gelmpm_assembly_assemblers_h
 
+#include <gelmpm/assembly/contact.h>
 #include <gelmpm/assembly/contact_settings.h>
 #include <gelmpm/assembly/discretisation.h>
 #include <gelmpm/assembly/nitsche_settings.h>
 #include <gelmpm/assembly/point_assembler.h>
+#include <gelmpm/assembly/point_cache.h>
 #include <gelmpm/scene/boundary_conditions.h>
 #include <gelmpm/scene/obstacle.h>
 
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace GelMPM
@@ -41,6 +44,54 @@ namespace GelMPM
   template <int dim>
   std::vector<std::unique_ptr<PointAssembler<dim>>>
   setup_assemblers(const AssemblerInputs<dim> &inputs);
+
+
+  /**
+   * @brief The terms of a system: the scene's (setup_assemblers()) and those added to them
+   * (add()), in the order of the sums, and the views the assembly loops over (the terms at volume
+   * points, those at surface points). It knows one term by its kind, contact, whose state and
+   * reactions the system reports.
+   */
+  template <int dim>
+  class TermList
+  {
+  public:
+    /** The scene's terms anew from @p inputs; the added terms stay after them. */
+    void
+    build(const AssemblerInputs<dim> &inputs);
+
+    /** Add @p term to the end. */
+    void
+    add(std::unique_ptr<PointAssembler<dim>> term);
+
+    /** Every term, in the order of the sums. */
+    const std::vector<const PointAssembler<dim> *> &
+    all() const;
+
+    /** The terms at volume points, and those at the surface points of a piece, in order. */
+    const std::vector<const PointAssembler<dim> *> &
+    at_volume_points() const;
+    const std::vector<const PointAssembler<dim> *> &
+    at_surface_points() const;
+
+    /** The contact term (nullptr: contact off). */
+    const ContactAssembler<dim> *
+    contact() const;
+
+    /** The pairs of cells the terms couple beyond the blocks of @p cache
+     * (PointAssembler::add_cell_couplings()), each (a, b) with a < b, sorted, once each. */
+    std::vector<std::pair<unsigned int, unsigned int>>
+    cell_couplings(const PointCache<dim> &cache) const;
+
+  private:
+    /** The views of the owned terms. */
+    void
+    index();
+
+    std::vector<std::unique_ptr<PointAssembler<dim>>> scene_terms, added_terms;
+    std::vector<const PointAssembler<dim> *>          terms, volume_terms, surface_terms;
+    const ContactAssembler<dim>                      *contact_term = nullptr;
+  };
 } // namespace GelMPM
 
 #endif

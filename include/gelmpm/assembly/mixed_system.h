@@ -351,10 +351,6 @@ namespace GelMPM
     std::vector<unsigned int>
     assembly_order() const;
 
-    /** The pairs of cells the terms couple beyond the blocks (add_cell_couplings()), sorted. */
-    std::vector<std::pair<unsigned int, unsigned int>>
-    cell_couplings() const;
-
     /**
      * The sparsity pattern of the step's tangent, with the couplings @p couplings between cells,
      * and the matrix and residual on it.
@@ -376,7 +372,7 @@ namespace GelMPM
     owned_and_relevant_dofs(
       const std::vector<std::pair<unsigned int, unsigned int>> &couplings) const;
 
-    /** The list of terms of the scene and the contact settings, with the added terms after it. */
+    /** The scene's terms anew (TermList::build()). */
     void
     build_terms();
 
@@ -419,12 +415,8 @@ namespace GelMPM
     ContactSettings             contact_settings;
     std::vector<Obstacle<dim>> *obstacles = nullptr;
 
-    // The terms of the weak form: the scene's (setup_assemblers()) and the added ones (add_term()),
-    // and, in the order of the sums, all of them, those at volume points and those at surface
-    // points; the contact term among them (nullptr: contact off).
-    std::vector<std::unique_ptr<PointAssembler<dim>>> scene_terms, added_terms;
-    std::vector<const PointAssembler<dim> *>          terms, volume_terms, surface_terms;
-    const ContactAssembler<dim>                      *contact = nullptr;
+    // The terms of the weak form.
+    TermList<dim> terms;
 
     // The classification (cells with volume points), the cells' holders and the terms' couplings
     // between cells the sparsity pattern was built for.
