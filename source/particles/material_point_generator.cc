@@ -3,6 +3,7 @@
 #include <gelmpm/core/input_error.h>
 #include <gelmpm/core/round_off.h>
 #include <gelmpm/particles/material_point_generator.h>
+#include <gelmpm/particles/material_state.h>
 #include <gelmpm/particles/point_location.h>
 #include <gelmpm/scene/expression.h>
 
@@ -293,14 +294,15 @@ namespace GelMPM
     std::vector<double>           properties(Layout::n_properties, 0.);
     dealii::types::particle_index next_id = 0;
     const auto insert = [&](const dealii::Point<dim> &x, const unsigned int region) {
-      const double lambda_0 = regions[region].lambda_0();
       for (unsigned int d = 0; d < dim; ++d)
         properties[Layout::position_0 + d] = x[d];
+      properties[Layout::region] = region;
+      // The initial stretch of the point's own constants (its material state).
+      const double lambda_0 = material_state_of(regions, properties).gel->lambda_0();
       for (unsigned int i = 0; i < dim; ++i)
         for (unsigned int j = 0; j < dim; ++j)
           properties[Layout::F + i * dim + j] = (i == j) ? lambda_0 : 0.;
-      properties[Layout::mu]     = mu_0;
-      properties[Layout::region] = region;
+      properties[Layout::mu] = mu_0;
       if constexpr (dim == 2)
         properties[Layout::out_of_plane] = lambda_0;
       // Every rank walks all points, so that ids and checks are the same on all; each keeps
