@@ -190,21 +190,31 @@ namespace GelMPM
                                           std::vector<double>                 &values,
                                           std::vector<dealii::Tensor<1, dim>> &gradients) const
   {
-    const LevelCell                    &Q     = leaves[leaf];
-    const BSplineSpace<dim>            &space = *spaces[Q.level];
-    const dealii::FullMatrix<double>   &M     = coefficients_of_leaf[leaf];
-    std::vector<double>                 v(space.functions_per_cell());
-    std::vector<dealii::Tensor<1, dim>> g(space.functions_per_cell());
+    const LevelCell         &Q     = leaves[leaf];
+    const BSplineSpace<dim> &space = *spaces[Q.level];
+    const CompressedRows    &M     = compressed_coefficients[leaf];
+    // The level's B-splines on the cell, in scratch space kept per thread: evaluate() is called
+    // once per material point and step.
+    thread_local std::vector<double>                 v;
+    thread_local std::vector<dealii::Tensor<1, dim>> g;
+    v.resize(space.functions_per_cell());
+    g.resize(space.functions_per_cell());
     space.evaluate(p, Q.cell, v, g);
-    values.assign(M.m(), 0.);
-    gradients.assign(M.m(), dealii::Tensor<1, dim>());
-    for (unsigned int a = 0; a < M.m(); ++a)
-      for (unsigned int b = 0; b < M.n(); ++b)
-        if (M(a, b) != 0.)
+    const unsigned int n = M.row_start.size() - 1;
+    values.resize(n);
+    gradients.resize(n);
+    for (unsigned int a = 0; a < n; ++a)
+      {
+        double                 value = 0.;
+        dealii::Tensor<1, dim> gradient;
+        for (unsigned int k = M.row_start[a]; k < M.row_start[a + 1]; ++k)
           {
-            values[a] += M(a, b) * v[b];
-            gradients[a] += M(a, b) * g[b];
+            value += M.weight[k] * v[M.column[k]];
+            gradient += M.weight[k] * g[M.column[k]];
           }
+        values[a]    = value;
+        gradients[a] = gradient;
+      }
   }
 
 
@@ -467,15 +477,24 @@ namespace GelMPM
       }
     functions_of_leaf.resize(leaves.size());
     coefficients_of_leaf.resize(leaves.size());
+    compressed_coefficients.resize(leaves.size());
     for (unsigned int leaf = 0; leaf < leaves.size(); ++leaf)
       {
-        auto &M = coefficients_of_leaf[leaf];
+        auto           &M          = coefficients_of_leaf[leaf];
+        CompressedRows &compressed = compressed_coefficients[leaf];
         M.reinit(rows[leaf].size(), n_local);
+        compressed.row_start.push_back(0);
         for (unsigned int a = 0; a < rows[leaf].size(); ++a)
           {
             functions_of_leaf[leaf].push_back(rows[leaf][a].first);
             for (unsigned int b = 0; b < n_local; ++b)
-              M(a, b) = rows[leaf][a].second[b];
+              if (rows[leaf][a].second[b] != 0.)
+                {
+                  M(a, b) = rows[leaf][a].second[b];
+                  compressed.column.push_back(b);
+                  compressed.weight.push_back(rows[leaf][a].second[b]);
+                }
+            compressed.row_start.push_back(compressed.column.size());
           }
       }
   }

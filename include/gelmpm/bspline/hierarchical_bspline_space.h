@@ -135,7 +135,8 @@ namespace GelMPM
 
     /**
      * Values and gradients at @p p (in the closure of @p leaf) of the truncated functions
-     * leaf_functions(@p leaf); @p values and @p gradients are resized to their number.
+     * leaf_functions(@p leaf); @p values and @p gradients are resized to their number. Does not
+     * allocate once the vectors (and a per-thread scratch space) have their size.
      */
     void
     evaluate(const dealii::Point<dim>            &p,
@@ -196,6 +197,17 @@ namespace GelMPM
     std::vector<std::vector<unsigned int>>  leaf_number; // per level, per cell
     std::vector<std::vector<unsigned int>>  functions_of_leaf;
     std::vector<dealii::FullMatrix<double>> coefficients_of_leaf;
+    /**
+     * The same coefficients in compressed rows, for evaluate(): most rows of a leaf cell are a
+     * single B-spline of its level with weight 1.
+     */
+    struct CompressedRows
+    {
+      std::vector<unsigned int> row_start;
+      std::vector<unsigned int> column;
+      std::vector<double>       weight;
+    };
+    std::vector<CompressedRows> compressed_coefficients;
   };
 
 
