@@ -19,6 +19,8 @@
 //   above 1e-6 of the largest (LAPACKFullMatrix::compute_svd), on a two-level 1D (q = 2) and 2D
 //   (q = 2) case; the control: with one more function, the level-0 B-spline whose support lies
 //   in the refined domain (a combination of level-1 functions), the ratio falls below 1e-10.
+// - input: a refined cell of level 1 whose parent is not refined, or a cell index beyond the
+//   level's cells, is rejected (std::invalid_argument).
 // Run with --figures to print the measured figures.
 
 #include <gelmpm/bspline/hierarchical_bspline_space.h>
@@ -32,6 +34,7 @@
 #include <iostream>
 #include <map>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <utility>
 
@@ -342,6 +345,31 @@ namespace
     figure("sigma_min / sigma_max", active);
     figure("with the extra function", with_extra);
   }
+
+
+  /** Whether building a 1D space of q = 1 on 4 cells with @p refined throws invalid_argument. */
+  bool
+  rejected(const std::vector<std::vector<unsigned int>> &refined)
+  {
+    try
+      {
+        const HierarchicalBSplineSpace<1> space(1, Point<1>(0.), Point<1>(1.), {{4}}, refined);
+      }
+    catch (const std::invalid_argument &)
+      {
+        return true;
+      }
+    return false;
+  }
+
+  void
+  check_input()
+  {
+    std::cout << "Input:" << std::endl;
+    report("a refined cell of level 1 outside Omega^1 (parent not refined) is rejected",
+           rejected({{2, 3}, {2}}) && !rejected({{2, 3}, {4}}));
+    report("a refined cell index beyond the level's cells is rejected", rejected({{4}}));
+  }
 } // namespace
 
 
@@ -349,6 +377,7 @@ int
 main(int argc, char **argv)
 {
   read_arguments(argc, argv);
+  check_input();
   check_by_hand();
   check_dense_truncation<1>(3, {box<1>(0.25, 0.75), box<1>(0.375, 0.625)});
   check_dense_truncation<2>(2, {box<2>(0., 0.5), box<2>(0., 0.25)});
