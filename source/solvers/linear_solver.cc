@@ -80,6 +80,18 @@ namespace GelMPM
       "factorisations'). The inertia is that of a matrix within about the threshold of the "
       "tangent: the stability analysis's signature is unchanged unless an eigenvalue lies "
       "that close to zero.");
+    prm.declare_entry(
+      "Precision",
+      "double",
+      dealii::Patterns::Selection("double|single"),
+      "MUMPS LDL^T (the symmetric Nitsche variant): the arithmetic of the factors. single: "
+      "MUMPS's single precision (half the factors' memory, faster dense kernels), each solve "
+      "refined in double precision against the tangent to a relative residual of 1e-13; where "
+      "the refinement stalls above 1e-9 (condition numbers near 1/6e-8: doc/conditioning.md) "
+      "the run factorises in double from then on and says so. The inertia of the stability "
+      "analysis is then that of the single-precision factors: the same unless an eigenvalue "
+      "lies within about 1e-7 of the tangent's norm of zero (doc/performance.md, 'Single "
+      "precision').");
     prm.declare_entry("Krylov tolerance",
                       "1e-8",
                       dealii::Patterns::Double(1e-14, 0.1),
@@ -174,6 +186,14 @@ namespace GelMPM
     memory_share = prm.get_double("Automatic memory share");
     ordering     = SymmetricFactorization::parse_ordering(prm.get("Ordering"));
     compression  = prm.get_double("Compression");
+    precision    = prm.get("Precision") == "single"
+                     ? SymmetricFactorization::Precision::single_precision
+                     : SymmetricFactorization::Precision::double_precision;
+    require(precision == SymmetricFactorization::Precision::double_precision || solver == "MUMPS" ||
+              automatic,
+            "Linear solver/Precision",
+            "is single with Solver = " + solver + ", which factorises nothing by MUMPS",
+            "set Solver = MUMPS (or automatic), or Precision = double");
     require(compression == 0. || solver == "MUMPS" || automatic,
             "Linear solver/Compression",
             "is " + prm.get("Compression") + " with Solver = " + solver +
@@ -207,6 +227,11 @@ namespace GelMPM
   void
   LinearSolver::set_symmetric(const bool symmetric_matrices)
   {
+    require(symmetric_matrices || precision == SymmetricFactorization::Precision::double_precision,
+            "Linear solver/Precision",
+            "single factorises MUMPS's LDL^T, which only the symmetric tangent of "
+            "Nitsche/Variant = symmetric has (the skew-symmetric variant's is factorised as LU)",
+            "set Nitsche/Variant = symmetric, or Precision = double");
     require(symmetric_matrices || compression == 0.,
             "Linear solver/Compression",
             "compresses MUMPS's LDL^T, which only the symmetric tangent of Nitsche/Variant = "
@@ -341,6 +366,7 @@ namespace GelMPM
                 ldlt = std::make_unique<SymmetricFactorization>();
                 ldlt->set_ordering(ordering);
                 ldlt->set_compression(compression);
+                ldlt->set_precision(precision);
                 ldlt->factorize(K);
                 analysed_matrix = &matrix;
                 ++symbolic_count;
@@ -383,8 +409,9 @@ namespace GelMPM
                                      std::to_string(error) + ")");
           }
       }
-    factorized  = true;
-    call_failed = false;
+    factorized_matrix = &K;
+    factorized        = true;
+    call_failed       = false;
     ++numeric_count;
     if (keep_values)
       {
@@ -430,10 +457,7 @@ namespace GelMPM
         ++n_krylov_solves;
       }
     else if (ldlt)
-      {
-        x = b;
-        ldlt->solve(x);
-      }
+      solve_ldlt(x, b);
     else
       {
         const Epetra_RowMatrix &matrix = *problem->GetMatrix();
@@ -511,7 +535,12 @@ namespace GelMPM
   const SymmetricFactorization *
   LinearSolver::symmetric_factorization() const
   {
-    return factorized ? ldlt.get() : nullptr;
+    // Single-precision factors cannot serve the stability analysis: near an onset the tangent
+    // is nearly singular, beyond their refinement (the Schur eigenvalues' shift-invert solves
+    // stalled at a relative residual of 0.69 on the column of paper §4.3).
+    return factorized && precision == SymmetricFactorization::Precision::double_precision
+             ? ldlt.get()
+             : nullptr;
   }
 
 
@@ -526,6 +555,40 @@ namespace GelMPM
   LinearSolver::n_numeric_factorisations() const
   {
     return numeric_count;
+  }
+
+
+  void
+  LinearSolver::solve_ldlt(dealii::Vector<double> &x, const dealii::Vector<double> &b) const
+  {
+    x = b;
+    try
+      {
+        ldlt->solve(x);
+        refinement_steps += ldlt->refinement_steps();
+      }
+    catch (const RefinementFailure &failure)
+      {
+        // The single-precision factors are too inexact for this tangent: double from now on.
+        precision_fallback = failure.what();
+        precision          = SymmetricFactorization::Precision::double_precision;
+        const auto &K      = *factorized_matrix;
+        new_pattern();
+        factorize(K);
+        x = b;
+        ldlt->solve(x);
+      }
+  }
+
+
+  std::string
+  LinearSolver::precision_report() const
+  {
+    if (precision == SymmetricFactorization::Precision::single_precision)
+      return "single precision, " + std::to_string(refinement_steps) + " refinement steps";
+    if (!precision_fallback.empty())
+      return "double precision after " + precision_fallback;
+    return "";
   }
 
 
@@ -578,6 +641,8 @@ namespace GelMPM
         used += ", " + ldlt->ordering_used() + flops.str();
         if (compression > 0.)
           used += ", " + compression_report();
+        if (!precision_report().empty())
+          used += ", " + precision_report();
       }
     return automatic ? "automatic: " + used + (choice.empty() ? "" : "; " + choice) : used;
   }

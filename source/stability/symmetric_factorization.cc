@@ -6,8 +6,11 @@
 #include <algorithm>
 #include <dmumps_c.h>
 #include <metis.h>
+#include <smumps_c.h>
+#include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace GelMPM
@@ -20,14 +23,156 @@ namespace GelMPM
     {
       return i - 1;
     }
+
+    /** MUMPS's double-precision arithmetic (DMUMPS). */
+    struct DoubleArithmetic
+    {
+      using Struc = DMUMPS_STRUC_C;
+      using Real  = double;
+      static void
+      run(Struc &mumps)
+      {
+        dmumps_c(&mumps);
+      }
+    };
+
+    /** MUMPS's single-precision arithmetic (SMUMPS): half the factor's memory. */
+    struct SingleArithmetic
+    {
+      using Struc = SMUMPS_STRUC_C;
+      using Real  = float;
+      static void
+      run(Struc &mumps)
+      {
+        smumps_c(&mumps);
+      }
+    };
+
+    /**
+     * One MUMPS instance of @p Arithmetic: its control structure and, where its arithmetic is not
+     * double, its copy of the matrix's entries.
+     */
+    template <class Arithmetic>
+    struct MumpsInstance
+    {
+      typename Arithmetic::Struc             mumps = {};
+      std::vector<typename Arithmetic::Real> converted_values;
+      bool                                   initialized = false;
+
+      /**
+       * Start MUMPS on @p comm. On several ranks each passes the entries of the rows it owns
+       * (ICNTL(18) = 3) and the right-hand side and solution live on rank 0 (ICNTL(20) =
+       * ICNTL(21) = 0), from where solve() broadcasts the solution; on one rank the matrix is
+       * passed whole.
+       */
+      void
+      start(const MPI_Comm comm, const bool distributed)
+      {
+        mumps.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(comm));
+        mumps.par          = 1; // the host takes part in the factorisation
+        mumps.sym          = 2; // general symmetric (indefinite): LDL^T
+        call(-1);
+        initialized = true;
+        // Silence MUMPS; errors are reported through INFOG.
+        mumps.icntl[icntl(1)]  = -1;
+        mumps.icntl[icntl(2)]  = -1;
+        mumps.icntl[icntl(3)]  = -1;
+        mumps.icntl[icntl(4)]  = 0;
+        mumps.icntl[icntl(13)] = 1; // sequential root: the negative-pivot count covers it
+        mumps.icntl[icntl(24)] = 1; // detect null pivots (INFOG(28))
+        if (distributed)
+          mumps.icntl[icntl(18)] = 3;
+      }
+
+      /** Release MUMPS's data. */
+      void
+      finish()
+      {
+        if (initialized)
+          {
+            mumps.job = -2;
+            Arithmetic::run(mumps);
+            initialized = false;
+          }
+      }
+
+      /** Point MUMPS at the lower triangle's triplets (1-based), converted to its arithmetic. */
+      void
+      set_entries(const unsigned int      n,
+                  std::vector<MUMPS_INT> &rows,
+                  std::vector<MUMPS_INT> &columns,
+                  std::vector<double>    &values,
+                  const bool              distributed)
+      {
+        typename Arithmetic::Real *a = nullptr;
+        if constexpr (std::is_same_v<typename Arithmetic::Real, double>)
+          a = values.data();
+        else
+          {
+            converted_values.assign(values.begin(), values.end());
+            a = converted_values.data();
+          }
+        mumps.n = n;
+        if (distributed)
+          {
+            mumps.nnz_loc = values.size();
+            mumps.irn_loc = rows.data();
+            mumps.jcn_loc = columns.data();
+            mumps.a_loc   = a;
+          }
+        else
+          {
+            mumps.nnz = values.size();
+            mumps.irn = rows.data();
+            mumps.jcn = columns.data();
+            mumps.a   = a;
+          }
+      }
+
+      void
+      call(const int job)
+      {
+        mumps.job = job;
+        Arithmetic::run(mumps);
+        if (mumps.infog[0] < 0)
+          throw std::runtime_error("MUMPS (job " + std::to_string(job) +
+                                   ") failed with INFOG(1) = " + std::to_string(mumps.infog[0]) +
+                                   ", INFOG(2) = " + std::to_string(mumps.infog[1]));
+      }
+
+      /** Solve in place, in MUMPS's arithmetic, on rank 0's @p x. */
+      void
+      solve(dealii::Vector<double> &x)
+      {
+        mumps.nrhs = 1;
+        mumps.lrhs = mumps.n;
+        if constexpr (std::is_same_v<typename Arithmetic::Real, double>)
+          {
+            mumps.rhs = x.begin();
+            call(3);
+          }
+        else
+          {
+            std::vector<typename Arithmetic::Real> rhs(x.begin(), x.end());
+            mumps.rhs = rhs.data();
+            call(3);
+            std::copy(rhs.begin(), rhs.end(), x.begin());
+          }
+      }
+    };
   } // namespace
 
 
   struct SymmetricFactorization::Data
   {
-    DMUMPS_STRUC_C         mumps;
+    MumpsInstance<DoubleArithmetic> full;
+    MumpsInstance<SingleArithmetic> reduced;
+    Precision                       precision = Precision::double_precision;
+    // The lower triangle gathered (1-based triplets), in double precision: the matrix of the
+    // single-precision factorisation's iterative refinement.
     std::vector<MUMPS_INT> rows, columns;
     std::vector<double>    values;
+    unsigned int           n = 0;
     // The pivot order (1-based) of the nested dissection, for the gathered entries.
     std::vector<MUMPS_INT> pivot_order;
     Ordering               ordering = Ordering::fewest_flops;
@@ -36,46 +181,47 @@ namespace GelMPM
     double   compression  = 0.;
     MPI_Comm communicator = MPI_COMM_SELF;
     bool     distributed  = false;
-    bool     initialized  = false;
+    bool     started      = false;
     bool     factorized   = false;
+    // Refinement steps of the last solve (single precision).
+    unsigned int refinement_steps = 0;
 
-    /**
-     * Start MUMPS on the communicator of the matrix. On several ranks each passes the entries of
-     * the rows it owns (ICNTL(18) = 3) and the right-hand side and solution live on rank 0
-     * (ICNTL(20) = ICNTL(21) = 0), from where solve() broadcasts the solution; on one rank the
-     * matrix is passed whole, as before the distribution existed.
-     */
+    /** Call @p f with the MUMPS instance of the chosen precision. */
+    template <class F>
+    decltype(auto)
+    with_mumps(F &&f)
+    {
+      return precision == Precision::single_precision ? f(reduced) : f(full);
+    }
+
+    template <class F>
+    decltype(auto)
+    with_mumps(F &&f) const
+    {
+      return precision == Precision::single_precision ? f(reduced) : f(full);
+    }
+
     void
     start(const MPI_Comm comm)
     {
-      communicator       = comm;
-      distributed        = dealii::Utilities::MPI::n_mpi_processes(comm) > 1;
-      mumps.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(comm));
-      mumps.par          = 1; // the host takes part in the factorisation
-      mumps.sym          = 2; // general symmetric (indefinite): LDL^T
-      call(-1);
-      initialized = true;
-      // Silence MUMPS; errors are reported through INFOG.
-      mumps.icntl[icntl(1)]  = -1;
-      mumps.icntl[icntl(2)]  = -1;
-      mumps.icntl[icntl(3)]  = -1;
-      mumps.icntl[icntl(4)]  = 0;
-      mumps.icntl[icntl(13)] = 1; // sequential root: the negative-pivot count covers it
-      mumps.icntl[icntl(24)] = 1; // detect null pivots (INFOG(28))
-      if (distributed)
-        mumps.icntl[icntl(18)] = 3;
+      communicator = comm;
+      distributed  = dealii::Utilities::MPI::n_mpi_processes(comm) > 1;
+      with_mumps([&](auto &m) {
+        m.start(comm, distributed);
+      });
+      started = true;
     }
 
-    /** The lower triangle of the leading @p n x @p n block of @p K, as MUMPS's triplets. */
+    /** The lower triangle of the leading @p n_rows x @p n_rows block of @p K, as triplets. */
     void
-    gather(const dealii::TrilinosWrappers::SparseMatrix &K, const unsigned int n)
+    gather(const dealii::TrilinosWrappers::SparseMatrix &K, const unsigned int n_rows)
     {
       rows.clear();
       columns.clear();
       values.clear();
       // Zeros too: the structure, not the values, decides what the analysis can be reused for.
       for_each_entry(K,
-                     n,
+                     n_rows,
                      [this](const unsigned int row, const unsigned int column, const double value) {
                        if (column <= row)
                          {
@@ -84,28 +230,19 @@ namespace GelMPM
                            values.push_back(value);
                          }
                      });
-      mumps.n = n;
-      if (distributed)
-        {
-          mumps.nnz_loc = values.size();
-          mumps.irn_loc = rows.data();
-          mumps.jcn_loc = columns.data();
-          mumps.a_loc   = values.data();
-        }
-      else
-        {
-          mumps.nnz = values.size();
-          mumps.irn = rows.data();
-          mumps.jcn = columns.data();
-          mumps.a   = values.data();
-        }
+      n = n_rows;
+      with_mumps([&](auto &m) {
+        m.set_entries(n, rows, columns, values, distributed);
+      });
     }
 
     /** MUMPS's own ordering for the next analysis (ICNTL(7) = 7). */
     void
     use_mumps_ordering()
     {
-      mumps.icntl[icntl(7)] = 7;
+      with_mumps([](auto &m) {
+        m.mumps.icntl[icntl(7)] = 7;
+      });
     }
 
     /**
@@ -115,17 +252,19 @@ namespace GelMPM
     void
     use_nested_dissection()
     {
-      if (pivot_order.size() != static_cast<std::size_t>(mumps.n))
+      if (pivot_order.size() != n)
         compute_nested_dissection();
-      mumps.perm_in         = pivot_order.data();
-      mumps.icntl[icntl(7)] = 1;
+      with_mumps([this](auto &m) {
+        m.mumps.perm_in         = pivot_order.data();
+        m.mumps.icntl[icntl(7)] = 1;
+      });
     }
 
     void
     compute_nested_dissection()
     {
       // The graph of the lower triangle's off-diagonal entries, both ways, in METIS's CSR.
-      const idx_t        n = mumps.n;
+      const idx_t        n = this->n;
       std::vector<idx_t> start(n + 1, 0);
       for (std::size_t e = 0; e < rows.size(); ++e)
         if (rows[e] != columns[e])
@@ -183,12 +322,12 @@ namespace GelMPM
         return;
       // MUMPS's own first: where it loses (compact 3D bodies) the nested dissection's analysis is
       // the one kept and no third analysis is needed.
-      const double mumps_flops = mumps.rinfog[0];
+      const double mumps_flops = estimated_flops();
       if (mumps_flops < comparison_threshold * static_cast<double>(rows.size()))
         return;
       use_nested_dissection();
       call(1);
-      if (mumps_flops <= mumps.rinfog[0])
+      if (mumps_flops <= estimated_flops())
         {
           use_mumps_ordering();
           call(1);
@@ -204,9 +343,35 @@ namespace GelMPM
     void
     use_compression()
     {
-      mumps.icntl[icntl(35)] = compression > 0. ? 2 : 0;
-      mumps.icntl[icntl(37)] = compression > 0. ? 1 : 0;
-      mumps.cntl[6]          = compression; // CNTL(7)
+      with_mumps([this](auto &m) {
+        m.mumps.icntl[icntl(35)] = compression > 0. ? 2 : 0;
+        m.mumps.icntl[icntl(37)] = compression > 0. ? 1 : 0;
+        m.mumps.cntl[6]          = compression; // CNTL(7)
+      });
+    }
+
+    /** INFOG(@p i), 1-based. */
+    MUMPS_INT
+    infog(const int i) const
+    {
+      return with_mumps([i](const auto &m) {
+        return m.mumps.infog[i - 1];
+      });
+    }
+
+    /** RINFOG(@p i), 1-based. */
+    double
+    rinfog(const int i) const
+    {
+      return with_mumps([i](const auto &m) {
+        return static_cast<double>(m.mumps.rinfog[i - 1]);
+      });
+    }
+
+    double
+    estimated_flops() const
+    {
+      return rinfog(1);
     }
 
     /** An entry of INFOG that counts entries, read through MUMPS's convention for large
@@ -214,19 +379,93 @@ namespace GelMPM
     double
     infog_count(const int i) const
     {
-      const MUMPS_INT value = mumps.infog[i - 1];
+      const MUMPS_INT value = infog(i);
       return value < 0 ? -1e6 * value : static_cast<double>(value);
     }
 
     void
     call(const int job)
     {
-      mumps.job = job;
-      dmumps_c(&mumps);
-      if (mumps.infog[0] < 0)
-        throw std::runtime_error("MUMPS (job " + std::to_string(job) +
-                                 ") failed with INFOG(1) = " + std::to_string(mumps.infog[0]) +
-                                 ", INFOG(2) = " + std::to_string(mumps.infog[1]));
+      with_mumps([job](auto &m) {
+        m.call(job);
+      });
+    }
+
+    /** Rank 0's @p x on every rank. */
+    void
+    broadcast(dealii::Vector<double> &x) const
+    {
+      if (distributed)
+        {
+          const int ierr = MPI_Bcast(x.begin(), x.size(), MPI_DOUBLE, 0, communicator);
+          AssertThrowMPI(ierr);
+        }
+    }
+
+    /** K x for the gathered lower triangle (on several ranks: this rank's rows), summed over the
+     * ranks. */
+    dealii::Vector<double>
+    multiply(const dealii::Vector<double> &x) const
+    {
+      dealii::Vector<double> y(x.size());
+      for (std::size_t e = 0; e < values.size(); ++e)
+        {
+          const unsigned int row = rows[e] - 1, column = columns[e] - 1;
+          y(row) += values[e] * x(column);
+          if (row != column)
+            y(column) += values[e] * x(row);
+        }
+      if (distributed)
+        {
+          const int ierr =
+            MPI_Allreduce(MPI_IN_PLACE, y.begin(), y.size(), MPI_DOUBLE, MPI_SUM, communicator);
+          AssertThrowMPI(ierr);
+        }
+      return y;
+    }
+
+    /**
+     * Solve K x = b (b in @p x on entry, rank 0's) with the single-precision factors, refined
+     * in double precision (x += K~^{-1} (b - K x)) until the residual stops shrinking by half
+     * or is within refinement_tolerance of b. Throws RefinementFailure when it stops above
+     * refinement_acceptance: the factors are then too inexact for this matrix (a condition
+     * number near the reciprocal of single precision's 6e-8).
+     */
+    void
+    solve_refined(dealii::Vector<double> &x)
+    {
+      broadcast(x);
+      const dealii::Vector<double> b       = x;
+      const double                 b_norm  = b.l2_norm();
+      x                                    = 0.;
+      dealii::Vector<double> residual      = b;
+      double                 residual_norm = b_norm;
+      refinement_steps                     = 0;
+      while (residual_norm > SymmetricFactorization::refinement_tolerance * b_norm)
+        {
+          // Scaled to unit norm, so that single precision neither underflows nor overflows.
+          dealii::Vector<double> correction = residual;
+          correction /= residual_norm;
+          reduced.solve(correction);
+          broadcast(correction);
+          x.add(residual_norm, correction);
+          ++refinement_steps;
+          residual = b;
+          residual -= multiply(x);
+          const double last = residual_norm;
+          residual_norm     = residual.l2_norm();
+          if (!(residual_norm <= 0.5 * last) || refinement_steps == 30)
+            break;
+        }
+      if (!(residual_norm <= SymmetricFactorization::refinement_acceptance * b_norm))
+        {
+          std::ostringstream why;
+          why.precision(2);
+          why << "the single-precision factorisation's refinement stopped at a relative "
+                 "residual of "
+              << residual_norm / b_norm << " after " << refinement_steps << " steps";
+          throw RefinementFailure(why.str());
+        }
     }
   };
 
@@ -238,10 +477,10 @@ namespace GelMPM
 
   SymmetricFactorization::~SymmetricFactorization()
   {
-    if (data && data->initialized)
+    if (data)
       {
-        data->mumps.job = -2;
-        dmumps_c(&data->mumps);
+        data->full.finish();
+        data->reduced.finish();
       }
   }
 
@@ -250,12 +489,12 @@ namespace GelMPM
   SymmetricFactorization::estimated_memory(const dealii::TrilinosWrappers::SparseMatrix &K)
   {
     data->factorized = false;
-    if (!data->initialized)
+    if (!data->started)
       data->start(K.get_mpi_communicator());
     data->gather(K, K.m());
     data->analyse();
     // INFOG(17): MB (10^6 bytes) for the in-core factorisation, all ranks.
-    return 1e6 * data->mumps.infog[16];
+    return 1e6 * data->infog(17);
   }
 
 
@@ -264,7 +503,7 @@ namespace GelMPM
                                     const unsigned int                            leading)
   {
     data->factorized = false;
-    if (!data->initialized)
+    if (!data->started)
       data->start(K.get_mpi_communicator());
     else if (data->communicator != K.get_mpi_communicator())
       throw std::logic_error("SymmetricFactorization::factorize() with a matrix on another "
@@ -307,7 +546,7 @@ namespace GelMPM
   double
   SymmetricFactorization::factorization_flops() const
   {
-    return data->mumps.rinfog[2];
+    return data->rinfog(3);
   }
 
 
@@ -333,13 +572,12 @@ namespace GelMPM
   {
     if (!data->factorized)
       throw std::logic_error("SymmetricFactorization::statistics() before factorize()");
-    const auto      &m = data->mumps;
     FactorStatistics result;
-    result.full_rank_flops   = m.rinfog[2];  // RINFOG(3)
-    result.flops             = m.rinfog[13]; // RINFOG(14): the compressed blocks' own
+    result.full_rank_flops   = data->rinfog(3);
+    result.flops             = data->rinfog(14); // the compressed blocks' own
     result.full_rank_entries = data->infog_count(29);
     result.entries = data->compression > 0. ? data->infog_count(35) : result.full_rank_entries;
-    result.memory  = 1e6 * m.infog[21]; // INFOG(22), MB on all ranks
+    result.memory  = 1e6 * data->infog(22); // MB on all ranks
     if (result.flops <= 0.)
       result.flops = result.full_rank_flops;
     return result;
@@ -349,7 +587,7 @@ namespace GelMPM
   double
   SymmetricFactorization::estimated_flops() const
   {
-    return data->mumps.rinfog[0];
+    return data->estimated_flops();
   }
 
 
@@ -357,7 +595,7 @@ namespace GelMPM
   SymmetricFactorization::ordering_used() const
   {
     // INFOG(7), MUMPS's numbering of its orderings (1: given, here the nested dissection).
-    switch (data->mumps.infog[6])
+    switch (data->infog(7))
       {
         case 0:
           return "AMD ordering";
@@ -374,7 +612,7 @@ namespace GelMPM
         case 6:
           return "QAMD ordering";
         default:
-          return "ordering " + std::to_string(data->mumps.infog[6]);
+          return "ordering " + std::to_string(data->infog(7));
       }
   }
 
@@ -385,7 +623,7 @@ namespace GelMPM
     if (!data->factorized)
       throw std::logic_error("SymmetricFactorization::refactorize() before factorize()");
     const std::size_t n_entries = data->values.size();
-    data->gather(K, data->mumps.n);
+    data->gather(K, data->n);
     if (data->values.size() != n_entries)
       throw std::logic_error("SymmetricFactorization::refactorize() with another sparsity pattern");
     data->factorized = false;
@@ -399,11 +637,10 @@ namespace GelMPM
   {
     if (!data->factorized)
       throw std::logic_error("SymmetricFactorization::inertia() before factorize()");
-    const auto &m = data->mumps;
-    Inertia     result;
-    result.n_negative = m.infog[11]; // INFOG(12)
-    result.n_zero     = m.infog[27]; // INFOG(28)
-    result.n_positive = m.n - result.n_negative - result.n_zero;
+    Inertia result;
+    result.n_negative = data->infog(12);
+    result.n_zero     = data->infog(28);
+    result.n_positive = data->n - result.n_negative - result.n_zero;
     return result;
   }
 
@@ -413,11 +650,12 @@ namespace GelMPM
   {
     if (!data->factorized)
       throw std::logic_error("SymmetricFactorization::solve() before factorize()");
-    auto &m = data->mumps;
-    m.nrhs  = 1;
-    m.lrhs  = m.n;
-    m.rhs   = x.begin();
-    data->call(3);
+    if (data->precision == Precision::single_precision)
+      {
+        data->solve_refined(x);
+        return;
+      }
+    data->full.solve(x);
     if (data->distributed)
       {
         const int ierr = MPI_Bcast(x.begin(), x.size(), MPI_DOUBLE, 0, data->communicator);
@@ -429,6 +667,29 @@ namespace GelMPM
   unsigned int
   SymmetricFactorization::size() const
   {
-    return data->mumps.n;
+    return data->n;
+  }
+
+
+  void
+  SymmetricFactorization::set_precision(const Precision precision)
+  {
+    if (data->started && precision != data->precision)
+      throw std::logic_error("SymmetricFactorization::set_precision() after the first analysis");
+    data->precision = precision;
+  }
+
+
+  SymmetricFactorization::Precision
+  SymmetricFactorization::precision() const
+  {
+    return data->precision;
+  }
+
+
+  unsigned int
+  SymmetricFactorization::refinement_steps() const
+  {
+    return data->refinement_steps;
   }
 } // namespace GelMPM

@@ -122,7 +122,8 @@ namespace GelMPM
 
     /**
      * The LDL^T factorisation of the last factorize() when the matrices are symmetric and
-     * MUMPS factorises them, else nullptr: its inertia is the signature of that matrix.
+     * MUMPS factorises them in double precision, else nullptr: its inertia is the signature of
+     * that matrix. (Without it the stability analysis factorises the tangent itself.)
      */
     const SymmetricFactorization *
     symmetric_factorization() const;
@@ -196,11 +197,26 @@ namespace GelMPM
     std::string
     compression_report() const;
 
+    /**
+     * With 'Precision = single': the refinement steps so far, or why the run went back to
+     * double precision (empty in double precision throughout).
+     */
+    std::string
+    precision_report() const;
+
     /** The shortest 'Krylov restart' accepted (restart 2 stalled on the §4.1 test scene, 5 did
      * not). */
     static constexpr unsigned int smallest_krylov_restart = 10;
 
   private:
+    /**
+     * x = K^{-1} b by the LDL^T factors; where single-precision factors cannot be refined to
+     * SymmetricFactorization::refinement_acceptance, the matrix is factorised again in double
+     * precision, which the run keeps.
+     */
+    void
+    solve_ldlt(dealii::Vector<double> &x, const dealii::Vector<double> &b) const;
+
     /** Count the last LDL^T factorisation's operations, entries and memory. */
     void
     add_factor_statistics(const FactorStatistics &factor) const;
@@ -219,7 +235,13 @@ namespace GelMPM
     // The dropping threshold of MUMPS's block low-rank LDL^T (0: full rank).
     double                   compression = 0.;
     mutable FactorStatistics factor_totals;
-    bool                     symmetric = false;
+    // The arithmetic of the LDL^T factors; double after a failed refinement (and why).
+    mutable SymmetricFactorization::Precision precision =
+      SymmetricFactorization::Precision::double_precision;
+    mutable std::string                                   precision_fallback;
+    mutable unsigned long                                 refinement_steps  = 0;
+    mutable const dealii::TrilinosWrappers::SparseMatrix *factorized_matrix = nullptr;
+    bool                                                  symmetric         = false;
     // The kept factorisation: a cache, so solve() stays const for its callers.
     mutable std::unique_ptr<Epetra_LinearProblem>   problem;
     mutable std::unique_ptr<Amesos_BaseSolver>      factorisation;

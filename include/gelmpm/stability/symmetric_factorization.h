@@ -6,6 +6,7 @@
 
 #include <limits>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 namespace GelMPM
@@ -43,6 +44,17 @@ namespace GelMPM
     double full_rank_entries = 0.;
     /** Bytes MUMPS used in the factorisation, all ranks (INFOG(22)). */
     double memory = 0.;
+  };
+
+
+  /**
+   * @brief A single-precision factorisation whose iterative refinement did not reach
+   * SymmetricFactorization::refinement_acceptance: refactorise in double precision.
+   */
+  class RefinementFailure : public std::runtime_error
+  {
+  public:
+    using std::runtime_error::runtime_error;
   };
 
 
@@ -90,6 +102,27 @@ namespace GelMPM
       /** MUMPS's own choice (ICNTL(7) = 7: AMF with Debian's MUMPS). */
       automatic
     };
+
+    /** The arithmetic of the factors. */
+    enum class Precision
+    {
+      double_precision,
+      /**
+       * MUMPS's single-precision arithmetic (SMUMPS): half the memory of the factors and faster
+       * dense kernels; solve() refines its solutions in double precision against the matrix
+       * factorised, to refinement_tolerance, and throws RefinementFailure if that stalls above
+       * refinement_acceptance (condition numbers near 1/6e-8).
+       */
+      single_precision
+    };
+
+    /** Relative residual at which the single-precision refinement stops. */
+    static constexpr double refinement_tolerance = 1e-13;
+    /**
+     * Relative residual below which a stalled refinement is accepted (Newton's iteration
+     * corrects the rest); above it solve() throws RefinementFailure.
+     */
+    static constexpr double refinement_acceptance = 1e-9;
 
     /** Parse the name of an Ordering ("fewest flops", "nested dissection" or "MUMPS"). */
     static Ordering
@@ -189,6 +222,17 @@ namespace GelMPM
     /** The ordering of the last analysis, by name (INFOG(7): "nested dissection" when ours). */
     std::string
     ordering_used() const;
+
+    /** Factorise in @p precision (before the first factorize(); the default: double). */
+    void
+    set_precision(const Precision precision);
+
+    Precision
+    precision() const;
+
+    /** The refinement steps of the last solve (single precision; 0 otherwise). */
+    unsigned int
+    refinement_steps() const;
 
     /** Size of the factorised matrix. */
     unsigned int

@@ -1,0 +1,69 @@
+# The cheaper factorisations of MUMPS's LDL^T solve the same Newton systems as the full-rank
+# double-precision one, and leave the stability analysis's signature as it was:
+# - 'Linear solver/Precision = single' (single-precision factors, each solve refined in double
+#   precision to a relative residual of 1e-13): the same steps, Newton iterations within one and
+#   the same physical statistics to 1e-6 of each column's largest value, on §4.1 to 0.1 tau_d
+#   with the paper's step control (2D) and on 2 steps of the free-swelling cube at 14^3 cells
+#   (3D); on the column of tests/output/column_onset.cc (h = H/8, the inertia of the full
+#   tangent at every step, one Schur eigenvalue, bisection to 1e-3 tau_d) the same bracket of the
+#   loss of stability and the same inertia at every step (the stability analysis factorises in
+#   double precision: near the onset the single-precision factors cannot be refined);
+# - 'Linear solver/Compression = 1e-6' (block low-rank factors) on the same cube;
+# - a tangent too ill-conditioned for single precision (§4.1 with both Nitsche penalties at their
+#   bound of 1e8: its refinement stalls at a relative residual of about 2e-7) goes back to double
+#   precision, says so, and gives the double-precision run's statistics.
+source "$(dirname "${BASH_SOURCE[0]}")/../mpi/common.sh"
+# run NAME SCENE VALUE_A VALUE_B ENTRY [--set ...]: the scene with ENTRY = VALUE_A and VALUE_B.
+run() {
+  local name="$1" scene="$2" a="$3" b="$4" entry="$5"
+  shift 5
+  for value in "$a" "$b"; do
+    "$gelmpm" "$source_dir/prm/$scene" --set "Output/Directory=${name}_${value}" \
+      --set "Output/Write particles=false" --set "Linear solver/Solver=MUMPS" \
+      --set "Linear solver/${entry}=${value}" "$@" > "${name}_${value}.log" 2>&1
+    check $? "$name with $entry = $value finished ($(grep -m1 'reached\|error\|failed' "${name}_${value}.log"))"
+  done
+  "$compare" --relative 1e-6 --newton 1 "${name}_${a}/statistics.csv" "${name}_${b}/statistics.csv" \
+    > "${name}_compare.log"
+  check $? "$name: statistics with $entry = $a and $b agree ($(tail -1 "${name}_compare.log"))"
+}
+fixed_steps() { # fixed_steps DT STEPS: the entries for STEPS steps of DT, in ${steps[@]}
+  steps=(--set "Time stepping/Initial step=$1" --set "Time stepping/Growth factor=1"
+         --set "Time stepping/Step caps=" --set "Time stepping/Stop at times="
+         --set "Time stepping/End time=$(awk -v d="$1" -v n="$2" 'BEGIN { print d * n }')")
+}
+
+run swelling constrained_swelling.prm double single Precision \
+  --set "Time stepping/End time=0.1" --set "Time stepping/Stop at times=0.1"
+grep -q "single precision, [0-9]* refinement steps" swelling_single.log
+check $? "swelling: the solver line reports single precision ($(grep -o 'single precision, [0-9]* refinement steps' swelling_single.log))"
+
+fixed_steps 0.01 2
+cube=("${steps[@]}" --set "Background grid/Cells=14, 14, 14" --set "Time stepping/Tolerance=0")
+run cube free_swelling_cube.prm double single Precision "${cube[@]}"
+run cube_compressed free_swelling_cube.prm 0 1e-6 Compression "${cube[@]}"
+
+run column column_buckling.prm double single Precision \
+  --set "Background grid/Cells=140, 80" --set "Material points/Points per cell=3" \
+  --set "Time stepping/Initial step=0.02" --set "Time stepping/Step caps=2: 0.02" \
+  --set "Time stepping/End time=0.25" --set "Time stepping/Stop at times=" \
+  --set "Stability/Inertia=true" --set "Stability/Bisection tolerance=1e-3" \
+  --set "Newton/Initial chemical potential=grid" --set "Stability/Perturbation amplitude=0" \
+  --set "Stability/Signature step control=false" --set "Time stepping/Largest increment=0" \
+  --set "Time stepping/Displacement tolerance=0" --set "Newton/Initial displacement=zero"
+# The eigenvalues (about 6e-7 at the bracket) carry the Newton iterates' differences.
+columns=$(head -1 column_double/stability.csv | tr ',' '\n' | grep -nv '^eig_' | cut -d: -f1 | paste -sd,)
+cmp -s <(cut -d, -f"$columns" column_double/stability.csv) \
+  <(cut -d, -f"$columns" column_single/stability.csv)
+check $? "column: stability.csv's bracket and inertia identical with single precision ($(tail -1 column_single/stability.csv))"
+[[ $(wc -l < column_single/stability.csv) -ge 2 ]]
+check $? "column: a loss of stability bracketed"
+
+run ill_conditioned constrained_swelling.prm double single Precision \
+  --set "Time stepping/End time=0.002" --set "Time stepping/Stop at times=0.002" \
+  --set "Nitsche/Displacement penalty=1e8" --set "Nitsche/Chemical potential penalty=1e8"
+grep -q "double precision after the single-precision factorisation's refinement stopped" \
+  ill_conditioned_single.log
+check $? "ill-conditioned: back to double precision, and said ($(grep -o 'double precision after[^;]*' ill_conditioned_single.log | head -1))"
+
+finish
