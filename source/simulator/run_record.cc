@@ -53,6 +53,18 @@ namespace GelMPM
                                    "Output/Directory",
                                    scene_file,
                                    resume);
+    // A run writes parameters.prm before its first statistics.csv row: a statistics.csv alone is
+    // another program's (the body-fitted peer's), which removing the earlier output would delete.
+    namespace fs = std::filesystem;
+    std::error_code error;
+    const fs::path  directory(output_settings.directory);
+    require(!fs::exists(directory / "statistics.csv", error) ||
+              fs::exists(directory / "parameters.prm", error),
+            "Output/Directory",
+            "is '" + output_settings.directory +
+              "', which holds a statistics.csv that no gelmpm run wrote (no parameters.prm "
+              "beside it: a body-fitted peer's results?), which the run would delete",
+            "give the run a directory of its own, e.g. --set \"Output/Directory=mpm\"");
   }
 
 

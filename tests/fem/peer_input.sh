@@ -66,8 +66,9 @@ if [[ -n "$(ls -A)" ]]; then
 fi
 # The output directory is claimed as gelmpm claims its own (PeerInput::claim_output_directory):
 # a peer runs into a new directory and again into its own, but a directory that holds a gelmpm
-# run's results is refused and its statistics.csv left as it was (the peer overwrote it), and so
-# is a directory whose lock (gelmpm.lock) another run holds, here this script.
+# run's results is refused and its statistics.csv left as it was (the peer overwrote it), gelmpm
+# refuses the peer's directory (it deleted the peer's statistics.csv), and so is a directory whose
+# lock (gelmpm.lock) another run holds, here this script.
 short=(--set "Time stepping/End time=1e-3" --quiet)
 check "new directory" 0 "results: fem/statistics.csv" "${build}/gelmpm-fem-swelling" \
   "${prm}/constrained_swelling.prm" --set "FE peer/Output directory=fem" "${short[@]}"
@@ -81,6 +82,16 @@ check "gelmpm's directory" 2 "'FE peer/Output directory' is 'mpm', which holds t
   --set "FE peer/Output directory=mpm" "${short[@]}"
 if [[ $(md5sum <mpm/statistics.csv) != "${before}" ]]; then
   echo "FAIL: the gelmpm run's statistics.csv was changed"
+  failures=$((failures + 1))
+fi
+# And the other way round: gelmpm refuses the peer's directory, whose statistics.csv it would
+# have deleted with an earlier run's output.
+before=$(md5sum <fem/statistics.csv)
+check "peer's directory for gelmpm" 2 "'Output/Directory' is 'fem', which holds a statistics.csv that no gelmpm run wrote" \
+  "${build}/gelmpm" "${prm}/constrained_swelling.prm" --set "Output/Directory=fem" \
+  --set "Time stepping/End time=1e-3"
+if [[ $(md5sum <fem/statistics.csv) != "${before}" ]]; then
+  echo "FAIL: the peer's statistics.csv was changed by gelmpm"
   failures=$((failures + 1))
 fi
 mkdir busy
