@@ -1,0 +1,83 @@
+#!/usr/bin/env bash
+# gelmpm-reference reads the scene the user runs and prints its gels' references (--csv here).
+# Checked, each with its tolerance:
+# - prm/free_swelling_cube.prm: lambda_0 = 1.2801 maps to mu_0 = -0.14597453 (1e-6), and the scene
+#   given by that mu_0 ('Initial state = chemical potential') back to lambda_0 = 1.2801 (1e-6); the
+#   bath mu_b = 0 is read from the pieces at 'End time', and lambda_eq = 2.348902 there (the scene's
+#   comment, 1e-6);
+# - prm/creasing_film.prm (2D): the plane-strain J at mu = 0 is 9.432 (doc/own_scenes.md section 7,
+#   5e-4), the film's s = 2.72722 (tests/material/flory_rehner, 1e-5), s = 2.4 at mu = -0.0066
+#   (5e-5);
+# - prm/bilayer_actuator.prm with --thicknesses 0.1,0.1: the bath -0.04 from the scene and
+#   Timoshenko's curvature 0.19589 (doc/own_scenes.md section 6, 5e-6);
+# - bad input exits with status 2 and a message naming the option or entry, nothing written:
+#   one thickness, thicknesses for a scene of one gel, a bath above the largest swelling mu, pieces
+#   that prescribe two baths, an option of gelmpm.
+# Arguments: the build directory, the source directory.
+set -u
+tool="$1/gelmpm-reference"
+prm="$2/prm"
+failures=0
+cd "$(mktemp -d)"
+
+# value <csv> <region> <quantity> <mu or empty>: the value column of that row.
+value() {
+  awk -F, -v r="$2" -v q="$3" -v m="$4" '$1 == r && $2 == q && (m == "*" || $3 == m) { print $4; exit }' <<< "$1"
+}
+# near <name> <value> <expected> <tolerance>
+near() {
+  if [[ -n "$2" ]] && awk -v a="$2" -v b="$3" -v t="$4" 'BEGIN { d = a - b; exit !(d < t && -d < t) }'; then
+    echo "ok   $1: $2 (expected $3 within $4)"
+  else
+    echo "FAIL $1: '$2' (expected $3 within $4)"
+    failures=$((failures + 1))
+  fi
+}
+# fails <name> <text the message must hold> <arguments...>: exit status 2 with that message.
+fails() {
+  local name="$1" text="$2"
+  shift 2
+  local out
+  out=$("${tool}" "$@" 2>&1)
+  local got=$?
+  if [[ ${got} -ne 2 ]] || ! grep -qF -- "${text}" <<< "${out}"; then
+    echo "FAIL ${name}: status ${got} (expected 2), output:"
+    echo "${out}" | tail -n 3
+    failures=$((failures + 1))
+  else
+    echo "ok   ${name}"
+  fi
+}
+
+cube=$("${tool}" --csv "${prm}/free_swelling_cube.prm")
+near "cube: mu_0 of lambda_0 = 1.2801" "$(value "${cube}" Material mu_0 '*')" -0.14597453 1e-6
+near "cube: lambda_eq at mu_b = 0" "$(value "${cube}" Material lambda_free_3d 0)" 2.348902 1e-6
+by_mu=$("${tool}" --csv "${prm}/free_swelling_cube.prm" \
+  --set "Material/Initial state=chemical potential" \
+  --set "Material/Initial chemical potential=-0.14597453")
+near "cube: lambda_0 of mu_0 = -0.14597453" "$(value "${by_mu}" Material lambda_0 '*')" 1.2801 1e-6
+
+film=$("${tool}" --csv "${prm}/creasing_film.prm")
+near "film: J of plane-strain free swelling" "$(value "${film}" Material J_free_plane_strain 0)" 9.432 5e-4
+near "film: s at mu_b = 0" "$(value "${film}" Material s_film 0)" 2.72722 1e-5
+near "film: mu at s = 2.4" "$(value "${film}" Material mu_at_s_crease '*')" -0.0066 5e-5
+
+bilayer=$("${tool}" --csv --thicknesses 0.1,0.1 "${prm}/bilayer_actuator.prm")
+near "bilayer: the bath from the scene" \
+  "$(awk -F, '$1 == "bilayer" && $2 == "bilayer_curvature" { print $3; exit }' <<< "${bilayer}")" -0.04 1e-12
+near "bilayer: Timoshenko's curvature" "$(value "${bilayer}" bilayer bilayer_curvature '*')" 0.19589 5e-6
+
+fails "one thickness" "--thicknesses" --thicknesses 0.1 "${prm}/bilayer_actuator.prm"
+fails "thicknesses of one gel" "'--thicknesses' gives two layers, but the scene has 1 gel(s)" \
+  --thicknesses 0.1,0.1 "${prm}/creasing_film.prm"
+fails "bath above the largest mu" "'--bath' gives the bath mu_b = 0.5" --bath 0.5 \
+  "${prm}/free_swelling_cube.prm"
+fails "two baths" "piece 'bottom' prescribes -0.05: the scene has no one bath" "${prm}/bilayer_actuator.prm" \
+  --set "Boundary conditions/bottom/Chemical potential value/Function expression=-0.05"
+fails "gelmpm option" "'--check' is an option of gelmpm" --check "${prm}/creasing_film.prm"
+if [[ -n "$(ls -A)" ]]; then
+  echo "FAIL: files were written: $(ls -A)"
+  failures=$((failures + 1))
+fi
+echo "${failures} failure(s)"
+exit $((failures > 0))
