@@ -69,6 +69,197 @@ namespace GelMPM
 
 
   template <int dim>
+  ExtendedBSplineSpace<dim>::ExtendedBSplineSpace(const HierarchicalBSplineSpace<dim> &hierarchy,
+                                                  const std::vector<bool> &cell_has_material,
+                                                  const std::vector<bool> &leaf_has_material,
+                                                  const bool               use_extension,
+                                                  const bool exact_extrapolation_required)
+    : space_(hierarchy.level_space(0))
+    , use_extension(use_extension)
+    , exact_extrapolation_required(exact_extrapolation_required)
+    , hierarchy(&hierarchy)
+  {
+    if (cell_has_material.size() != space_.n_cells() ||
+        leaf_has_material.size() != hierarchy.n_leaf_cells())
+      throw std::invalid_argument("ExtendedBSplineSpace: one material flag per cell expected");
+    classify_cells(cell_has_material);
+    classify_control_points();
+    if (use_extension)
+      compute_extrapolation_weights();
+    number_hierarchical_dofs(leaf_has_material);
+    build_leaf_matrices();
+  }
+
+
+  template <int dim>
+  bool
+  ExtendedBSplineSpace<dim>::reaches_refined_cell(const unsigned int i) const
+  {
+    const auto           f = space_.function_multi_index(i);
+    const auto          &n = space_.n_cells_per_direction();
+    const int            q = space_.degree();
+    std::array<int, dim> lo, hi;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        lo[d] = std::max(0, static_cast<int>(f[d]) - q);
+        hi[d] = std::min(static_cast<int>(n[d]) - 1, static_cast<int>(f[d]));
+      }
+    bool reaches = false;
+    for_each_in_box<dim>(lo, hi, [&](const std::array<int, dim> &c) {
+      reaches |= hierarchy->is_refined(0, space_.cell_index(to_unsigned<dim>(c)));
+    });
+    return reaches;
+  }
+
+
+  template <int dim>
+  void
+  ExtendedBSplineSpace<dim>::number_hierarchical_dofs(const std::vector<bool> &leaf_has_material)
+  {
+    const unsigned int n_active = hierarchy->n_active_functions();
+    std::vector<bool>  touched(n_active, false);
+    for (unsigned int leaf = 0; leaf < hierarchy->n_leaf_cells(); ++leaf)
+      if (leaf_has_material[leaf])
+        for (const unsigned int f : hierarchy->leaf_functions(leaf))
+          touched[f] = true;
+
+    // A level-0 boundary control point is extrapolated only from active, untruncated B-splines;
+    // otherwise it keeps a DoF of its own (the plain B-spline, as with the extension off).
+    const auto extrapolated = [&](const unsigned int i) {
+      if (!use_extension || point_kinds[i] != ControlPointKind::boundary || reaches_refined_cell(i))
+        return false;
+      for (const auto &[j, E] : weights[i])
+        if (hierarchy->active_function_number(0, j) == dealii::numbers::invalid_unsigned_int ||
+            reaches_refined_cell(j))
+          return false;
+      return true;
+    };
+
+    function_dof.assign(n_active, dealii::numbers::invalid_unsigned_int);
+    function_kinds.assign(n_active, ControlPointKind::outer);
+    function_weights.assign(n_active, {});
+    n_dofs_ = 0;
+    for (unsigned int f = 0; f < n_active; ++f)
+      {
+        const auto &[level, index] = hierarchy->active_function(f);
+        if (level == 0 && extrapolated(index))
+          {
+            function_kinds[f] = ControlPointKind::boundary;
+            continue;
+          }
+        if (!touched[f])
+          continue;
+        function_kinds[f] = (level == 0 && point_kinds[index] == ControlPointKind::boundary)
+                              ? ControlPointKind::boundary
+                              : ControlPointKind::interior;
+        function_dof[f]   = n_dofs_++;
+      }
+    // The weights of the extrapolated ones, in active-function numbers (all are DoFs: interior
+    // and untruncated, so nonzero on an interior level-0 leaf cell with material).
+    for (unsigned int f = 0; f < n_active; ++f)
+      {
+        const auto &[level, index] = hierarchy->active_function(f);
+        if (level != 0 || function_kinds[f] != ControlPointKind::boundary ||
+            function_dof[f] != dealii::numbers::invalid_unsigned_int)
+          continue;
+        for (const auto &[j, E] : weights[index])
+          {
+            const unsigned int g = hierarchy->active_function_number(0, j);
+            if (function_dof[g] == dealii::numbers::invalid_unsigned_int)
+              throw std::runtime_error("extended B-splines on a refined grid: a boundary control "
+                                       "point is extrapolated from a function without material");
+            function_weights[f].emplace_back(g, E);
+          }
+      }
+  }
+
+
+  template <int dim>
+  void
+  ExtendedBSplineSpace<dim>::build_leaf_matrices()
+  {
+    leaves_of_cell.assign(space_.n_cells(), {});
+    leaf_matrices_of_cell.assign(space_.n_cells(), {});
+    dofs_of_cell.assign(space_.n_cells(), {});
+    piece_of_leaf.assign(hierarchy->n_leaf_cells(), dealii::numbers::invalid_unsigned_int);
+    for (unsigned int leaf = 0; leaf < hierarchy->n_leaf_cells(); ++leaf)
+      {
+        const auto &[level, cell] = hierarchy->leaf_cell(leaf);
+        auto index                = hierarchy->level_space(level).cell_multi_index(cell);
+        for (auto &i : index)
+          i >>= level;
+        const unsigned int base = space_.cell_index(index);
+        piece_of_leaf[leaf]     = leaves_of_cell[base].size();
+        leaves_of_cell[base].push_back(leaf);
+      }
+
+    for (unsigned int cell = 0; cell < space_.n_cells(); ++cell)
+      {
+        if (cell_kinds[cell] == CellKind::outer)
+          continue;
+        const auto &leaves = leaves_of_cell[cell];
+        // dof -> per leaf, (local B-spline of the leaf's level, weight)
+        std::map<unsigned int, std::vector<std::map<unsigned int, double>>> rows;
+        const auto add = [&](const unsigned int dof,
+                             const unsigned int piece,
+                             const unsigned int a,
+                             const double       E) {
+          auto &row = rows[dof];
+          row.resize(leaves.size());
+          row[piece][a] += E;
+        };
+        for (unsigned int piece = 0; piece < leaves.size(); ++piece)
+          {
+            const auto &functions = hierarchy->leaf_functions(leaves[piece]);
+            const auto &C         = hierarchy->leaf_coefficients(leaves[piece]);
+            for (unsigned int r = 0; r < functions.size(); ++r)
+              {
+                const unsigned int f = functions[r];
+                for (unsigned int a = 0; a < C.n(); ++a)
+                  {
+                    if (C(r, a) == 0.)
+                      continue;
+                    if (function_dof[f] != dealii::numbers::invalid_unsigned_int)
+                      add(function_dof[f], piece, a, C(r, a));
+                    else
+                      for (const auto &[g, E] : function_weights[f])
+                        add(function_dof[g], piece, a, E * C(r, a));
+                  }
+              }
+          }
+        auto &dofs     = dofs_of_cell[cell];
+        auto &matrices = leaf_matrices_of_cell[cell];
+        matrices.assign(leaves.size(), CellMatrix());
+        for (auto &matrix : matrices)
+          matrix.row_start.push_back(0);
+        for (auto &[dof, per_leaf] : rows)
+          {
+            dofs.push_back(dof);
+            for (unsigned int piece = 0; piece < leaves.size(); ++piece)
+              {
+                auto &matrix = matrices[piece];
+                for (const auto &[a, E] : per_leaf[piece])
+                  if (E != 0.)
+                    {
+                      matrix.column.push_back(a);
+                      matrix.weight.push_back(E);
+                    }
+                matrix.row_start.push_back(matrix.column.size());
+              }
+          }
+      }
+  }
+
+
+  template <int dim>
+  unsigned int
+  ExtendedBSplineSpace<dim>::n_control_points() const
+  {
+    return hierarchy ? hierarchy->n_active_functions() : space_.n_functions();
+  }
+
+
+  template <int dim>
   void
   ExtendedBSplineSpace<dim>::classify_cells(const std::vector<bool> &cell_has_material)
   {
@@ -343,6 +534,8 @@ namespace GelMPM
   ControlPointKind
   ExtendedBSplineSpace<dim>::control_point_kind(const unsigned int i) const
   {
+    if (hierarchy)
+      return function_kinds[i];
     return point_kinds[i];
   }
 
@@ -359,6 +552,8 @@ namespace GelMPM
   unsigned int
   ExtendedBSplineSpace<dim>::dof_of_control_point(const unsigned int i) const
   {
+    if (hierarchy)
+      return function_dof[i];
     return dof_index[i];
   }
 
@@ -380,6 +575,11 @@ namespace GelMPM
                                       std::vector<double>                 &scratch_values,
                                       std::vector<dealii::Tensor<1, dim>> &scratch_gradients) const
   {
+    if (hierarchy)
+      {
+        evaluate_on_leaf(p, cell, values, gradients, scratch_values, scratch_gradients);
+        return;
+      }
     space_.evaluate(p, cell, scratch_values, scratch_gradients);
     const auto &E = matrix_of_cell[cell];
     for (unsigned int r = 0; r + 1 < E.row_start.size(); ++r)
@@ -402,7 +602,52 @@ namespace GelMPM
   ExtendedBSplineSpace<dim>::extrapolation_weights(const unsigned int k) const
   {
     static const std::vector<std::pair<unsigned int, double>> none;
+    if (hierarchy)
+      return function_weights[k];
     return use_extension ? weights[k] : none;
+  }
+
+
+  template <int dim>
+  void
+  ExtendedBSplineSpace<dim>::evaluate_on_leaf(
+    const dealii::Point<dim>            &p,
+    const unsigned int                   cell,
+    std::vector<double>                 &values,
+    std::vector<dealii::Tensor<1, dim>> &gradients,
+    std::vector<double>                 &scratch_values,
+    std::vector<dealii::Tensor<1, dim>> &scratch_gradients) const
+  {
+    const auto  &leaves = leaves_of_cell[cell];
+    unsigned int piece  = 0;
+    if (leaves.size() > 1)
+      {
+        // The leaf of the cell nearest to p: p clamped into the cell, a little inside.
+        const auto         index = space_.cell_multi_index(cell);
+        dealii::Point<dim> inside;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const double h     = space_.cell_size(d);
+            const double lower = space_.basis_1d(d).x_min() + index[d] * h;
+            inside[d]          = std::clamp(p[d], lower + 1e-9 * h, lower + h - 1e-9 * h);
+          }
+        piece = piece_of_leaf[hierarchy->leaf_cell_containing(inside)];
+      }
+    const auto &[level, leaf_cell] = hierarchy->leaf_cell(leaves[piece]);
+    hierarchy->level_space(level).evaluate(p, leaf_cell, scratch_values, scratch_gradients);
+    const auto &E = leaf_matrices_of_cell[cell][piece];
+    for (unsigned int r = 0; r + 1 < E.row_start.size(); ++r)
+      {
+        double                 v = 0.;
+        dealii::Tensor<1, dim> g;
+        for (unsigned int k = E.row_start[r]; k < E.row_start[r + 1]; ++k)
+          {
+            v += E.weight[k] * scratch_values[E.column[k]];
+            g += E.weight[k] * scratch_gradients[E.column[k]];
+          }
+        values[r]    = v;
+        gradients[r] = g;
+      }
   }
 
 

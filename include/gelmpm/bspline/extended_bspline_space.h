@@ -2,6 +2,7 @@
 #define gelmpm_bspline_extended_bspline_space_h
 
 #include <gelmpm/bspline/bspline_space.h>
+#include <gelmpm/bspline/hierarchical_bspline_space.h>
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
@@ -76,6 +77,31 @@ namespace GelMPM
                          const bool               use_extension                = true,
                          const bool               exact_extrapolation_required = true);
 
+    /**
+     * The extended basis on a locally refined grid: the truncated hierarchical B-splines of
+     * @p hierarchy, whose level 0 is the grid of the cells (cells stay level-0 cells: a refined
+     * cell's DoFs are those of all its leaf cells, and evaluate() finds the leaf). The cells and
+     * the control points of level 0 are classified as on the uniform grid. An active function is
+     * a DoF when it is nonzero on a leaf cell with material (@p leaf_has_material, one flag per
+     * leaf of @p hierarchy), except a boundary control point of level 0 that is extrapolated: one
+     * whose B-spline and whose block's B-splines are active and untruncated (their supports meet
+     * no refined cell). A boundary control point whose block reaches the refined region is kept
+     * as a DoF of its own, as with the extension off. In this mode a "control point" i of
+     * dof_of_control_point(), control_point_kind() and extrapolation_weights() is active function
+     * i of @p hierarchy.
+     */
+    ExtendedBSplineSpace(const HierarchicalBSplineSpace<dim> &hierarchy,
+                         const std::vector<bool>             &cell_has_material,
+                         const std::vector<bool>             &leaf_has_material,
+                         const bool                           use_extension,
+                         const bool                           exact_extrapolation_required);
+
+    /**
+     * Number of control points: of the B-spline space, or of active functions of the hierarchy.
+     */
+    unsigned int
+    n_control_points() const;
+
     /** Boundary control points extrapolated inexactly (0 unless allowed by the constructor). */
     unsigned int
     n_inexact_extrapolations() const;
@@ -122,6 +148,21 @@ namespace GelMPM
     compute_extrapolation_weights();
     void
     build_cell_matrices();
+    void
+    number_hierarchical_dofs(const std::vector<bool> &leaf_has_material);
+    void
+    build_leaf_matrices();
+    /** evaluate() on the leaf cell of @p cell that holds @p p (refined grid). */
+    void
+    evaluate_on_leaf(const dealii::Point<dim>            &p,
+                     const unsigned int                   cell,
+                     std::vector<double>                 &values,
+                     std::vector<dealii::Tensor<1, dim>> &gradients,
+                     std::vector<double>                 &scratch_values,
+                     std::vector<dealii::Tensor<1, dim>> &scratch_gradients) const;
+    /** Whether the support of level-0 B-spline @p i meets a refined cell. */
+    bool
+    reaches_refined_cell(const unsigned int i) const;
 
     const BSplineSpace<dim>                                  &space_;
     bool                                                      use_extension;
@@ -144,6 +185,18 @@ namespace GelMPM
       std::vector<double>       weight;
     };
     std::vector<CellMatrix> matrix_of_cell;
+
+    /** The refinement, or nullptr on the uniform grid. */
+    const HierarchicalBSplineSpace<dim> *hierarchy = nullptr;
+    /** Per active function of the hierarchy: its DoF, kind and extrapolation weights. */
+    std::vector<unsigned int>                                 function_dof;
+    std::vector<ControlPointKind>                             function_kinds;
+    std::vector<std::vector<std::pair<unsigned int, double>>> function_weights;
+    /** Per cell, its leaf cells and, per leaf, E in compressed rows (one row per cell DoF). */
+    std::vector<std::vector<unsigned int>> leaves_of_cell;
+    std::vector<std::vector<CellMatrix>>   leaf_matrices_of_cell;
+    /** Per leaf cell, its position in leaves_of_cell of its level-0 ancestor. */
+    std::vector<unsigned int> piece_of_leaf;
   };
 } // namespace GelMPM
 
