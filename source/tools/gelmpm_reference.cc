@@ -3,7 +3,7 @@
 // at the scene's initial and bath chemical potentials: the free-swelling stretch and J, the
 // drained and undrained moduli, the consolidation coefficient and its time scale, the swelling
 // of a film bonded on a rigid substrate against the creasing threshold, and for two gels
-// Timoshenko's curvature of the bilayer (doc/own_scenes.md, "What to expect").
+// Timoshenko's curvature of the bilayer (doc/reference_values.md).
 //
 //   gelmpm-reference [--set "Section/Entry=value"]... [--csv] [--bath mu]
 //                    [--thicknesses h_1,h_2] scene.prm
