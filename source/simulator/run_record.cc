@@ -58,7 +58,7 @@ namespace GelMPM
     namespace fs = std::filesystem;
     std::error_code error;
     const fs::path  directory(output_settings.directory);
-    require(!fs::exists(directory / "statistics.csv", error) ||
+    require(resume || !fs::is_regular_file(directory / "statistics.csv", error) ||
               fs::exists(directory / "parameters.prm", error),
             "Output/Directory",
             "is '" + output_settings.directory +
