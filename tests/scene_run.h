@@ -22,11 +22,14 @@ namespace GelMPMTests
   {
     int                                        status = 1;
     std::map<std::string, std::vector<double>> statistics;
+    /** What the run wrote to its log (std::cout). */
+    std::string log;
   };
 
   /**
    * Run the scene @p scene_file of dimension @p dim into @p directory (test mode, no particle
-   * output) with the further @p overrides ("Section/Entry=value"). The scene's log is discarded.
+   * output) with the further @p overrides ("Section/Entry=value"). The scene's log is kept, not
+   * printed.
    */
   template <int dim = 2>
   inline SceneRun
@@ -55,6 +58,7 @@ namespace GelMPMTests
         throw;
       }
     std::cout.rdbuf(cout_buffer);
+    run.log        = log.str();
     run.statistics = GelMPM::read_statistics(directory + "/statistics.csv");
     return run;
   }

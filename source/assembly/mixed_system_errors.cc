@@ -49,6 +49,23 @@ namespace GelMPM
 
   template <int dim>
   double
+  MixedSystem<dim>::largest_volume_change(const dealii::Vector<double> &solution) const
+  {
+    double largest = 0.;
+    for (const auto &r : cache.points())
+      if (r.kind == PointKind::volume)
+        {
+          const auto [du, delta_F, mu] = cache.fields_at(r, solution);
+          // F_{n+1} = delta_F F_n; the hoop stretch goes as the radius r_n.
+          const double hoop = r.axisymmetric() ? (r.radius + du[0]) / r.radius : 1.;
+          largest           = std::max(largest, std::abs(hoop * dealii::determinant(delta_F) - 1.));
+        }
+    return dealii::Utilities::MPI::max(largest, communicator);
+  }
+
+
+  template <int dim>
+  double
   MixedSystem<dim>::largest_increment_deviation(const dealii::Vector<double> &solution,
                                                 const double                  ratio) const
   {
@@ -104,6 +121,7 @@ namespace GelMPM
     const dealii::Vector<double> &) const;                                                         \
   template double MixedSystem<dim>::largest_displacement_increment(const dealii::Vector<double> &) \
     const;                                                                                         \
+  template double MixedSystem<dim>::largest_volume_change(const dealii::Vector<double> &) const;   \
   template double MixedSystem<dim>::largest_increment_deviation(const dealii::Vector<double> &,    \
                                                                 double) const;                     \
   template MixedSystem<dim>::StepError                                                             \

@@ -265,6 +265,7 @@ namespace GelMPM
     switch (loop.run())
       {
         case TimeLoop::Outcome::finished:
+        case TimeLoop::Outcome::equilibrium:
         case TimeLoop::Outcome::ended_early:
           result.completed = true;
           break;

@@ -143,6 +143,28 @@ namespace GelMPM
 
 
   template <int dim>
+  bool
+  MaterialPointModel<dim>::measures_rate_of_change() const
+  {
+    return true;
+  }
+
+
+  template <int dim>
+  double
+  MaterialPointModel<dim>::rate_of_change(const dealii::Vector<double> &solution,
+                                          const double                  dt) const
+  {
+    // The volume ratio says how far the solvent is from its balance, the motion whether a body
+    // at constant volume (a buckled column, a bending strip) still moves.
+    const double volume_change = scene.system->largest_volume_change(solution);
+    const double motion =
+      scene.system->largest_displacement_increment(solution) / characteristic_length;
+    return std::max(volume_change, motion) / dt;
+  }
+
+
+  template <int dim>
   typename MaterialPointModel<dim>::StepBound
   MaterialPointModel<dim>::bound_step(const double t_begin, const double dt) const
   {

@@ -262,7 +262,7 @@ namespace GelMPM
     open(statistics_file, "statistics.csv", statistics_columns());
     if (stability.detects_onset())
       open(stability_file, "stability.csv", stability_columns());
-    if (stability.detects_onset() || observables.writes_events())
+    if (writes_events())
       open(events_file, "events.csv", {"event", "time", "t_over_tau_d", "mu_boundary", "pore"});
   }
 
@@ -395,6 +395,14 @@ namespace GelMPM
         log << "  event: " << name << (pore > 0 ? " of pore " + std::to_string(pore) : "")
             << " at t/tau_d = " << current_time() << '\n';
       }
+  }
+
+
+  template <int dim>
+  bool
+  RunRecord<dim>::writes_events() const
+  {
+    return stability.detects_onset() || observables.writes_events();
   }
 
 

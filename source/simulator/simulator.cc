@@ -250,6 +250,9 @@ namespace GelMPM
       {
         case TimeLoop::Outcome::finished:
           return 0;
+        case TimeLoop::Outcome::equilibrium:
+          end_at_equilibrium();
+          return 0;
         case TimeLoop::Outcome::ended_early:
           pcout << "gelmpm: ended at the bracketed loss of stability ('Stability/End at onset')"
                 << std::endl;
@@ -271,6 +274,21 @@ namespace GelMPM
           return stop_on_failure();
       }
     return 1;
+  }
+
+
+  template <int dim>
+  void
+  Simulator<dim>::end_at_equilibrium()
+  {
+    const auto &control = loop->control();
+    pcout << "gelmpm: reached equilibrium at t/tau_d = " << current_time()
+          << " (criterion 'Time stepping/End at equilibrium' = " << time_stepping.end_at_equilibrium
+          << ": the largest relative change of J or of a position per tau_d was "
+          << control.last_rate() << " on the last step, below it on two steps in a row)"
+          << std::endl;
+    if (record.writes_events())
+      record.write_event("equilibrium", current_time(), 0);
   }
 
 

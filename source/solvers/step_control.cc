@@ -35,7 +35,7 @@ namespace GelMPM
   bool
   StepControl::finished() const
   {
-    return time_ >= settings_.end_time * (1. - relative_time_tolerance);
+    return equilibrium || time_ >= settings_.end_time * (1. - relative_time_tolerance);
   }
 
 
@@ -273,6 +273,35 @@ namespace GelMPM
     noise_step   = 0.;
     error_limit  = 0.;
     retaken_step = 0.;
+  }
+
+
+  bool
+  StepControl::judge_equilibrium(const double step_rate)
+  {
+    rate                   = step_rate;
+    const double last_stop = settings_.stop_times.empty() ? 0. : settings_.stop_times.back();
+    const double t_begin   = time_ - current;
+    const bool   calm      = settings_.end_at_equilibrium > 0. &&
+                      step_rate < settings_.end_at_equilibrium &&
+                      t_begin >= last_stop * (1. - relative_time_tolerance);
+    calm_steps  = calm ? calm_steps + 1 : 0;
+    equilibrium = calm_steps >= 2;
+    return equilibrium;
+  }
+
+
+  bool
+  StepControl::at_equilibrium() const
+  {
+    return equilibrium;
+  }
+
+
+  double
+  StepControl::last_rate() const
+  {
+    return rate;
   }
 
 

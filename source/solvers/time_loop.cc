@@ -2,6 +2,7 @@
 #include <gelmpm/solvers/time_loop.h>
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace GelMPM
@@ -45,6 +46,20 @@ namespace GelMPM
   SteppedModel::bound_step(const double, const double dt) const
   {
     return {dt, ""};
+  }
+
+
+  bool
+  SteppedModel::measures_rate_of_change() const
+  {
+    return false;
+  }
+
+
+  double
+  SteppedModel::rate_of_change(const dealii::Vector<double> &, const double) const
+  {
+    return 0.;
   }
 
 
@@ -158,6 +173,10 @@ namespace GelMPM
                          "asks for an estimate of the step's motion or error, which this model "
                          "does not make",
                          "set it to 0 (its default)");
+    require(!(time_stepping.end_at_equilibrium > 0.) || model.measures_rate_of_change(),
+            "Time stepping/End at equilibrium",
+            "asks for the rate of change of the state, which this model does not measure",
+            "set it to 0 (its default) and give the 'End time' instead");
     // The tolerance rule compares the solution with the predictor, the first iterate: a step so
     // short that the predictor already meets Newton's tolerance would otherwise leave the
     // predictor as the solution, and the estimate would measure nothing.
@@ -197,7 +216,7 @@ namespace GelMPM
         for (auto *observer : observers)
           observer->between_steps();
       }
-    return Outcome::finished;
+    return control_.at_equilibrium() ? Outcome::equilibrium : Outcome::finished;
   }
 
 
@@ -269,11 +288,17 @@ namespace GelMPM
         if (retake)
           continue;
 
+        // Measured on the converged state, before a kick perturbs it and the points move.
+        const double rate =
+          time_stepping.end_at_equilibrium > 0. ? model.rate_of_change(solution, step_dt) : 0.;
         bool perturbed = false;
         for (auto *observer : observers)
           perturbed = observer->before_update(solution, step_dt) || perturbed;
         model.update(solution, t_begin + step_dt);
         control_.accept(report.iterations);
+        // A kicked state is no rest, whatever its step's rate.
+        if (time_stepping.end_at_equilibrium > 0.)
+          control_.judge_equilibrium(perturbed ? std::numeric_limits<double>::infinity() : rate);
         // A perturbation is no motion to continue: the next step starts without a predictor.
         last_dt = perturbed ? 0. : step_dt;
 

@@ -14,7 +14,10 @@
 //    accepted as a jump; the tolerance 0 accepts everything;
 // 6. 'Tolerance': the local error per unit relative time dt / (t + dt) against the tolerance:
 //    retake and the bound on the next step by 0.9 tol dt / (e (t + dt)), the stricter of the
-//    two rules when both are on.
+//    two rules when both are on;
+// 7. 'End at equilibrium': the run is finished after two consecutive steps whose rate is below
+//    the tolerance, not after one, not with a faster step between them, not for steps that
+//    begin before the last stop time, never with the tolerance 0.
 #include <gelmpm/solvers/step_control.h>
 
 #include <cmath>
@@ -313,6 +316,38 @@ main()
     ok                 = ok && !judge_tolerance(fl, 4.5) && close(fl.attempt(), after * 0.2);
     std::cout << "noise sets a floor on the relative step until the estimate resolves the error: "
               << ok << std::endl;
+  }
+  {
+    // 7. Stop time 0.3, tolerance 1e-3: steps 0.1, 0.1, 0.1 (landing on 0.3), then 0.1 each.
+    auto s               = settings();
+    s.caps               = {};
+    s.growth_factor      = 1.;
+    s.end_at_equilibrium = 1e-3;
+    StepControl c(s);
+    const auto  step = [&c](const double rate) {
+      c.attempt();
+      c.accept(8);
+      return c.judge_equilibrium(rate);
+    };
+    // Before the last stop time calm steps do not count, nor does the step that lands on it.
+    bool ok = !step(1e-4) && !step(1e-4) && !step(1e-4) && close(c.time(), 0.3);
+    // One calm step, a faster one, one calm step: not yet.
+    ok = ok && !step(1e-4) && !step(2e-3) && !step(1e-4) && !c.finished();
+    // The second calm step in a row ends the run before the end time.
+    ok = ok && step(5e-4) && c.at_equilibrium() && c.finished() && close(c.time(), 0.7) &&
+         close(c.last_rate(), 5e-4);
+    // Off: a rate of zero never ends the run.
+    s.end_at_equilibrium = 0.;
+    StepControl off(s);
+    for (unsigned int i = 0; i < 8; ++i)
+      {
+        off.attempt();
+        off.accept(8);
+        ok = ok && !off.judge_equilibrium(0.);
+      }
+    ok = ok && !off.finished();
+    std::cout << "equilibrium: two calm steps in a row after the last stop time end the run: " << ok
+              << std::endl;
   }
   return 0;
 }

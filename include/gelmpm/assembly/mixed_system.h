@@ -183,6 +183,13 @@ namespace GelMPM
     largest_displacement_increment(const dealii::Vector<double> &solution) const;
 
     /**
+     * The largest relative change |J_{n+1}/J_n - 1| of a volume point's volume ratio over the
+     * step that ends in @p solution (with the hoop stretch in an axisymmetric scene).
+     */
+    double
+    largest_volume_change(const dealii::Vector<double> &solution) const;
+
+    /**
      * The largest distance |du(x_p) - @p ratio du_p,last| over all material points between the
      * displacement increment of @p solution and the point's increment in the last accepted step
      * scaled by @p ratio = dt / dt_last: the predictor-corrector difference of backward Euler,

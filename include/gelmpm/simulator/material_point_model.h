@@ -67,6 +67,16 @@ namespace GelMPM
     double
     largest_motion_in_cells(const dealii::Vector<double> &solution) const override;
 
+    bool
+    measures_rate_of_change() const override;
+
+    /**
+     * max(largest |J_{n+1}/J_n - 1| of a volume point, largest displacement of a point /
+     * 'Characteristic length') / @p dt.
+     */
+    double
+    rate_of_change(const dealii::Vector<double> &solution, const double dt) const override;
+
     /** The longest step from @p t_begin, at most @p dt, in which no rigid obstacle travels
      * more than Obstacle::largest_travel_in_cells cells of the displacement grid. */
     StepBound

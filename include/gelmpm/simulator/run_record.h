@@ -135,6 +135,11 @@ namespace GelMPM
     void
     record_pore_events();
 
+    /** Whether the run writes events.csv: with a stability analysis that detects an onset or
+     * an observable that has events (as open_files() opens it). */
+    bool
+    writes_events() const;
+
     /** One row of events.csv: @p name at @p t_over_tau_d, of pore @p pore (0: none). */
     void
     write_event(const std::string &name, const double t_over_tau_d, const int pore);

@@ -109,6 +109,10 @@ namespace GelMPM
      */
     int
     stop_on_signal(const int signal, const bool between_steps = true);
+    /** The run that 'Time stepping/End at equilibrium' ended: said, and an event where the
+     * run writes events (its last output and checkpoint are written as at the end time). */
+    void
+    end_at_equilibrium();
     /** The run that cannot converge beyond the current time: said, with why; status 1. */
     int
     stop_on_failure();

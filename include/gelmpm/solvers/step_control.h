@@ -117,7 +117,7 @@ namespace GelMPM
     unsigned int
     step() const;
 
-    /** Whether the end time is reached. */
+    /** Whether the end time or an equilibrium (judge_equilibrium()) is reached. */
     bool
     finished() const;
 
@@ -211,6 +211,24 @@ namespace GelMPM
     void
     accept(const unsigned int newton_iterations);
 
+    /**
+     * 'End at equilibrium': the step just accepted changed the state at @p rate (per tau_d,
+     * SteppedModel::rate_of_change()). Returns whether the run has reached equilibrium: the rate
+     * below the tolerance on this step and on the one before, both beginning at or after the last
+     * of the 'Stop at times' (where the scene's loading may still change). One step alone could
+     * be a short step (landing on a stop time) or a moment of rest between two motions.
+     */
+    bool
+    judge_equilibrium(const double rate);
+
+    /** Whether judge_equilibrium() found the equilibrium (the run is finished). */
+    bool
+    at_equilibrium() const;
+
+    /** The rate of the last step judge_equilibrium() saw. */
+    double
+    last_rate() const;
+
     /** Whether the last accepted step landed on one of the 'Stop at times'. */
     bool
     at_stop_time() const;
@@ -254,7 +272,7 @@ namespace GelMPM
     {
       ar &onset_seen_ &time_ &step_ &proposed &current &attempt_limit &error_limit &retaken_step
         &retaken_excess &first_retake &noise_step &noise_rate &uncontrolled &stable_ &bisecting
-          &unstable_time &bracket_;
+          &unstable_time &bracket_ &calm_steps &equilibrium &rate;
     }
 
   private:
@@ -285,6 +303,9 @@ namespace GelMPM
     bool         bisecting      = false;
     double       unstable_time  = 0.;
     Bracket      bracket_;
+    unsigned int calm_steps  = 0; // consecutive steps below 'End at equilibrium'
+    bool         equilibrium = false;
+    double       rate        = 0.; // of the last step judged
   };
 } // namespace GelMPM
 

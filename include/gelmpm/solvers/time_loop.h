@@ -111,6 +111,22 @@ namespace GelMPM
     virtual StepBound
     bound_step(const double t_begin, const double dt) const;
 
+    /**
+     * Whether rate_of_change() is measured; a loop refuses 'Time stepping/End at equilibrium'
+     * for a model that does not.
+     */
+    virtual bool
+    measures_rate_of_change() const;
+
+    /**
+     * How fast the converged @p solution of a step of @p dt (tau_d) changes the state, per
+     * tau_d and dimensionless, for 'Time stepping/End at equilibrium' (the material points: the
+     * largest relative change of a volume point's J or of a point's position in units of the
+     * 'Characteristic length', divided by @p dt).
+     */
+    virtual double
+    rate_of_change(const dealii::Vector<double> &solution, const double dt) const;
+
     /** The largest displacement of the converged @p solution, in cells of the grid. */
     virtual double
     largest_motion_in_cells(const dealii::Vector<double> &solution) const;
@@ -231,6 +247,7 @@ namespace GelMPM
     enum class Outcome
     {
       finished,     ///< the end time is reached
+      equilibrium,  ///< 'Time stepping/End at equilibrium' found a steady state
       ended_early,  ///< an observer asked for the end (e.g. 'Stability/End at onset')
       out_of_steps, ///< 'Time stepping/Maximum steps' steps were taken
       failed,       ///< the step would fall below the minimum: failure() says why

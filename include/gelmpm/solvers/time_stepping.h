@@ -54,7 +54,14 @@ namespace GelMPM
     /** 'Tolerance' applies to steps that begin before this time (tau_d); 0: the whole run. */
     double tolerance_until = 0.;
     /** 'Tolerance' applies until the first bracketed loss of stability. */
-    bool                                   tolerance_until_onset = false;
+    bool tolerance_until_onset = false;
+    /**
+     * 'End at equilibrium': the run ends once the state's rate of change (the largest relative
+     * change of a volume point's J or displacement in 'Characteristic length' per tau_d over an
+     * accepted step) is below this on two consecutive steps after the last 'Stop at times';
+     * 0: off.
+     */
+    double                                 end_at_equilibrium = 0.;
     std::vector<std::pair<double, double>> caps; // (until time, largest step), sorted
     std::vector<double>                    stop_times;
 
