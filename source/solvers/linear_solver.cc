@@ -31,7 +31,9 @@ namespace GelMPM
                       dealii::Patterns::Selection("automatic|KLU|MUMPS|Krylov"),
                       "Solver for the Newton system: automatic (the default: MUMPS where MUMPS's "
                       "own estimate of its factorisation, from an analysis of the first tangent, "
-                      "fits in 'Automatic memory share' of the memory available, Krylov "
+                      "fits in 'Automatic memory share' of the memory available; MUMPS in "
+                      "single precision (see 'Precision') where only half of it fits and the "
+                      "tangent is symmetric; Krylov "
                       "otherwise, also on several MPI ranks. MUMPS was the faster at every size "
                       "measured, Krylov the smaller in 3D: doc/performance.md, 'Iterative "
                       "solver'), MUMPS (sparse direct, multifrontal, fast "
@@ -282,7 +284,15 @@ namespace GelMPM
     why.precision(3);
     why << "the factorisation's estimate " << estimate / 1e6 << " MB against " << limit / 1e6
         << " MB (" << memory_share << " of " << available / 1e6 << " MB available)";
-    if (available > 0. && estimate > limit)
+    // Single-precision factors take half the memory, and solve as the double ones do wherever
+    // their refinement converges (doc/performance.md, 'Single precision').
+    const bool single_fits = symmetric && estimate / 2. <= limit;
+    if (available > 0. && estimate > limit && single_fits)
+      {
+        precision = SymmetricFactorization::Precision::single_precision;
+        choice    = "MUMPS in single precision: " + why.str() + "; half of it fits";
+      }
+    else if (available > 0. && estimate > limit)
       {
         solver_type = "Krylov";
         choice      = "Krylov: " + why.str();

@@ -2,6 +2,8 @@
 # factorisation against 'Automatic memory share' of the memory available:
 # - on §4.1 (prm/constrained_swelling.prm, 3 steps of 1e-4 tau_d) with the default share it
 #   chooses MUMPS, says so with the estimate, and gives MUMPS's statistics bit for bit;
+# - with a share that holds three quarters of that estimate it chooses MUMPS in single precision
+#   (half the factors' memory), says so, and gives MUMPS's statistics to 1e-6;
 # - with a share so small that no factorisation fits (1e-12) it chooses Krylov, says so, and gives
 #   MUMPS's statistics to 1e-6 of each column's largest value (the Krylov tolerance 1e-8);
 # - on two MPI ranks with that share it chooses Krylov too (all ranks' estimate against the least
@@ -25,6 +27,14 @@ grep -q "automatic: MUMPS.*; MUMPS: the factorisation's estimate [0-9.e+]* MB" c
 check $? "default share: automatic chose MUMPS and said why ($(grep -o 'automatic: [^)]*' chosen_direct.log | head -1))"
 "$compare" --relative 1e-12 mumps/statistics.csv chosen_direct/statistics.csv > direct_compare.log
 check $? "automatic (MUMPS) and MUMPS statistics agree to 1e-12 ($(tail -1 direct_compare.log))"
+# Three quarters of the estimate, from the numbers the direct choice printed.
+share=$(grep -o "estimate [0-9.e+]* MB against [0-9.e+]* MB ([0-9.e+]* of [0-9.e+]* MB" chosen_direct.log |
+  head -1 | awk '{ print 0.75 * $2 / $9 }')
+run chosen_single --set "Linear solver/Automatic memory share=${share:-0}"
+grep -q "automatic: MUMPS LDL^T.*single precision.*; MUMPS in single precision: the factorisation's estimate .*half of it fits" chosen_single.log
+check $? "share ${share:-none}: automatic chose single precision and said why ($(grep -o 'MUMPS in single precision: [^)]*)' chosen_single.log | head -1))"
+"$compare" --relative 1e-6 --newton 1 mumps/statistics.csv chosen_single/statistics.csv > single_compare.log
+check $? "automatic (single precision) and MUMPS statistics agree to 1e-6 ($(tail -1 single_compare.log))"
 run chosen_krylov --set "Linear solver/Automatic memory share=1e-12"
 grep -q "automatic: GMRES with AMG and Schur; Krylov: the factorisation's estimate" chosen_krylov.log
 check $? "share 1e-12: automatic chose Krylov and said why"
