@@ -19,9 +19,57 @@
 #include <deal.II/base/mpi.h>
 
 #include <iostream>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace
 {
+  /**
+   * Without a scene, --print-parameters shows one subsection of each kind that a scene names
+   * (a boundary piece, a material region, an obstacle), under a placeholder name.
+   */
+  GelMPM::SceneStructure
+  template_structure()
+  {
+    GelMPM::SceneStructure structure;
+    structure.boundary_pieces  = {"<piece>"};
+    structure.material_regions = {"<region>"};
+    structure.obstacles        = {"<obstacle>"};
+    return structure;
+  }
+
+
+  /**
+   * @p listing (print_parameters_with_patterns() of the template_structure()) with a comment
+   * above each placeholder subsection that says it is a template and where its name comes from.
+   */
+  std::string
+  mark_templates(const std::string &listing)
+  {
+    const std::vector<std::pair<std::string, std::string>> notes = {
+      {"<piece>", "'Boundary conditions/Pieces'"},
+      {"<region>", "'Material/Regions'"},
+      {"<obstacle>", "'Contact/Obstacles'"}};
+    std::istringstream in(listing);
+    std::ostringstream out;
+    for (std::string line; std::getline(in, line);)
+      {
+        const auto indent = line.find_first_not_of(' ');
+        for (const auto &[name, list] : notes)
+          if (indent != std::string::npos && line.substr(indent) == "subsection " + name)
+            out << line.substr(0, indent) << "# TEMPLATE: one subsection like this per name in "
+                << list << ", named\n"
+                << line.substr(0, indent) << "# by it ('" << name
+                << "' stands for the name); 'gelmpm --print-parameters scene.prm'\n"
+                << line.substr(0, indent) << "# lists a scene's own.\n";
+        out << line << '\n';
+      }
+    return out.str();
+  }
+
+
   template <int dim>
   int
   run_scene(const GelMPM::CommandLine &cl, const GelMPM::SceneStructure &structure)
@@ -33,7 +81,9 @@ namespace
 
     if (cl.print_parameters)
       {
-        GelMPM::print_parameters_with_patterns(prm, std::cout);
+        std::ostringstream listing;
+        GelMPM::print_parameters_with_patterns(prm, listing);
+        std::cout << (cl.scene_file.empty() ? mark_templates(listing.str()) : listing.str());
         return 0;
       }
 
@@ -78,7 +128,7 @@ main(int argc, char **argv)
           return 0;
         }
       const auto structure = cl.scene_file.empty()
-                               ? GelMPM::SceneStructure()
+                               ? template_structure()
                                : GelMPM::SceneStructure::read(cl.scene_file, cl.overrides);
       return structure.dimension == 2 ? run_scene<2>(cl, structure) : run_scene<3>(cl, structure);
     }

@@ -8,13 +8,33 @@
 #include <iomanip>
 #include <limits>
 #include <sstream>
+#include <tuple>
 
 namespace GelMPM
 {
+  namespace
+  {
+    /**
+     * What a point's initial @p measure ("area" or "volume") is in a table: in 2D per unit
+     * thickness in plane strain, the revolved one (2 pi R times the meridian's) in an
+     * axisymmetric scene.
+     */
+    std::string
+    area_name(const int dim, const bool axisymmetric, const std::string &measure)
+    {
+      if (dim == 3)
+        return measure;
+      return axisymmetric ? "revolved " + measure + " (2 pi R times the meridian's)"
+                          : measure + " per unit thickness";
+    }
+  } // namespace
+
+
   template <int dim>
   std::string
   piece_table(const dealii::Particles::ParticleHandler<dim> &particles,
               const std::vector<std::string>                &piece_names,
+              const bool                                     axisymmetric,
               const MPI_Comm                                 communicator)
   {
     using Layout = PropertyLayout<dim>;
@@ -56,7 +76,7 @@ namespace GelMPM
     for (const auto &name : piece_names)
       width = std::max(width, name.size());
     std::ostringstream out;
-    out << "  boundary pieces (initial area" << (dim == 2 ? " per unit thickness" : "")
+    out << "  boundary pieces (initial " << area_name(dim, axisymmetric, "area")
         << "; range of each component of the initial normal):\n";
     for (unsigned int row = 0; row < n_rows; ++row)
       {
@@ -78,12 +98,78 @@ namespace GelMPM
   }
 
 
+  template <int dim>
+  std::string
+  region_table(const dealii::Particles::ParticleHandler<dim> &particles,
+               const MaterialRegions<dim>                    &regions,
+               const bool                                     axisymmetric,
+               const MPI_Comm                                 communicator)
+  {
+    if (regions.size() < 2)
+      return "";
+    std::vector<double> count(regions.size(), 0.), volume(regions.size(), 0.);
+    for (const auto &p : particles)
+      {
+        const auto props = p.get_properties();
+        if (kind_of(props) != PointKind::volume)
+          continue;
+        const unsigned int region = region_of_point<dim>(props);
+        count[region] += 1.;
+        volume[region] += props[PropertyLayout<dim>::measure_0];
+      }
+    dealii::Utilities::MPI::sum(count, communicator, count);
+    dealii::Utilities::MPI::sum(volume, communicator, volume);
+
+    std::size_t width = 8;
+    for (unsigned int k = 0; k < regions.size(); ++k)
+      width = std::max(width, regions.name(k).size());
+    std::ostringstream out;
+    out << "  material regions (volume points, initial " << area_name(dim, axisymmetric, "volume")
+        << "; constants that differ from the section 'Material', its value in parentheses):\n";
+    const auto &base = regions[0];
+    for (unsigned int k = 0; k < regions.size(); ++k)
+      {
+        const auto &gel = regions[k];
+        out << "    " << std::left << std::setw(width) << regions.name(k) << std::right
+            << std::setw(8) << static_cast<unsigned long>(count[k]) << " points  volume "
+            << std::setw(10) << std::setprecision(5) << volume[k];
+        std::string separator = "  ";
+        for (const auto &[name, value, base_value] :
+             {std::make_tuple("G", gel.shear_modulus(), base.shear_modulus()),
+              std::make_tuple("N nu", gel.N_nu(), base.N_nu()),
+              std::make_tuple("chi", gel.chi(), base.chi()),
+              std::make_tuple("D", gel.diffusivity(), base.diffusivity()),
+              std::make_tuple("lambda_0", gel.lambda_0(), base.lambda_0())})
+          if (value != base_value)
+            {
+              out << separator << name << " " << std::setprecision(6) << value << " (" << base_value
+                  << ")";
+              separator = ", ";
+            }
+        out << '\n';
+      }
+    return out.str();
+  }
+
+
   template std::string
   piece_table<2>(const dealii::Particles::ParticleHandler<2> &,
                  const std::vector<std::string> &,
+                 const bool,
                  const MPI_Comm);
   template std::string
   piece_table<3>(const dealii::Particles::ParticleHandler<3> &,
                  const std::vector<std::string> &,
+                 const bool,
                  const MPI_Comm);
+  template std::string
+  region_table<2>(const dealii::Particles::ParticleHandler<2> &,
+                  const MaterialRegions<2> &,
+                  const bool,
+                  const MPI_Comm);
+  template std::string
+  region_table<3>(const dealii::Particles::ParticleHandler<3> &,
+                  const MaterialRegions<3> &,
+                  const bool,
+                  const MPI_Comm);
 } // namespace GelMPM

@@ -142,8 +142,10 @@ namespace GelMPM
   void
   Simulator<dim>::print_piece_table() const
   {
+    const bool        axisymmetric = scene.grid.axisymmetric;
     const std::string table =
-      piece_table(scene.particles, structure.boundary_pieces, scene.communicator);
+      piece_table(scene.particles, structure.boundary_pieces, axisymmetric, scene.communicator) +
+      region_table(scene.particles, scene.regions, axisymmetric, scene.communicator);
     pcout << table;
   }
 

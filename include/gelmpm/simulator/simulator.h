@@ -72,7 +72,8 @@ namespace GelMPM
     /**
      * The table of the boundary pieces: surface points, initial area and the range of each
      * component of the initial normal, so that a selector that takes the wrong points shows at
-     * once (printed by run() and by `gelmpm --check`).
+     * once; with material regions, theirs: volume points, initial volume and the constants that
+     * differ from the section 'Material' (printed by run() and by `gelmpm --check`).
      */
     void
     print_piece_table() const;
