@@ -111,6 +111,66 @@ namespace GelMPM
     // extrapolation of the extended B-splines is not exact (doc/axisymmetric.md).
     if (axisymmetric_)
       inexact_extrapolation_tolerated = true;
+    if (grid.refined())
+      build_hierarchies(grid);
+  }
+
+
+  template <int dim>
+  void
+  DiscreteSpaces<dim>::build_hierarchies(const BackgroundGrid<dim> &grid)
+  {
+    // The marking is made on the grid of cell pairs (BackgroundGrid::refined_pair_cells()),
+    // which is mu's grid with subdivision; u's refined cells are their halves.
+    std::array<unsigned int, dim> pairs;
+    for (unsigned int d = 0; d < dim; ++d)
+      pairs[d] = grid.n_cells[d] / 2;
+    const auto pair_cells = grid.refined_pair_cells();
+    auto       pair_hierarchy =
+      std::make_unique<HierarchicalBSplineSpace<dim>>(settings_.chemical_potential_degree,
+                                                      grid.lower,
+                                                      grid.upper,
+                                                      pairs,
+                                                      pair_cells);
+    const auto u_cells = subdivision_refinement(*pair_hierarchy);
+    u_hierarchy_ = std::make_unique<HierarchicalBSplineSpace<dim>>(settings_.displacement_degree,
+                                                                   grid.lower,
+                                                                   grid.upper,
+                                                                   grid.n_cells,
+                                                                   u_cells);
+    if (settings_.subdivision)
+      mu_hierarchy_ = std::move(pair_hierarchy);
+    else
+      mu_hierarchy_ =
+        std::make_unique<HierarchicalBSplineSpace<dim>>(settings_.chemical_potential_degree,
+                                                        grid.lower,
+                                                        grid.upper,
+                                                        grid.n_cells,
+                                                        u_cells);
+  }
+
+
+  template <int dim>
+  bool
+  DiscreteSpaces<dim>::refined() const
+  {
+    return u_hierarchy_ != nullptr;
+  }
+
+
+  template <int dim>
+  const HierarchicalBSplineSpace<dim> &
+  DiscreteSpaces<dim>::u_hierarchy() const
+  {
+    return *u_hierarchy_;
+  }
+
+
+  template <int dim>
+  unsigned int
+  DiscreteSpaces<dim>::n_mu_control_points() const
+  {
+    return refined() ? mu_hierarchy_->n_active_functions() : mu_space_.n_functions();
   }
 
 
@@ -138,6 +198,64 @@ namespace GelMPM
       }
     std::sort(unknowns.begin(), unknowns.end());
     return unknowns;
+  }
+
+
+  template <int dim>
+  bool
+  DiscreteSpaces<dim>::reinit(const std::vector<bool> &u_cell_has_material,
+                              const std::vector<bool> &u_leaf_has_material)
+  {
+    if (!refined())
+      return reinit(u_cell_has_material);
+    if (u_ && mu_ && u_cell_has_material == u_cell_has_material_ &&
+        u_leaf_has_material == u_leaf_has_material_)
+      return false;
+    u_cell_has_material_ = u_cell_has_material;
+    u_leaf_has_material_ = u_leaf_has_material;
+    std::vector<bool> mu_has_material(mu_space_.n_cells(), false);
+    for (unsigned int c = 0; c < u_cell_has_material.size(); ++c)
+      if (u_cell_has_material[c])
+        mu_has_material[mu_cell_of(c)] = true;
+    // A u leaf lies in the mu leaf of its centre (mu is one level coarser, or the same grid).
+    std::vector<bool> mu_leaf_has_material(mu_hierarchy_->n_leaf_cells(), false);
+    for (unsigned int leaf = 0; leaf < u_leaf_has_material.size(); ++leaf)
+      if (u_leaf_has_material[leaf])
+        {
+          const auto &[level, cell] = u_hierarchy_->leaf_cell(leaf);
+          const auto        &space  = u_hierarchy_->level_space(level);
+          const auto         index  = space.cell_multi_index(cell);
+          dealii::Point<dim> centre;
+          for (unsigned int d = 0; d < dim; ++d)
+            centre[d] = space.basis_1d(d).x_min() + (index[d] + 0.5) * space.cell_size(d);
+          mu_leaf_has_material[mu_hierarchy_->leaf_cell_containing(centre)] = true;
+        }
+    try
+      {
+        u_  = std::make_unique<ExtendedBSplineSpace<dim>>(*u_hierarchy_,
+                                                         u_cell_has_material,
+                                                         u_leaf_has_material,
+                                                         settings_.extension,
+                                                         !inexact_extrapolation_tolerated);
+        mu_ = std::make_unique<ExtendedBSplineSpace<dim>>(*mu_hierarchy_,
+                                                          mu_has_material,
+                                                          mu_leaf_has_material,
+                                                          settings_.extension,
+                                                          !inexact_extrapolation_tolerated);
+      }
+    catch (const std::runtime_error &e)
+      {
+        u_.reset();
+        mu_.reset();
+        throw InputError("Background grid/Refinement boxes",
+                         std::string("refines cells that the extended B-splines do not support "
+                                     "yet (") +
+                           e.what() + ")",
+                         "keep the boxes inside the body, about 2(q+1) cells away from its "
+                         "boundary (also as it deforms), or set 'Discretisation/Extended "
+                         "B-splines = false'");
+      }
+    return true;
   }
 
 
@@ -233,6 +351,21 @@ namespace GelMPM
   DiscreteSpaces<dim>::u_dof_greville_points() const
   {
     std::vector<double> points(n_u_dofs(), 0.);
+    if (refined())
+      {
+        for (unsigned int i = 0; i < u_hierarchy_->n_active_functions(); ++i)
+          {
+            const unsigned int dof = u_->dof_of_control_point(i);
+            if (dof == dealii::numbers::invalid_unsigned_int)
+              continue;
+            const auto &[level, function] = u_hierarchy_->active_function(i);
+            const auto &space             = u_hierarchy_->level_space(level);
+            const auto  index             = space.function_multi_index(function);
+            for (unsigned int d = 0; d < dim; ++d)
+              points[dim * dof + d] = space.basis_1d(d).greville(index[d]);
+          }
+        return points;
+      }
     for (unsigned int i = 0; i < u_space_.n_functions(); ++i)
       {
         const unsigned int dof = u_->dof_of_control_point(i);
@@ -274,6 +407,8 @@ namespace GelMPM
   double
   DiscreteSpaces<dim>::h_u() const
   {
+    if (refined())
+      return smallest_cell_size(u_hierarchy_->level_space(u_hierarchy_->n_levels() - 1));
     return smallest_cell_size(u_space_);
   }
 
@@ -282,6 +417,8 @@ namespace GelMPM
   double
   DiscreteSpaces<dim>::h_mu() const
   {
+    if (refined())
+      return smallest_cell_size(mu_hierarchy_->level_space(mu_hierarchy_->n_levels() - 1));
     return smallest_cell_size(mu_space_);
   }
 

@@ -79,7 +79,8 @@ namespace GelMPM
     // On several ranks the rows' owners follow the cells' holders too (a repartition).
     auto couplings = terms.cell_couplings(cache);
     bool new_pattern =
-      cache.classification() != pattern_classification || couplings != pattern_couplings ||
+      cache.classification() != pattern_classification || cache.leaf_classification_changed() ||
+      couplings != pattern_couplings ||
       (Collective::is_parallel(communicator) && cache.cell_holder() != pattern_holder);
     if (Collective::is_parallel(communicator))
       {
@@ -102,8 +103,9 @@ namespace GelMPM
         projection.forget_patterns();
         // Only now: a setup that throws on the way leaves the next one to rebuild the pattern.
         pattern_classification = cache.classification();
-        pattern_holder         = cache.cell_holder();
-        pattern_couplings      = std::move(couplings);
+        cache.pattern_follows_leaves();
+        pattern_holder    = cache.cell_holder();
+        pattern_couplings = std::move(couplings);
       }
     return new_pattern;
   }

@@ -95,6 +95,10 @@ namespace GelMPM
     std::vector<double> holder(u_space.n_cells(), 0.);
     const double        this_rank = dealii::Utilities::MPI::this_mpi_process(communicator);
     std::string         failure;
+    // Refined grids (one rank): the leaf cells with volume points decide the unknowns too.
+    std::vector<bool> leaf_has_material;
+    if (spaces.refined())
+      leaf_has_material.assign(spaces.u_hierarchy().n_leaf_cells(), false);
     for (const auto &particle : particle_handler)
       {
         const Point<dim> x = particle.get_location();
@@ -111,7 +115,11 @@ namespace GelMPM
             break;
           }
         if (kind_of(particle.get_properties()) == PointKind::volume)
-          holder[cell] = this_rank + 1.;
+          {
+            holder[cell] = this_rank + 1.;
+            if (!leaf_has_material.empty())
+              leaf_has_material[spaces.u_hierarchy().leaf_cell_containing(x)] = true;
+          }
       }
     Collective::agree_on_failure<std::runtime_error>(communicator, failure);
     // The volume points of a cell are all on the rank that owns the cell: the sum over the ranks
@@ -125,9 +133,10 @@ namespace GelMPM
           has_material[c] = true;
           cell_holder_[c] = static_cast<unsigned int>(holder[c]) - 1;
         }
-    spaces.reinit(has_material);
-    n_active_cells_ = std::count(has_material.begin(), has_material.end(), true);
-    classification_ = std::move(has_material);
+    spaces.reinit(has_material, leaf_has_material);
+    n_active_cells_      = std::count(has_material.begin(), has_material.end(), true);
+    classification_      = std::move(has_material);
+    leaf_classification_ = std::move(leaf_has_material);
   }
 
 

@@ -123,15 +123,30 @@ namespace GelMPM
         for (const unsigned int f : hierarchy->leaf_functions(leaf))
           touched[f] = true;
 
-    // A level-0 boundary control point is extrapolated only from active, untruncated B-splines;
-    // otherwise it keeps a DoF of its own (the plain B-spline, as with the extension off).
+    // The extension is built on level 0 only: a refined cell must be an interior cell, and a
+    // boundary control point is extrapolated from active, untruncated B-splines of level 0.
+    const auto refuse = [](const std::string &what) {
+      throw std::runtime_error(
+        "extended B-splines on a refined grid: " + what +
+        "; the extension is built on the base grid only, so the refined region must stay "
+        "away from the cells cut by the body's boundary (about 2(q+1) cells)");
+    };
+    if (use_extension)
+      for (unsigned int cell = 0; cell < space_.n_cells(); ++cell)
+        if (hierarchy->is_refined(0, cell) && cell_kinds[cell] != CellKind::interior)
+          refuse(std::string("a refined cell is ") + (cell_kinds[cell] == CellKind::boundary
+                                                        ? "cut by the body's boundary"
+                                                        : "outside the body"));
     const auto extrapolated = [&](const unsigned int i) {
-      if (!use_extension || point_kinds[i] != ControlPointKind::boundary || reaches_refined_cell(i))
+      if (!use_extension || point_kinds[i] != ControlPointKind::boundary)
         return false;
+      bool untruncated = !reaches_refined_cell(i);
       for (const auto &[j, E] : weights[i])
-        if (hierarchy->active_function_number(0, j) == dealii::numbers::invalid_unsigned_int ||
-            reaches_refined_cell(j))
-          return false;
+        untruncated &=
+          hierarchy->active_function_number(0, j) != dealii::numbers::invalid_unsigned_int &&
+          !reaches_refined_cell(j);
+      if (!untruncated)
+        refuse("a boundary control point is extrapolated from functions of the refined region");
       return true;
     };
 

@@ -16,6 +16,46 @@
 
 namespace GelMPM
 {
+  namespace
+  {
+    /**
+     * A volume point of the uniform grid's sub-cell at @p x (volume @p volume) in a cell refined
+     * @p level times: 2^level children per direction at the centres of the sub-cell's parts,
+     * each with volume / 2^(dim level), so that the points per cell are the scene's at every
+     * level. The division by a power of two is exact: the children's volumes sum to the
+     * parent's bit for bit. At creation a point's history is its initial state, which each
+     * child takes as the parent would.
+     */
+    template <int dim, typename Insert>
+    void
+    split_volume_point(const dealii::Point<dim>  &x,
+                       const double               volume,
+                       const unsigned int         level,
+                       const BackgroundGrid<dim> &grid,
+                       const unsigned int         points_per_cell,
+                       const Insert              &insert)
+    {
+      const unsigned int parts      = 1u << level;
+      unsigned int       n_children = 1;
+      for (unsigned int d = 0; d < dim; ++d)
+        n_children *= parts;
+      const double child_volume = volume / n_children;
+      for (unsigned int k = 0; k < n_children; ++k)
+        {
+          dealii::Point<dim> child;
+          unsigned int       rest = k;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              const double sub = grid.cell_size(d) / points_per_cell;
+              child[d]         = x[d] - 0.5 * sub + ((rest % parts) + 0.5) * sub / parts;
+              rest /= parts;
+            }
+          insert(child, child_volume, "");
+        }
+    }
+  } // namespace
+
+
   template <int dim>
   void
   MaterialPointGenerator<dim>::declare_parameters(dealii::ParameterHandler &prm)
@@ -374,8 +414,18 @@ namespace GelMPM
                   x[d] = grid.lower[d] + (ic + (is + 0.5) / n) * grid.cell_size(d);
                 }
               in_boxes |= body.inside_boxes(x);
-              if (body.inside(x))
+              if (!body.inside(x))
+                continue;
+              const unsigned int level = grid.refinement_level(x);
+              if (level == 0)
                 insert_volume_point(x, sub_volume, "");
+              else
+                split_volume_point<dim>(x,
+                                        sub_volume,
+                                        level,
+                                        grid,
+                                        points_per_cell,
+                                        insert_volume_point);
             }
         body.check_volume_points(next_id, in_boxes, n_cells * n_sub);
       }

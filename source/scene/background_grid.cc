@@ -4,8 +4,10 @@
 #include <gelmpm/core/round_off.h>
 #include <gelmpm/scene/background_grid.h>
 
+#include <deal.II/base/utilities.h>
 #include <deal.II/grid/grid_generator.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <unistd.h>
@@ -42,6 +44,21 @@ namespace GelMPM
                       "and area is that of the revolved body (2 pi R), and u_r = 0 on the axis. "
                       "The grid's 'Lower corner' must then have x = 0: its left edge is the axis "
                       "(doc/axisymmetric.md).");
+    prm.declare_entry("Refinement boxes",
+                      "",
+                      Patterns::Anything(),
+                      "Boxes where the background grid is refined, each 'lower corner : upper "
+                      "corner' (coordinates separated by commas), boxes separated by ';', e.g. "
+                      "'0, 0.75 : 0.2, 1.05'. Every cell pair (cell size 2h, the chemical "
+                      "potential's grid with subdivision) that overlaps a box is halved, "
+                      "'Refinement levels' times; the displacement grid is halved with it, so that "
+                      "mu stays one level coarser than u (truncated hierarchical B-splines, "
+                      "doc/architecture.md). Volume points are as many per cell at every level. "
+                      "2D, one rank, direct solver only. Empty: the uniform grid.");
+    prm.declare_entry("Refinement levels",
+                      "1",
+                      Patterns::Integer(1, 4),
+                      "How many times the cells in 'Refinement boxes' are halved.");
     prm.leave_subsection();
   }
 
@@ -55,6 +72,8 @@ namespace GelMPM
     const auto hi = get_double_list(prm, "Upper corner", "Background grid/Upper corner", dim);
     const auto n  = get_double_list(prm, "Cells", "Background grid/Cells", dim);
     axisymmetric  = prm.get("Coordinate system") == "axisymmetric";
+    const std::string refinement_text = prm.get("Refinement boxes");
+    refinement_levels                 = prm.get_integer("Refinement levels");
     prm.leave_subsection();
     require(!axisymmetric || dim == 2,
             "Background grid/Coordinate system",
@@ -79,6 +98,154 @@ namespace GelMPM
                 "is not above 'Lower corner' in direction " + std::to_string(d),
                 "give an upper corner larger than the lower corner in every coordinate");
       }
+    parse_refinement_boxes(refinement_text);
+  }
+
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::parse_refinement_boxes(const std::string &text)
+  {
+    const std::string entry = "Background grid/Refinement boxes";
+    refinement_boxes.clear();
+    for (const auto &item : dealii::Utilities::split_string_list(text, ';'))
+      {
+        const auto corners = dealii::Utilities::split_string_list(item, ':');
+        require(corners.size() == 2,
+                entry,
+                "has the item '" + item + "' that is not 'lower corner : upper corner'",
+                "write e.g. '0, 0.75 : 0.2, 1.05'");
+        std::pair<dealii::Point<dim>, dealii::Point<dim>> box;
+        for (unsigned int end = 0; end < 2; ++end)
+          {
+            const auto numbers = dealii::Utilities::split_string_list(corners[end], ',');
+            require(numbers.size() == dim,
+                    entry,
+                    "has the corner '" + corners[end] + "' without " + std::to_string(dim) +
+                      " coordinates",
+                    "give one coordinate per direction, separated by commas");
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                double value = 0.;
+                try
+                  {
+                    value = dealii::Utilities::string_to_double(numbers[d]);
+                  }
+                catch (...)
+                  {
+                    throw InputError(entry,
+                                     "has the coordinate '" + numbers[d] + "' that is not a number",
+                                     "give numbers, e.g. '0, 0.75 : 0.2, 1.05'");
+                  }
+                (end == 0 ? box.first : box.second)[d] = value;
+              }
+          }
+        for (unsigned int d = 0; d < dim; ++d)
+          require(box.second[d] > box.first[d],
+                  entry,
+                  "has the box '" + item + "' whose upper corner is not above its lower corner",
+                  "list the lower corner first");
+        refinement_boxes.push_back(box);
+      }
+    if (refinement_boxes.empty())
+      {
+        refinement_levels = 0;
+        return;
+      }
+    require(dim == 2,
+            entry,
+            "refines a 3D grid, which the refined path does not run yet",
+            "remove 'Refinement boxes' (refined grids are 2D for now)");
+    require(!axisymmetric,
+            entry,
+            "refines an axisymmetric grid, which the refined path does not run yet",
+            "remove 'Refinement boxes' or use 'Coordinate system = Cartesian'");
+    for (unsigned int d = 0; d < dim; ++d)
+      require(n_cells[d] % 2 == 0,
+              entry,
+              "needs an even number of cells in every direction ('Background grid/Cells'): "
+              "cells are refined in pairs",
+              "use an even number of cells in every direction");
+  }
+
+
+  template <int dim>
+  bool
+  BackgroundGrid<dim>::refined() const
+  {
+    return refinement_levels > 0;
+  }
+
+
+  template <int dim>
+  std::vector<std::vector<unsigned int>>
+  BackgroundGrid<dim>::refined_pair_cells() const
+  {
+    std::vector<std::vector<unsigned int>> refined(refinement_levels);
+    for (unsigned int l = 0; l < refinement_levels; ++l)
+      {
+        std::array<unsigned int, dim> n;
+        unsigned int                  n_total = 1;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            n[d] = n_cells[d] / 2 * (1u << l);
+            n_total *= n[d];
+          }
+        for (unsigned int c = 0; c < n_total; ++c)
+          {
+            dealii::Point<dim> lo, hi;
+            unsigned int       rest = c;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                const unsigned int i = rest % n[d];
+                rest /= n[d];
+                const double h = (upper[d] - lower[d]) / n[d];
+                lo[d]          = lower[d] + i * h;
+                hi[d]          = lower[d] + (i + 1) * h;
+              }
+            for (const auto &[box_lo, box_hi] : refinement_boxes)
+              {
+                bool overlaps = true;
+                for (unsigned int d = 0; d < dim; ++d)
+                  overlaps &= lo[d] < box_hi[d] && box_lo[d] < hi[d];
+                if (overlaps)
+                  {
+                    refined[l].push_back(c);
+                    break;
+                  }
+              }
+          }
+      }
+    return refined;
+  }
+
+
+  template <int dim>
+  unsigned int
+  BackgroundGrid<dim>::refinement_level(const dealii::Point<dim> &x) const
+  {
+    // A cell that overlaps a box has a parent that does: the first level whose cell at x does
+    // not overlap one is the leaf's.
+    for (unsigned int l = 0; l < refinement_levels; ++l)
+      {
+        bool overlaps = false;
+        for (const auto &[box_lo, box_hi] : refinement_boxes)
+          {
+            bool inside = true;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                const double       h = 2. * cell_size(d) / (1u << l);
+                const unsigned int n = n_cells[d] / 2 * (1u << l);
+                const unsigned int i =
+                  std::min(n - 1, static_cast<unsigned int>(std::max(0., (x[d] - lower[d]) / h)));
+                inside &= lower[d] + i * h < box_hi[d] && box_lo[d] < lower[d] + (i + 1) * h;
+              }
+            overlaps |= inside;
+          }
+        if (!overlaps)
+          return l;
+      }
+    return refinement_levels;
   }
 
 

@@ -23,8 +23,8 @@ namespace GelMPM
     , newton(newton)
     , characteristic_length(characteristic_length)
     , timer(timer)
-    , mu_coefficients(scene.spaces->mu_space().n_functions(), scene.material.mu_0())
-    , mu_known(scene.spaces->mu_space().n_functions(), true)
+    , mu_coefficients(scene.spaces->n_mu_control_points(), scene.material.mu_0())
+    , mu_known(scene.spaces->n_mu_control_points(), true)
   {}
 
 

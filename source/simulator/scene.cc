@@ -68,6 +68,54 @@ namespace GelMPM
     for (auto &obstacle : obstacles)
       obstacle.check_inside_grid(grid.lower, grid.upper);
     check_points_per_cell();
+    check_refinement_supported(prm);
+  }
+
+
+  template <int dim>
+  void
+  Scene<dim>::check_refinement_supported(dealii::ParameterHandler &prm) const
+  {
+    if (!grid.refined())
+      return;
+    const std::string not_yet = "is used with 'Background grid/Refinement boxes', but the refined "
+                                "grid does not run ";
+    const std::string fix     = " (refined grids run 2D scenes on one rank with the direct "
+                                "solver for now), or remove 'Background grid/Refinement boxes'";
+    require(dealii::Utilities::MPI::n_mpi_processes(communicator) == 1,
+            "Background grid/Refinement boxes",
+            "refines the grid of a run on several MPI ranks, which the refined grid does not "
+            "run yet",
+            "run on one rank, or remove 'Refinement boxes'");
+    prm.enter_subsection("Linear solver");
+    const std::string solver = prm.get("Solver");
+    prm.leave_subsection();
+    // 'automatic' may choose the Krylov solver, whose geometric multigrid knows uniform grids only.
+    require(solver == "MUMPS" || solver == "KLU",
+            "Linear solver/Solver",
+            "is '" + solver +
+              "' with 'Background grid/Refinement boxes', but the refined grid "
+              "runs with a direct solver only (the Krylov solver's geometric multigrid does not "
+              "know the levels yet)",
+            "set 'Solver = MUMPS' (or KLU)" + fix);
+    prm.enter_subsection("Checkpoint");
+    const bool checkpoints =
+      prm.get_integer("Interval steps") > 0 || prm.get_double("Interval minutes") > 0.;
+    prm.leave_subsection();
+    require(!checkpoints,
+            "Checkpoint/Interval steps",
+            not_yet + "from a checkpoint yet",
+            "set 'Interval steps' and 'Interval minutes' to 0" + fix);
+    prm.enter_subsection("Stability");
+    const bool stability = prm.get_bool("Inertia") || prm.get_integer("Schur eigenvalues") > 0 ||
+                           prm.get_bool("Inf-sup constant") ||
+                           prm.get("Onset criterion") == "drained";
+    prm.leave_subsection();
+    require(!stability,
+            "Stability/Inertia",
+            not_yet + "the stability analysis yet (Inertia, Schur eigenvalues, Inf-sup "
+                      "constant, Onset criterion = drained)",
+            "switch the stability analysis off" + fix);
   }
 
 

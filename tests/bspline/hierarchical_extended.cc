@@ -1,15 +1,18 @@
 // Extended B-splines on a locally refined grid (ExtendedBSplineSpace over a
-// HierarchicalBSplineSpace), 2D, q = 1, 2, 3: a grid-aligned box body [0, 0.2] x [0, 0.5] in a
-// [0, 0.4] x [0, 0.8] grid of 8 x 16 cells, with a band under the body's top refined once or
-// twice (level 1: rows 7-10 of level 0, columns 0-5, into the cells above the body; level 2:
-// rows 18-19 of level 1, columns 0-7). A leaf cell holds material when its centre lies in the
-// body.
+// HierarchicalBSplineSpace), 2D, q = 1, 2, 3: a grid-aligned box body [0, 0.5]^2 in a [0, 0.8]^2
+// grid of 16 x 16 cells, refined once or twice in two bands: one across the body's top (level-0
+// rows 8-11, columns 0-12, into the cells above the body; level-1 rows 18-19, columns 0-15),
+// with the extension off (plain B-splines at every level), and one inside the body (level-0 rows
+// 1-3, columns 0-3; level-1 rows 4-5, columns 0-5), with the extension on. A leaf cell holds
+// material when its centre lies in the body.
 // - At 3000 random points of the body, evaluated in their level-0 cell (the space finds the leaf),
 //   the extended functions sum to 1 within 1e-12 and their gradients to 0 within 1e-10 / h_min.
 // - Across the faces between leaf cells of different levels and between level-0 cells, a field
 //   with random coefficients is continuous: |f(p - e n) - f(p + e n)| < 1e-5 for e = 1e-9.
 // - Without refinement, the hierarchical path gives the uniform extended space exactly: the same
 //   DoFs per cell and the same values (difference 0).
+// - The top band with the extension on is refused (std::runtime_error): the extension is built
+//   on level 0 only.
 // - Control: a leaf function dropped from the cell lists (the sum without the last DoF of each
 //   refined cell) is off by more than 1e-3 somewhere.
 // Run with --figures to print the measured maxima.
@@ -18,9 +21,11 @@
 
 #include <deal.II/base/numbers.h>
 
+#include <array>
 #include <cmath>
 #include <iostream>
 #include <random>
+#include <stdexcept>
 #include <string>
 
 using namespace dealii;
@@ -31,7 +36,8 @@ namespace
   bool all_ok  = true;
   bool figures = false;
 
-  const Point<2> lower(0., 0.), upper(0.4, 0.8), body_upper(0.2, 0.5);
+  const Point<2>                    lower(0., 0.), upper(0.8, 0.8), body_upper(0.5, 0.5);
+  const std::array<unsigned int, 2> n_cells{{16, 16}};
 
   bool
   in_body(const Point<2> &p)
@@ -50,17 +56,15 @@ namespace
   }
 
   std::vector<std::vector<unsigned int>>
-  band(const unsigned int levels)
+  band(const unsigned int levels, const bool top)
   {
+    // {first row, last row, last column} per level; the first column is 0.
+    const unsigned int rows[2][2][3] = {{{1, 3, 3}, {4, 5, 5}}, {{8, 11, 12}, {18, 19, 15}}};
     std::vector<std::vector<unsigned int>> refined(levels);
-    if (levels >= 1)
-      for (unsigned int j = 7; j <= 10; ++j)
-        for (unsigned int i = 0; i <= 5; ++i)
-          refined[0].push_back(j * 8 + i);
-    if (levels >= 2)
-      for (unsigned int j = 18; j <= 19; ++j)
-        for (unsigned int i = 0; i <= 7; ++i)
-          refined[1].push_back(j * 16 + i);
+    for (unsigned int l = 0; l < levels; ++l)
+      for (unsigned int j = rows[top][l][0]; j <= rows[top][l][1]; ++j)
+        for (unsigned int i = 0; i <= rows[top][l][2]; ++i)
+          refined[l].push_back(j * (n_cells[0] << l) + i);
     return refined;
   }
 
@@ -103,9 +107,9 @@ namespace
   };
 
   void
-  check(const unsigned int q, const unsigned int levels)
+  check(const unsigned int q, const unsigned int levels, const bool top)
   {
-    const HierarchicalBSplineSpace<2> hierarchy(q, lower, upper, {{8, 16}}, band(levels));
+    const HierarchicalBSplineSpace<2> hierarchy(q, lower, upper, n_cells, band(levels, top));
     const BSplineSpace<2>            &base = hierarchy.level_space(0);
     std::vector<bool>                 cells(base.n_cells()), leaves(hierarchy.n_leaf_cells());
     for (unsigned int c = 0; c < base.n_cells(); ++c)
@@ -115,7 +119,23 @@ namespace
         const auto &leaf = hierarchy.leaf_cell(l);
         leaves[l]        = in_body(centre(hierarchy.level_space(leaf.level), leaf.cell));
       }
-    const ExtendedBSplineSpace<2> space(hierarchy, cells, leaves, true, true);
+    if (top)
+      {
+        bool refused = false;
+        try
+          {
+            const ExtendedBSplineSpace<2> extended(hierarchy, cells, leaves, true, true);
+          }
+        catch (const std::runtime_error &)
+          {
+            refused = true;
+          }
+        all_ok &= refused;
+        std::cout << "q=" << q << ", " << levels
+                  << " level(s) across the top, extension on: refused: " << (refused ? "yes" : "NO")
+                  << std::endl;
+      }
+    const ExtendedBSplineSpace<2> space(hierarchy, cells, leaves, !top, true);
 
     std::mt19937                           random(17 + q + 10 * levels);
     std::uniform_real_distribution<double> unit(0., 1.), coefficient(-1., 1.);
@@ -163,7 +183,9 @@ namespace
     const bool ok = worst_sum < 1e-12 && worst_gradient < 1e-10 && worst_jump < 1e-5 &&
                     (levels == 0 || worst_dropped > 1e-3);
     all_ok &= ok;
-    std::cout << "q=" << q << ", " << levels << " refined level(s): " << space.n_dofs()
+    std::cout << "q=" << q << ", " << levels << " level(s) "
+              << (top ? "across the top, extension off: " : "inside, extension on: ")
+              << space.n_dofs()
               << " DoFs; |sum - 1| < 1e-12, |sum of gradients| h_min < 1e-10, jumps < 1e-5"
               << (levels > 0 ? ", dropped DoF > 1e-3" : "") << ": " << (ok ? "yes" : "NO")
               << std::endl;
@@ -175,7 +197,7 @@ namespace
   void
   check_uniform_equivalence(const unsigned int q)
   {
-    const HierarchicalBSplineSpace<2> hierarchy(q, lower, upper, {{8, 16}}, {});
+    const HierarchicalBSplineSpace<2> hierarchy(q, lower, upper, n_cells, {});
     const BSplineSpace<2>            &base = hierarchy.level_space(0);
     std::vector<bool>                 cells(base.n_cells());
     for (unsigned int c = 0; c < base.n_cells(); ++c)
@@ -220,7 +242,8 @@ main(int argc, char **argv)
     {
       check_uniform_equivalence(q);
       for (unsigned int levels = 1; levels <= 2; ++levels)
-        check(q, levels);
+        for (const bool top : {false, true})
+          check(q, levels, top);
     }
   std::cout << (all_ok ? "OK" : "FAILED") << std::endl;
   return all_ok ? 0 : 1;

@@ -3,6 +3,7 @@
 
 #include <gelmpm/bspline/bspline_space.h>
 #include <gelmpm/bspline/extended_bspline_space.h>
+#include <gelmpm/bspline/hierarchical_bspline_space.h>
 #include <gelmpm/scene/background_grid.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -74,6 +75,34 @@ namespace GelMPM
     reinit(const std::vector<bool> &u_cell_has_material);
 
     /**
+     * The same on a refined grid: @p u_leaf_has_material flags the leaf cells of the
+     * displacement hierarchy that hold a volume point (a mu leaf holds material when a u leaf
+     * inside it does). On the uniform grid, the same as reinit(u_cell_has_material).
+     */
+    bool
+    reinit(const std::vector<bool> &u_cell_has_material,
+           const std::vector<bool> &u_leaf_has_material);
+
+    /**
+     * Whether the grid is locally refined ('Background grid/Refinement boxes'): u and mu are then
+     * truncated hierarchical B-splines of one marking, mu one level coarser than u everywhere,
+     * and u() and mu() their extended versions on the level-0 cells.
+     */
+    bool
+    refined() const;
+
+    /** The displacement hierarchy (refined grids only). */
+    const HierarchicalBSplineSpace<dim> &
+    u_hierarchy() const;
+
+    /**
+     * Control points of mu's extended space: B-splines of the chemical-potential grid, or
+     * active functions of its hierarchy on a refined grid (ExtendedBSplineSpace).
+     */
+    unsigned int
+    n_mu_control_points() const;
+
+    /**
      * From now on, accept boundary control points whose extrapolation is not exact because it
      * crosses the first or last q cells of the grid (ExtendedBSplineSpace). The initial body is
      * checked strictly: there a larger grid is the fix. Once the body has moved next to the
@@ -130,10 +159,13 @@ namespace GelMPM
     unsigned int
     n_dofs() const;
 
-    /** Smallest cell size of the displacement grid (h_u of the Nitsche penalty). */
+    /**
+     * Smallest cell size of the displacement grid (h_u of the Nitsche penalty): on a refined grid
+     * that of the finest level, everywhere.
+     */
     double
     h_u() const;
-    /** Smallest cell size of the chemical-potential grid (h_mu). */
+    /** Smallest cell size of the chemical-potential grid (h_mu); the finest level's if refined. */
     double
     h_mu() const;
 
@@ -150,14 +182,21 @@ namespace GelMPM
     settings() const;
 
   private:
-    DiscretisationSettings                     settings_;
-    BSplineSpace<dim>                          u_space_;
-    BSplineSpace<dim>                          mu_space_;
-    std::unique_ptr<ExtendedBSplineSpace<dim>> u_;
-    std::unique_ptr<ExtendedBSplineSpace<dim>> mu_;
-    std::vector<bool>                          u_cell_has_material_;
-    bool                                       inexact_extrapolation_tolerated = false;
-    bool                                       axisymmetric_;
+    /** The two hierarchies of a refined grid, from its one marking. */
+    void
+    build_hierarchies(const BackgroundGrid<dim> &grid);
+
+    DiscretisationSettings                         settings_;
+    BSplineSpace<dim>                              u_space_;
+    BSplineSpace<dim>                              mu_space_;
+    std::unique_ptr<ExtendedBSplineSpace<dim>>     u_;
+    std::unique_ptr<ExtendedBSplineSpace<dim>>     mu_;
+    std::vector<bool>                              u_cell_has_material_;
+    std::unique_ptr<HierarchicalBSplineSpace<dim>> u_hierarchy_;
+    std::unique_ptr<HierarchicalBSplineSpace<dim>> mu_hierarchy_;
+    std::vector<bool>                              u_leaf_has_material_;
+    bool                                           inexact_extrapolation_tolerated = false;
+    bool                                           axisymmetric_;
     // The rule the current extended spaces were built with.
     bool built_tolerating_inexact_extrapolation = false;
   };

@@ -180,6 +180,30 @@ namespace GelMPM
       return classification_;
     }
 
+    /**
+     * Refined grids: which leaf cells of the displacement hierarchy hold volume points in this
+     * step (empty on the uniform grid). The unknowns follow them as well as classification().
+     */
+    const std::vector<bool> &
+    leaf_classification() const
+    {
+      return leaf_classification_;
+    }
+
+    /** Whether leaf_classification() differs from the one of the sparsity pattern. */
+    bool
+    leaf_classification_changed() const
+    {
+      return leaf_classification_ != pattern_leaf_classification_;
+    }
+
+    /** The sparsity pattern now follows leaf_classification(). */
+    void
+    pattern_follows_leaves()
+    {
+      pattern_leaf_classification_ = leaf_classification_;
+    }
+
     /** The rank that holds the volume points of each active cell (invalid for the others). */
     const std::vector<unsigned int> &
     cell_holder() const
@@ -257,6 +281,7 @@ namespace GelMPM
     std::vector<dealii::Tensor<1, dim>> u_gradients, mu_gradients;
     unsigned int                        n_active_cells_ = 0;
     std::vector<bool>                   classification_;
+    std::vector<bool>                   leaf_classification_, pattern_leaf_classification_;
     std::vector<unsigned int>           cell_holder_;
   };
 } // namespace GelMPM

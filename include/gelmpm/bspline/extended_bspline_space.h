@@ -83,10 +83,12 @@ namespace GelMPM
      * cell's DoFs are those of all its leaf cells, and evaluate() finds the leaf). The cells and
      * the control points of level 0 are classified as on the uniform grid. An active function is
      * a DoF when it is nonzero on a leaf cell with material (@p leaf_has_material, one flag per
-     * leaf of @p hierarchy), except a boundary control point of level 0 that is extrapolated: one
-     * whose B-spline and whose block's B-splines are active and untruncated (their supports meet
-     * no refined cell). A boundary control point whose block reaches the refined region is kept
-     * as a DoF of its own, as with the extension off. In this mode a "control point" i of
+     * leaf of @p hierarchy), except the boundary control points of level 0, which the extension
+     * extrapolates as on the uniform grid. The extension is built on level 0 only: with it, every
+     * refined cell must be an interior cell and every boundary control point's B-spline and
+     * block of B-splines active and untruncated (their supports meet no refined cell); otherwise
+     * the constructor throws std::runtime_error. Without it, any cell may be refined (plain
+     * B-splines at every level). In this mode a "control point" i of
      * dof_of_control_point(), control_point_kind() and extrapolation_weights() is active function
      * i of @p hierarchy.
      */

@@ -6,6 +6,9 @@
 #include <deal.II/grid/tria.h>
 
 #include <array>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace GelMPM
 {
@@ -26,6 +29,30 @@ namespace GelMPM
      * x edge is then the axis R = 0.
      */
     bool axisymmetric = false;
+    /**
+     * 'Refinement boxes' and 'Refinement levels' (doc/architecture.md, "Local refinement"): the
+     * grid is refined 'Refinement levels' times where it overlaps one of these boxes. The marking
+     * is made on the grid of pairs of cells (cell size 2h, the chemical potential's with
+     * subdivision): at level l, a cell of size 2h / 2^l is refined when it overlaps a box. None
+     * by default.
+     */
+    std::vector<std::pair<dealii::Point<dim>, dealii::Point<dim>>> refinement_boxes;
+    unsigned int                                                   refinement_levels = 0;
+
+    /** Whether some cells are refined. */
+    bool
+    refined() const;
+
+    /**
+     * Per level l < refinement_levels, the refined cells of the grid of pairs of cells at level
+     * l (n_cells / 2 * 2^l cells per direction): HierarchicalBSplineSpace's refined_cells.
+     */
+    std::vector<std::vector<unsigned int>>
+    refined_pair_cells() const;
+
+    /** The level of the leaf cell at @p x: how many times the grid is refined there. */
+    unsigned int
+    refinement_level(const dealii::Point<dim> &x) const;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
@@ -45,6 +72,10 @@ namespace GelMPM
     /** True if @p p lies in the closed box of the grid (with a round-off tolerance). */
     bool
     contains(const dealii::Point<dim> &p) const;
+
+    /** Read 'Refinement boxes'; throws InputError where the refined path does not run yet. */
+    void
+    parse_refinement_boxes(const std::string &text);
 
     /** The grid as a deal.II triangulation (GridGenerator::subdivided_hyper_rectangle). */
     void
