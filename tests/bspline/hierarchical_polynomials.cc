@@ -94,12 +94,10 @@ namespace
   check_all()
   {
     for (unsigned int q = 1; q <= 3; ++q)
-      {
-        check<dim>(q, "corner", {box<dim>(0., 0.5)});
-        check<dim>(q, "middle", {box<dim>(0.25, 0.75)});
-        check<dim>(q, "corner", {box<dim>(0., 0.5), box<dim>(0., 0.25)});
-        check<dim>(q, "middle", {box<dim>(0.25, 0.75), box<dim>(0.375, 0.625)});
-      }
+      for_each_refinement<dim>(3,
+                               [&](const std::string &where, const std::vector<Box<dim>> &boxes) {
+                                 check<dim>(q, where, boxes);
+                               });
   }
 } // namespace
 

@@ -235,6 +235,23 @@ namespace hierarchical_setup
     return value;
   }
 
+  /**
+   * Calls @p check(where, boxes) for the refinements the hierarchical tests run: one box in a
+   * corner and one in the middle of the unit box (two levels) and, with @p max_levels 3, each
+   * with a second, nested box (three levels).
+   */
+  template <int dim, class Check>
+  void
+  for_each_refinement(const unsigned int max_levels, const Check &check)
+  {
+    check("corner", std::vector<Box<dim>>{box<dim>(0., 0.5)});
+    check("middle", std::vector<Box<dim>>{box<dim>(0.25, 0.75)});
+    if (max_levels < 3)
+      return;
+    check("corner", std::vector<Box<dim>>{box<dim>(0., 0.5), box<dim>(0., 0.25)});
+    check("middle", std::vector<Box<dim>>{box<dim>(0.25, 0.75), box<dim>(0.375, 0.625)});
+  }
+
   /** Whether the case was started with --figures: then it also prints the measured figures. */
   inline bool print_figures = false;
 

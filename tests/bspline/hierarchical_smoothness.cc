@@ -164,14 +164,10 @@ namespace
   check_all(const unsigned int n_cells, const unsigned int max_levels)
   {
     for (unsigned int q = 1; q <= 3; ++q)
-      {
-        check<dim>(q, n_cells, "corner", {box<dim>(0., 0.5)});
-        check<dim>(q, n_cells, "middle", {box<dim>(0.25, 0.75)});
-        if (max_levels < 3)
-          continue;
-        check<dim>(q, n_cells, "corner", {box<dim>(0., 0.5), box<dim>(0., 0.25)});
-        check<dim>(q, n_cells, "middle", {box<dim>(0.25, 0.75), box<dim>(0.375, 0.625)});
-      }
+      for_each_refinement<dim>(max_levels,
+                               [&](const std::string &where, const std::vector<Box<dim>> &boxes) {
+                                 check<dim>(q, n_cells, where, boxes);
+                               });
   }
 } // namespace
 

@@ -108,12 +108,10 @@ namespace
   void
   check_all(const unsigned int max_levels)
   {
-    check<dim>("corner", {box<dim>(0., 0.5)});
-    check<dim>("middle", {box<dim>(0.25, 0.75)});
-    if (max_levels < 3)
-      return;
-    check<dim>("corner", {box<dim>(0., 0.5), box<dim>(0., 0.25)});
-    check<dim>("middle", {box<dim>(0.25, 0.75), box<dim>(0.375, 0.625)});
+    for_each_refinement<dim>(max_levels,
+                             [](const std::string &where, const std::vector<Box<dim>> &boxes) {
+                               check<dim>(where, boxes);
+                             });
   }
 } // namespace
 
