@@ -31,10 +31,14 @@ import math
 import os
 import subprocess
 
+import sys
+
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
+sys.path.insert(0, os.path.join(ROOT, "contrib", "plotting"))
+from gelmpm_plot import force_relaxation, poroelastic_relaxation_fit  # noqa: E402
 SCENE = os.path.join(ROOT, "prm", "indentation_sphere.prm")
 CHI, N_NU, RADIUS = 0.1, 7.299e-3, 1.0
 
@@ -85,10 +89,7 @@ def limits(shape, depth, G_s, nu):
 
 
 def fit(shape, tau):
-    tau = np.asarray(tau)
-    if shape == "sphere":
-        return 0.491 * np.exp(-0.908 * np.sqrt(tau)) + 0.509 * np.exp(-1.679 * tau)
-    return 1.304 * np.exp(-np.sqrt(tau)) - 0.304 * np.exp(-0.254 * tau)
+    return np.array([poroelastic_relaxation_fit(shape, t) for t in tau])
 
 
 def default_contact(shape):
@@ -141,8 +142,11 @@ def run(args, shape, n, depth, c):
     data = np.genfromtxt(os.path.join(directory, "statistics.csv"), delimiter=",", names=True)
     t, F = data["t_over_tau_d"], data["indenter_force_y"]
     i0 = int(np.argmin(np.abs(t - t_load)))
-    return dict(t=t, F=F, t_load=t_load, F0=F[i0], Finf=F[-1], a=a, wall=data["wall_time"][-1],
-                radius=data["indenter_contact_radius"][i0])
+    # g from the row at the end of the loading on (gelmpm-plot --relaxation computes the same).
+    relaxation = force_relaxation(list(t), list(F), load_end=t_load)
+    return dict(t=t, F=F, t_load=t_load, F0=relaxation["F0"], Finf=relaxation["Finf"],
+                g=relaxation["g"], t_after=relaxation["t"], F_after=relaxation["F"], a=a,
+                wall=data["wall_time"][-1], radius=data["indenter_contact_radius"][i0])
 
 
 def main():
@@ -194,20 +198,17 @@ def main():
     with open(os.path.join(args.output, "indentation.csv"), "w") as out:
         out.write("n,depth,t_over_tau_d,tau,force,g\n")
         for r in results:
-            for t, F in zip(r["t"], r["F"]):
-                if t >= r["t_load"]:
-                    out.write("%d,%g,%.10g,%.10g,%.10g,%.10g\n" % (
-                        r["n"], r["depth"], t, c * (t - r["t_load"]) / r["a"] ** 2, F,
-                        (F - r["Finf"]) / (r["F0"] - r["Finf"])))
+            for dt, F, g in zip(r["t_after"], r["F_after"], r["g"]):
+                out.write("%d,%g,%.10g,%.10g,%.10g,%.10g\n" % (
+                    r["n"], r["depth"], r["t_load"] + dt, c * dt / r["a"] ** 2, F, g))
     if args.plot:
         import matplotlib
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
         fig, ax = plt.subplots(figsize=(6, 4))
         for r in results:
-            keep = r["t"] >= r["t_load"]
-            tau = c * (r["t"][keep] - r["t_load"]) / r["a"] ** 2
-            g = (r["F"][keep] - r["Finf"]) / (r["F0"] - r["Finf"])
+            tau = c * np.array(r["t_after"]) / r["a"] ** 2
+            g = np.array(r["g"])
             ax.semilogx(np.maximum(tau, 1e-5), g, marker=".",
                         label="MPM h = %.4f, delta = %g%s" % (
                             args.size / r["n"], r["depth"],
