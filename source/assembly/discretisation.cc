@@ -248,12 +248,13 @@ namespace GelMPM
         u_.reset();
         mu_.reset();
         throw InputError("Background grid/Refinement boxes",
-                         std::string("refines cells that the extended B-splines do not support "
-                                     "yet (") +
+                         std::string("refines a region that the extended B-splines cannot "
+                                     "extrapolate into (") +
                            e.what() + ")",
-                         "keep the boxes inside the body, about 2(q+1) cells away from its "
-                         "boundary (also as it deforms), or set 'Discretisation/Extended "
-                         "B-splines = false'");
+                         "let a box that reaches the body's boundary extend at least 2(q+1) "
+                         "cells of its finest level into the body (also as it deforms; the "
+                         "chemical potential's cells are twice as large), or set "
+                         "'Discretisation/Extended B-splines = false'");
       }
     return true;
   }

@@ -83,107 +83,128 @@ namespace GelMPM
         leaf_has_material.size() != hierarchy.n_leaf_cells())
       throw std::invalid_argument("ExtendedBSplineSpace: one material flag per cell expected");
     classify_cells(cell_has_material);
-    classify_control_points();
-    if (use_extension)
-      compute_extrapolation_weights();
-    number_hierarchical_dofs(leaf_has_material);
+    classify_active_functions(leaf_has_material);
+    number_hierarchical_dofs();
     build_leaf_matrices();
   }
 
 
   template <int dim>
-  bool
-  ExtendedBSplineSpace<dim>::reaches_refined_cell(const unsigned int i) const
+  std::vector<std::vector<bool>>
+  ExtendedBSplineSpace<dim>::material_per_level(const std::vector<bool> &leaf_has_material) const
   {
-    const auto           f = space_.function_multi_index(i);
-    const auto          &n = space_.n_cells_per_direction();
-    const int            q = space_.degree();
-    std::array<int, dim> lo, hi;
-    for (unsigned int d = 0; d < dim; ++d)
+    const unsigned int             L = hierarchy->n_levels();
+    std::vector<std::vector<bool>> material(L);
+    for (unsigned int l = 0; l < L; ++l)
+      material[l].assign(hierarchy->level_space(l).n_cells(), false);
+    for (unsigned int leaf = 0; leaf < hierarchy->n_leaf_cells(); ++leaf)
       {
-        lo[d] = std::max(0, static_cast<int>(f[d]) - q);
-        hi[d] = std::min(static_cast<int>(n[d]) - 1, static_cast<int>(f[d]));
+        const auto &[level, cell] = hierarchy->leaf_cell(leaf);
+        material[level][cell]     = leaf_has_material[leaf];
       }
-    bool reaches = false;
-    for_each_in_box<dim>(lo, hi, [&](const std::array<int, dim> &c) {
-      reaches |= hierarchy->is_refined(0, space_.cell_index(to_unsigned<dim>(c)));
-    });
-    return reaches;
+    const auto parent = [&](const unsigned int level, const unsigned int cell) {
+      auto index = hierarchy->level_space(level).cell_multi_index(cell);
+      for (auto &i : index)
+        i >>= 1;
+      return hierarchy->level_space(level - 1).cell_index(index);
+    };
+    // A refined cell holds material when one of its leaves does ...
+    for (unsigned int l = L - 1; l > 0; --l)
+      for (unsigned int c = 0; c < material[l].size(); ++c)
+        if (hierarchy->in_domain(l, c) && material[l][c])
+          material[l - 1][parent(l, c)] = true;
+    // ... and a cell of a level outside that level's domain is part of a coarser leaf: it holds
+    // material when that leaf does, which is what its neighbours of the level see.
+    for (unsigned int l = 1; l < L; ++l)
+      for (unsigned int c = 0; c < material[l].size(); ++c)
+        if (!hierarchy->in_domain(l, c))
+          material[l][c] = material[l - 1][parent(l, c)];
+    return material;
   }
 
 
   template <int dim>
   void
-  ExtendedBSplineSpace<dim>::number_hierarchical_dofs(const std::vector<bool> &leaf_has_material)
+  ExtendedBSplineSpace<dim>::classify_active_functions(const std::vector<bool> &leaf_has_material)
+  {
+    const std::vector<std::vector<bool>> material = material_per_level(leaf_has_material);
+    const unsigned int                   n_active = hierarchy->n_active_functions();
+    std::vector<bool>                    interior(n_active, false), boundary(n_active, false);
+    for (unsigned int leaf = 0; leaf < hierarchy->n_leaf_cells(); ++leaf)
+      {
+        if (!leaf_has_material[leaf])
+          continue;
+        // A leaf is a boundary cell of its level when a neighbour of that level (face, edge or
+        // corner) holds no material, as on the uniform grid (§3.5).
+        const auto &[level, cell]  = hierarchy->leaf_cell(leaf);
+        const BSplineSpace<dim> &s = hierarchy->level_space(level);
+        const auto               c = s.cell_multi_index(cell);
+        std::array<int, dim>     lo, hi;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            lo[d] = std::max(0, static_cast<int>(c[d]) - 1);
+            hi[d] = std::min(static_cast<int>(s.n_cells_per_direction()[d]) - 1,
+                             static_cast<int>(c[d]) + 1);
+          }
+        bool next_to_outer = false;
+        for_each_in_box<dim>(lo, hi, [&](const std::array<int, dim> &i) {
+          next_to_outer |= !material[level][s.cell_index(to_unsigned<dim>(i))];
+        });
+        for (const unsigned int f : hierarchy->leaf_functions(leaf))
+          (next_to_outer ? boundary : interior)[f] = true;
+      }
+    function_kinds.assign(n_active, ControlPointKind::outer);
+    for (unsigned int f = 0; f < n_active; ++f)
+      function_kinds[f] = interior[f]   ? ControlPointKind::interior
+                          : boundary[f] ? ControlPointKind::boundary
+                                        : ControlPointKind::outer;
+  }
+
+
+  template <int dim>
+  void
+  ExtendedBSplineSpace<dim>::number_hierarchical_dofs()
   {
     const unsigned int n_active = hierarchy->n_active_functions();
-    std::vector<bool>  touched(n_active, false);
-    for (unsigned int leaf = 0; leaf < hierarchy->n_leaf_cells(); ++leaf)
-      if (leaf_has_material[leaf])
-        for (const unsigned int f : hierarchy->leaf_functions(leaf))
-          touched[f] = true;
-
-    // The extension is built on level 0 only: a refined cell must be an interior cell, and a
-    // boundary control point is extrapolated from active, untruncated B-splines of level 0.
-    const auto refuse = [](const std::string &what) {
-      throw std::runtime_error(
-        "extended B-splines on a refined grid: " + what +
-        "; the extension is built on the base grid only, so the refined region must stay "
-        "away from the cells cut by the body's boundary (about 2(q+1) cells)");
-    };
-    if (use_extension)
-      for (unsigned int cell = 0; cell < space_.n_cells(); ++cell)
-        if (hierarchy->is_refined(0, cell) && cell_kinds[cell] != CellKind::interior)
-          refuse(std::string("a refined cell is ") + (cell_kinds[cell] == CellKind::boundary
-                                                        ? "cut by the body's boundary"
-                                                        : "outside the body"));
-    const auto extrapolated = [&](const unsigned int i) {
-      if (!use_extension || point_kinds[i] != ControlPointKind::boundary)
-        return false;
-      bool untruncated = !reaches_refined_cell(i);
-      for (const auto &[j, E] : weights[i])
-        untruncated &=
-          hierarchy->active_function_number(0, j) != dealii::numbers::invalid_unsigned_int &&
-          !reaches_refined_cell(j);
-      if (!untruncated)
-        refuse("a boundary control point is extrapolated from functions of the refined region");
-      return true;
-    };
-
     function_dof.assign(n_active, dealii::numbers::invalid_unsigned_int);
-    function_kinds.assign(n_active, ControlPointKind::outer);
     function_weights.assign(n_active, {});
     n_dofs_ = 0;
     for (unsigned int f = 0; f < n_active; ++f)
+      if (function_kinds[f] == ControlPointKind::interior ||
+          (function_kinds[f] == ControlPointKind::boundary && !use_extension))
+        function_dof[f] = n_dofs_++;
+    if (!use_extension)
+      return;
+
+    // Level by level: a boundary function is extrapolated from the nearest block of interior
+    // functions of its own level. By the preservation of coefficients of THB-splines, the
+    // coefficient of an active function in a polynomial is its B-spline coefficient of its
+    // level, a polynomial of the index: the extrapolation is exact, as on the uniform grid.
+    for (unsigned int level = 0; level < hierarchy->n_levels(); ++level)
       {
-        const auto &[level, index] = hierarchy->active_function(f);
-        if (level == 0 && extrapolated(index))
+        const BSplineSpace<dim> &space = hierarchy->level_space(level);
+        std::vector<bool>        interior(space.n_functions(), false);
+        bool                     has_boundary = false;
+        for (unsigned int i = 0; i < space.n_functions(); ++i)
           {
-            function_kinds[f] = ControlPointKind::boundary;
-            continue;
+            const unsigned int f = hierarchy->active_function_number(level, i);
+            if (f == dealii::numbers::invalid_unsigned_int)
+              continue;
+            interior[i] = function_kinds[f] == ControlPointKind::interior;
+            has_boundary |= function_kinds[f] == ControlPointKind::boundary;
           }
-        if (!touched[f])
+        if (!has_boundary)
           continue;
-        function_kinds[f] = (level == 0 && point_kinds[index] == ControlPointKind::boundary)
-                              ? ControlPointKind::boundary
-                              : ControlPointKind::interior;
-        function_dof[f]   = n_dofs_++;
-      }
-    // The weights of the extrapolated ones, in active-function numbers (all are DoFs: interior
-    // and untruncated, so nonzero on an interior level-0 leaf cell with material).
-    for (unsigned int f = 0; f < n_active; ++f)
-      {
-        const auto &[level, index] = hierarchy->active_function(f);
-        if (level != 0 || function_kinds[f] != ControlPointKind::boundary ||
-            function_dof[f] != dealii::numbers::invalid_unsigned_int)
-          continue;
-        for (const auto &[j, E] : weights[index])
+        const std::vector<bool> block_ok = interior_blocks(space, interior);
+        for (unsigned int i = 0; i < space.n_functions(); ++i)
           {
-            const unsigned int g = hierarchy->active_function_number(0, j);
-            if (function_dof[g] == dealii::numbers::invalid_unsigned_int)
-              throw std::runtime_error("extended B-splines on a refined grid: a boundary control "
-                                       "point is extrapolated from a function without material");
-            function_weights[f].emplace_back(g, E);
+            const unsigned int f = hierarchy->active_function_number(level, i);
+            if (f == dealii::numbers::invalid_unsigned_int ||
+                function_kinds[f] != ControlPointKind::boundary)
+              continue;
+            for (const auto &[j, E] :
+                 extrapolation_weights_from_nearest_block(space, block_ok, i, level))
+              function_weights[f].emplace_back(hierarchy->active_function_number(level, j), E);
           }
       }
   }
@@ -340,142 +361,170 @@ namespace GelMPM
   void
   ExtendedBSplineSpace<dim>::compute_extrapolation_weights()
   {
-    const int            q = space_.degree();
-    std::array<int, dim> n_functions;
-    for (unsigned int d = 0; d < dim; ++d)
-      n_functions[d] = space_.basis_1d(d).n_functions();
+    std::vector<bool> interior(space_.n_functions());
+    for (unsigned int i = 0; i < space_.n_functions(); ++i)
+      interior[i] = point_kinds[i] == ControlPointKind::interior;
+    const std::vector<bool> block_ok = interior_blocks(space_, interior);
+    weights.assign(space_.n_functions(), {});
+    for (unsigned int k = 0; k < space_.n_functions(); ++k)
+      if (point_kinds[k] == ControlPointKind::boundary)
+        weights[k] = extrapolation_weights_from_nearest_block(space_, block_ok, k, 0);
+  }
 
-    // block_ok[l]: the (q+1)^dim block with lower corner l holds interior points only.
-    std::vector<bool> block_ok(space_.n_functions(), false);
-    for (unsigned int l = 0; l < space_.n_functions(); ++l)
+
+  template <int dim>
+  std::vector<bool>
+  ExtendedBSplineSpace<dim>::interior_blocks(const BSplineSpace<dim> &space,
+                                             const std::vector<bool> &interior) const
+  {
+    const int         q = space.degree();
+    std::vector<bool> block_ok(space.n_functions(), false);
+    for (unsigned int l = 0; l < space.n_functions(); ++l)
       {
-        const auto           corner = space_.function_multi_index(l);
+        const auto           corner = space.function_multi_index(l);
         std::array<int, dim> lo, hi;
         bool                 fits = true;
         for (unsigned int d = 0; d < dim; ++d)
           {
             lo[d] = corner[d];
             hi[d] = corner[d] + q;
-            fits &= (hi[d] < n_functions[d]);
+            fits &= (hi[d] < static_cast<int>(space.basis_1d(d).n_functions()));
           }
         if (!fits)
           continue;
         bool all_interior = true;
         for_each_in_box<dim>(lo, hi, [&](const std::array<int, dim> &i) {
-          all_interior &=
-            (point_kinds[space_.function_index(to_unsigned<dim>(i))] == ControlPointKind::interior);
+          all_interior &= interior[space.function_index(to_unsigned<dim>(i))];
         });
         block_ok[l] = all_interior;
       }
+    return block_ok;
+  }
 
-    weights.assign(space_.n_functions(), {});
-    const int max_radius = *std::max_element(n_functions.begin(), n_functions.end());
-    for (unsigned int k = 0; k < space_.n_functions(); ++k)
+
+  template <int dim>
+  std::vector<std::pair<unsigned int, double>>
+  ExtendedBSplineSpace<dim>::extrapolation_weights_from_nearest_block(
+    const BSplineSpace<dim> &space,
+    const std::vector<bool> &block_ok,
+    const unsigned int       k,
+    const unsigned int       level)
+  {
+    const int            q = space.degree();
+    std::array<int, dim> n_functions;
+    for (unsigned int d = 0; d < dim; ++d)
+      n_functions[d] = space.basis_1d(d).n_functions();
+    const int  max_radius = *std::max_element(n_functions.begin(), n_functions.end());
+    const auto kk         = space.function_multi_index(k);
+
+    // Scan windows of growing radius; once a block is found at Chebyshev radius r, a block at
+    // smaller Euclidean distance lies within radius r*sqrt(dim).
+    double               best_distance = std::numeric_limits<double>::max();
+    double               best_centre   = std::numeric_limits<double>::max();
+    std::array<int, dim> best;
+    bool                 found = false;
+    int                  limit = max_radius;
+    for (int r = 1; r <= limit; ++r)
       {
-        if (point_kinds[k] != ControlPointKind::boundary)
-          continue;
-        const auto kk = space_.function_multi_index(k);
-
-        // Scan windows of growing radius; once a block is found at Chebyshev radius r, a block at
-        // smaller Euclidean distance lies within radius r*sqrt(dim).
-        double               best_distance = std::numeric_limits<double>::max();
-        double               best_centre   = std::numeric_limits<double>::max();
-        std::array<int, dim> best;
-        bool                 found = false;
-        int                  limit = max_radius;
-        for (int r = 1; r <= limit; ++r)
-          {
-            std::array<int, dim> lo, hi;
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                lo[d] = std::max(0, static_cast<int>(kk[d]) - q - r);
-                hi[d] = std::min(n_functions[d] - q - 1, static_cast<int>(kk[d]) + r);
-              }
-            for_each_in_box<dim>(lo, hi, [&](const std::array<int, dim> &l) {
-              if (!block_ok[space_.function_index(to_unsigned<dim>(l))])
-                return;
-              double distance = 0., centre = 0.;
-              for (unsigned int d = 0; d < dim; ++d)
-                {
-                  const int gap = std::max(
-                    {0, l[d] - static_cast<int>(kk[d]), static_cast<int>(kk[d]) - (l[d] + q)});
-                  distance += gap * gap;
-                  const double offset = kk[d] - (l[d] + 0.5 * q);
-                  centre += offset * offset;
-                }
-              // Strictly better, or equal and lexicographically earlier (x fastest). Both
-              // measures are sums of squared (half-)integers, so a tie is exact up to round-off.
-              constexpr double tie    = 1e-12;
-              bool             better = distance < best_distance - tie ||
-                            (distance < best_distance + tie && centre < best_centre - tie);
-              if (!better && found && std::abs(distance - best_distance) < tie &&
-                  std::abs(centre - best_centre) < tie)
-                for (int d = dim - 1; d >= 0; --d)
-                  if (l[d] != best[d])
-                    {
-                      better = l[d] < best[d];
-                      break;
-                    }
-              if (!found || better)
-                {
-                  found         = true;
-                  best          = l;
-                  best_distance = distance;
-                  best_centre   = centre;
-                }
-            });
-            if (found && limit == max_radius)
-              limit = std::min(max_radius, static_cast<int>(std::ceil(r * std::sqrt(dim))) + 1);
-          }
-        if (!found)
-          throw std::runtime_error(
-            "extended B-splines: no block of (q+1)^dim interior control points for a boundary "
-            "control point; the body is thinner than q+1 interior cells somewhere. Refine the "
-            "background grid or lower the degree.");
-
-        // Lagrange extrapolation in the index is exact for polynomials only where the B-spline
-        // (Marsden) coefficients are polynomials of the index: away from the repeated end knots,
-        // i.e. for indices q-1 ... n_cells in each direction that is extrapolated along.
+        std::array<int, dim> lo, hi;
         for (unsigned int d = 0; d < dim; ++d)
           {
-            const int k_d = kk[d];
-            if (k_d >= best[d] && k_d <= best[d] + q)
-              continue;
-            const bool exact =
-              std::min(k_d, best[d]) >= q - 1 &&
-              std::max(k_d, best[d] + q) <= static_cast<int>(space_.n_cells_per_direction()[d]);
-            if (exact)
-              continue;
-            if (!exact_extrapolation_required)
-              {
-                ++n_inexact;
-                break;
-              }
-            throw std::runtime_error(
-              "extended B-splines (degree " + std::to_string(q) + ", " +
-              std::to_string(space_.n_cells_per_direction()[d]) + " cells in direction " +
-              std::to_string(d) +
-              "): a boundary control point must be extrapolated across the first or last " +
-              std::to_string(q) +
-              " cells of the grid, where extrapolation is not exact; either the body's boundary "
-              "cuts cells that close to the grid edge (enlarge the grid so that it reaches at "
-              "least q cells beyond the body, or let the body end on the edge) or the body is "
-              "only a few cells thick there (refine the grid)");
+            lo[d] = std::max(0, static_cast<int>(kk[d]) - q - r);
+            hi[d] = std::min(n_functions[d] - q - 1, static_cast<int>(kk[d]) + r);
           }
-
-        // Tensor-product Lagrange extrapolation weights, eq. (54).
-        std::array<int, dim> hi;
-        for (unsigned int d = 0; d < dim; ++d)
-          hi[d] = best[d] + q;
-        for_each_in_box<dim>(best, hi, [&](const std::array<int, dim> &i) {
-          double E = 1.;
+        for_each_in_box<dim>(lo, hi, [&](const std::array<int, dim> &l) {
+          if (!block_ok[space.function_index(to_unsigned<dim>(l))])
+            return;
+          double distance = 0., centre = 0.;
           for (unsigned int d = 0; d < dim; ++d)
-            for (int s = best[d]; s <= best[d] + q; ++s)
-              if (s != i[d])
-                E *= static_cast<double>(static_cast<int>(kk[d]) - s) / (i[d] - s);
-          weights[k].emplace_back(space_.function_index(to_unsigned<dim>(i)), E);
+            {
+              const int gap =
+                std::max({0, l[d] - static_cast<int>(kk[d]), static_cast<int>(kk[d]) - (l[d] + q)});
+              distance += gap * gap;
+              const double offset = kk[d] - (l[d] + 0.5 * q);
+              centre += offset * offset;
+            }
+          // Strictly better, or equal and lexicographically earlier (x fastest). Both
+          // measures are sums of squared (half-)integers, so a tie is exact up to round-off.
+          constexpr double tie    = 1e-12;
+          bool             better = distance < best_distance - tie ||
+                        (distance < best_distance + tie && centre < best_centre - tie);
+          if (!better && found && std::abs(distance - best_distance) < tie &&
+              std::abs(centre - best_centre) < tie)
+            for (int d = dim - 1; d >= 0; --d)
+              if (l[d] != best[d])
+                {
+                  better = l[d] < best[d];
+                  break;
+                }
+          if (!found || better)
+            {
+              found         = true;
+              best          = l;
+              best_distance = distance;
+              best_centre   = centre;
+            }
         });
+        if (found && limit == max_radius)
+          limit = std::min(max_radius, static_cast<int>(std::ceil(r * std::sqrt(dim))) + 1);
       }
+    if (!found && level == 0)
+      throw std::runtime_error(
+        "extended B-splines: no block of (q+1)^dim interior control points for a boundary "
+        "control point; the body is thinner than q+1 interior cells somewhere. Refine the "
+        "background grid or lower the degree.");
+    if (!found)
+      throw std::runtime_error(
+        "extended B-splines: a boundary function of refinement level " + std::to_string(level) +
+        " has no block of (q+1)^dim interior functions of its level; a refined region that "
+        "meets the body's boundary must reach at least 2(q+1) cells of its finest level into "
+        "the body (q = " +
+        std::to_string(q) + ")");
+
+    // Lagrange extrapolation in the index is exact for polynomials only where the B-spline
+    // (Marsden) coefficients are polynomials of the index: away from the repeated end knots,
+    // i.e. for indices q-1 ... n_cells in each direction that is extrapolated along.
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        const int k_d = kk[d];
+        if (k_d >= best[d] && k_d <= best[d] + q)
+          continue;
+        const bool exact =
+          std::min(k_d, best[d]) >= q - 1 &&
+          std::max(k_d, best[d] + q) <= static_cast<int>(space.n_cells_per_direction()[d]);
+        if (exact)
+          continue;
+        if (!exact_extrapolation_required)
+          {
+            ++n_inexact;
+            break;
+          }
+        throw std::runtime_error(
+          "extended B-splines (degree " + std::to_string(q) + ", " +
+          std::to_string(space.n_cells_per_direction()[d]) + " cells in direction " +
+          std::to_string(d) +
+          "): a boundary control point must be extrapolated across the first or last " +
+          std::to_string(q) +
+          " cells of the grid, where extrapolation is not exact; either the body's boundary "
+          "cuts cells that close to the grid edge (enlarge the grid so that it reaches at "
+          "least q cells beyond the body, or let the body end on the edge) or the body is "
+          "only a few cells thick there (refine the grid)");
+      }
+
+    // Tensor-product Lagrange extrapolation weights, eq. (54).
+    std::vector<std::pair<unsigned int, double>> block_weights;
+    std::array<int, dim>                         hi;
+    for (unsigned int d = 0; d < dim; ++d)
+      hi[d] = best[d] + q;
+    for_each_in_box<dim>(best, hi, [&](const std::array<int, dim> &i) {
+      double E = 1.;
+      for (unsigned int d = 0; d < dim; ++d)
+        for (int s = best[d]; s <= best[d] + q; ++s)
+          if (s != i[d])
+            E *= static_cast<double>(static_cast<int>(kk[d]) - s) / (i[d] - s);
+      block_weights.emplace_back(space.function_index(to_unsigned<dim>(i)), E);
+    });
+    return block_weights;
   }
 
 

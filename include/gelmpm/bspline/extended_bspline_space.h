@@ -80,15 +80,21 @@ namespace GelMPM
     /**
      * The extended basis on a locally refined grid: the truncated hierarchical B-splines of
      * @p hierarchy, whose level 0 is the grid of the cells (cells stay level-0 cells: a refined
-     * cell's DoFs are those of all its leaf cells, and evaluate() finds the leaf). The cells and
-     * the control points of level 0 are classified as on the uniform grid. An active function is
-     * a DoF when it is nonzero on a leaf cell with material (@p leaf_has_material, one flag per
-     * leaf of @p hierarchy), except the boundary control points of level 0, which the extension
-     * extrapolates as on the uniform grid. The extension is built on level 0 only: with it, every
-     * refined cell must be an interior cell and every boundary control point's B-spline and
-     * block of B-splines active and untruncated (their supports meet no refined cell); otherwise
-     * the constructor throws std::runtime_error. Without it, any cell may be refined (plain
-     * B-splines at every level). In this mode a "control point" i of
+     * cell's DoFs are those of all its leaf cells, and evaluate() finds the leaf). The level-0
+     * cells are classified as on the uniform grid (cell_kind()). The leaf cells are classified
+     * on their own level: interior when they and all their neighbours of that level hold
+     * material (a neighbour outside the level's refined domain is part of a coarser leaf, whose
+     * flag it takes), boundary when they hold material next to one that does not. An active
+     * function is interior when it is nonzero on an interior leaf, boundary when nonzero only on
+     * boundary leaves with material. Interior functions are DoFs; with the extension, a boundary
+     * function of level l is extrapolated from the nearest block of (q+1)^dim interior active
+     * functions of level l, by the weights of eq. (54) in the indices of level l. This is exact
+     * for polynomials of degree q, since a THB coefficient of a polynomial is the B-spline
+     * coefficient of the function's level (preservation of coefficients). It needs such a block
+     * at every level that meets the boundary: a refined region that reaches the body's boundary
+     * must reach at least 2(q+1) cells of its finest level into the body; otherwise the
+     * constructor throws std::runtime_error. Without the extension every boundary function is a
+     * DoF (plain B-splines at every level). In this mode a "control point" i of
      * dof_of_control_point(), control_point_kind() and extrapolation_weights() is active function
      * i of @p hierarchy.
      */
@@ -150,8 +156,38 @@ namespace GelMPM
     compute_extrapolation_weights();
     void
     build_cell_matrices();
+    /**
+     * The (q+1)^dim blocks of @p space all of whose functions are @p interior, flagged by the
+     * index of their lower corner.
+     */
+    std::vector<bool>
+    interior_blocks(const BSplineSpace<dim> &space, const std::vector<bool> &interior) const;
+    /**
+     * The weights (function of @p space, E_ik) that extrapolate function @p k from the nearest
+     * block of interior functions (@p block_ok from interior_blocks()); @p level only names the
+     * refinement level in messages. Throws as the constructors say.
+     */
+    std::vector<std::pair<unsigned int, double>>
+    extrapolation_weights_from_nearest_block(const BSplineSpace<dim> &space,
+                                             const std::vector<bool> &block_ok,
+                                             const unsigned int       k,
+                                             const unsigned int       level);
+    /**
+     * Per level of the hierarchy and cell of that level, whether it holds material: a leaf as
+     * given, a refined cell when one of its leaves does, a cell outside its level's domain when
+     * the coarser leaf it lies in does.
+     */
+    std::vector<std::vector<bool>>
+    material_per_level(const std::vector<bool> &leaf_has_material) const;
+    /**
+     * The kinds of the active functions: interior when nonzero on an interior leaf cell (a leaf
+     * with material whose neighbours of its level all hold material), boundary when nonzero on
+     * a leaf with material only at boundary leaves, outer otherwise.
+     */
     void
-    number_hierarchical_dofs(const std::vector<bool> &leaf_has_material);
+    classify_active_functions(const std::vector<bool> &leaf_has_material);
+    void
+    number_hierarchical_dofs();
     void
     build_leaf_matrices();
     /** evaluate() on the leaf cell of @p cell that holds @p p (refined grid). */
@@ -162,9 +198,6 @@ namespace GelMPM
                      std::vector<dealii::Tensor<1, dim>> &gradients,
                      std::vector<double>                 &scratch_values,
                      std::vector<dealii::Tensor<1, dim>> &scratch_gradients) const;
-    /** Whether the support of level-0 B-spline @p i meets a refined cell. */
-    bool
-    reaches_refined_cell(const unsigned int i) const;
 
     const BSplineSpace<dim>                                  &space_;
     bool                                                      use_extension;
