@@ -102,16 +102,16 @@ def sweep_runs(directory):
     rows = read_rows(table)
     if not rows:
         return []
-    # The swept entries are the columns between 'directory' and 'status' (gelmpm_sweep.py).
+    # The swept entries are the columns between 'directory' and 'status' (gelmpm_sweep.py); a
+    # label names those that differ among the runs with output.
     names = list(rows[0])
     swept = names[names.index("directory") + 1: names.index("status")]
-    found = []
-    for row in rows:
-        run_directory = os.path.join(directory, row["directory"])
-        label = ", ".join(f"{name.split('/')[-1]}={row[name]}" for name in swept)
-        if output_directory_problem(run_directory) is None:
-            found.append((run_directory, label or row["run"]))
-    return found
+    rows = [row for row in rows
+            if output_directory_problem(os.path.join(directory, row["directory"])) is None]
+    differing = [name for name in swept if len({row[name] for row in rows}) > 1]
+    return [(os.path.join(directory, row["directory"]),
+             ", ".join(f"{name.split('/')[-1]}={row[name]}" for name in differing) or row["run"])
+            for row in rows]
 
 
 def load_runs(directories, labels):
