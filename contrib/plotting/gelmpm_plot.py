@@ -7,6 +7,7 @@
                 [--time-scale T [--fit sphere|flat]]
     gelmpm-plot DIR [DIR ...] --surface PIECE [--outputs 0,5,-1|all] [--profile-x x] [--profile-y y]
     common: [-o FILE.png|.pdf|.svg] [--data FILE.csv] [--label TEXT ...] [--title TEXT]
+            [--xlabel TEXT] [--ylabel TEXT]
             [--with FILE:XCOLUMN:YCOLUMN[:LABEL] ...]
 
 (`build/gelmpm-plot` is a link to this file; `/usr/bin/python3 contrib/plotting/gelmpm_plot.py`
@@ -54,7 +55,7 @@ from gelmpm_files import (number, output_directory_problem, output_times, read_c
 
 TIME_COLUMNS = ("t_over_tau_d", "time")
 AXIS_NAMES = {"t_over_tau_d": "t/τ_d", "time": "t", "s_0": "s_0 (arc length, initial)",
-              "x": "x", "y": "y", "mu": "μ/k_BT"}
+              "x": "x", "y": "y", "mu": "μ/k_BT", "delta_h_over_h0": "Δh/h_0"}
 
 
 class PlotError(Exception):
@@ -303,10 +304,11 @@ def collect(args, runs):
             r = force_relaxation(run.column("t_over_tau_d"), run.column(name), args.load_end,
                                  args.final_force)
             scale = args.time_scale or 1.0
-            label = f"{run.label} ({name}: F(0+) = {r['F0']:.5g} at {r['t_load']:.4g}, " \
-                    f"F(∞) = {r['Finf']:.5g})"
+            print(f"gelmpm-plot: {run.directory}: {name}: F(0+) = {r['F0']:.6g} at t/tau_d = "
+                  f"{r['t_load']:.6g}, F(inf) = {r['Finf']:.6g}, F(0+)/F(inf) = "
+                  f"{r['F0'] / r['Finf'] if r['Finf'] else math.inf:.4f}")
             keep = [(t / scale, g) for t, g in zip(r["t"], r["g"]) if t > 0]
-            plot["curves"].append((run, label, [p[0] for p in keep], [p[1] for p in keep]))
+            plot["curves"].append((run, run.label, [p[0] for p in keep], [p[1] for p in keep]))
             if args.events:
                 plot["vlines"] += [((t - r["t_load"]) / scale, name_, run)
                                    for name_, t in run.event_times() if t > r["t_load"]]
@@ -368,7 +370,7 @@ def write_data(plot, file_name):
             writer.writerow([run.directory, f"event {name}", repr(x), repr(y)])
 
 
-def draw(plot, file_name):
+def draw(plot, args, file_name):
     try:
         import matplotlib
         matplotlib.use("Agg")
@@ -403,8 +405,8 @@ def draw(plot, file_name):
         ax.set_yscale("log")
     if plot["equal"]:
         ax.set_aspect("equal", adjustable="datalim")
-    ax.set_xlabel(plot["xlabel"])
-    ax.set_ylabel(plot["ylabel"])
+    ax.set_xlabel(args.xlabel or plot["xlabel"])
+    ax.set_ylabel(args.ylabel or plot["ylabel"])
     if plot["title"]:
         ax.set_title(plot["title"])
     ax.grid(True, which="both", alpha=0.3)
@@ -417,9 +419,9 @@ def draw(plot, file_name):
 
 def parse(argv):
     parser = argparse.ArgumentParser(
-        prog="gelmpm-plot", description=__doc__.splitlines()[0],
+        prog="gelmpm-plot", description=__doc__.split("\n\n")[0],
         formatter_class=argparse.RawDescriptionHelpFormatter,
-        epilog="\n".join(__doc__.splitlines()[1:]))
+        epilog=__doc__.split("\n\n", 1)[1])
     parser.add_argument("directories", nargs="+", metavar="DIR")
     parser.add_argument("--list", action="store_true")
     parser.add_argument("--y", action="append", default=[], metavar="COLUMN")
@@ -439,6 +441,8 @@ def parse(argv):
                         metavar="FILE:XCOLUMN:YCOLUMN[:LABEL]")
     parser.add_argument("--label", action="append", default=[])
     parser.add_argument("--title", default="")
+    parser.add_argument("--xlabel", default="")
+    parser.add_argument("--ylabel", default="")
     parser.add_argument("-o", "--output", metavar="FILE")
     parser.add_argument("--data", metavar="FILE.csv")
     args = parser.parse_args(argv)
@@ -468,7 +472,7 @@ def main(argv=None):
             print(f"gelmpm-plot: wrote {args.data}")
         if args.output or not args.data:
             output = args.output or plot["default_name"] + ".png"
-            draw(plot, output)
+            draw(plot, args, output)
             print(f"gelmpm-plot: wrote {output}")
     except PlotError as error:
         fail(str(error))

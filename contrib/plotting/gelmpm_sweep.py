@@ -2,7 +2,7 @@
 """gelmpm-sweep: runs a scene for each value (or combination of values) of some entries, one run
 after another, each in its own output directory, and collects a table of what they ended with.
 
-    gelmpm-sweep scene.prm --vary "Section/Entry=V1,V2,..." [--vary ...] [--zip]
+    gelmpm-sweep scene.prm --vary "Section/Entry=V1,V2,..." [--vary ...] [--zip] [--separator TEXT]
         [--set "Section/Entry=V" ...] [--collect SPEC,...] [--output DIR] [--gelmpm PATH]
         [--launcher "mpirun -n 2"] [--skip-done] [--dry-run]
 
@@ -11,7 +11,8 @@ runs it as well.)
 
 --vary ENTRY=LIST  an entry of the scene (as for gelmpm --set) and its values, separated by commas,
                    or by '|' when the list holds a '|' (for values with commas of their own:
-                   --vary "Background grid/Cells=20, 80 | 40, 160"). Several --vary: every
+                   --vary "Background grid/Cells=20, 80 | 40, 160"), or by --separator TEXT
+                   (for values with both, e.g. selectors with '||'). Several --vary: every
                    combination (their product; the first --vary changes slowest), or with --zip
                    the first values together, then the second ones, ... (lists of equal length).
 --set ENTRY=VALUE  an override that every run gets (before the varied ones).
@@ -91,9 +92,10 @@ def on_sigterm(signal_number, frame):
     raise Terminated()
 
 
-def split_values(text):
-    """The values of a --vary list: separated by '|' if it holds one, else by commas."""
-    separator = "|" if "|" in text else ","
+def split_values(text, separator=None):
+    """The values of a --vary list: separated by @p separator, else by '|' if the list holds one,
+    else by commas."""
+    separator = separator or ("|" if "|" in text else ",")
     values = [value.strip() for value in text.split(separator)]
     if not all(values):
         raise SweepError(f"an empty value in '{text}' (values are separated by "
@@ -309,12 +311,13 @@ def print_table(header, rows):
 
 def parse(argv):
     parser = argparse.ArgumentParser(
-        prog="gelmpm-sweep", description=__doc__.splitlines()[0],
+        prog="gelmpm-sweep", description=__doc__.split("\n\n")[0],
         formatter_class=argparse.RawDescriptionHelpFormatter,
-        epilog="\n".join(__doc__.splitlines()[1:]))
+        epilog=__doc__.split("\n\n", 1)[1])
     parser.add_argument("scene")
     parser.add_argument("--vary", action="append", default=[], metavar="ENTRY=LIST")
     parser.add_argument("--zip", action="store_true")
+    parser.add_argument("--separator", metavar="TEXT")
     parser.add_argument("--set", action="append", default=[], metavar="ENTRY=VALUE")
     parser.add_argument("--collect", action="append", default=[], metavar="SPEC")
     parser.add_argument("--output", metavar="DIR")
@@ -336,7 +339,7 @@ def plan(args):
         entry, values = parse_entry(text, "--vary")
         if entry in [e for e, _ in varied]:
             raise SweepError(f"--vary names '{entry}' twice")
-        varied.append((entry, split_values(values)))
+        varied.append((entry, split_values(values, args.separator)))
     fixed = [parse_entry(text, "--set") for text in args.set]
     output = os.path.abspath(args.output or "sweep_" + os.path.splitext(
         os.path.basename(args.scene))[0])
