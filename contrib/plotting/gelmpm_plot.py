@@ -427,7 +427,7 @@ def parse(argv):
     parser.add_argument("--y", action="append", default=[], metavar="COLUMN")
     parser.add_argument("--x", default="t_over_tau_d", metavar="COLUMN")
     parser.add_argument("--events", action="store_true")
-    parser.add_argument("--log", default="", choices=["", "x", "y", "xy"])
+    parser.add_argument("--log", default="", choices=["x", "y", "xy"])
     parser.add_argument("--relaxation", nargs="?", const="auto", metavar="COLUMN")
     parser.add_argument("--load-end", type=float, metavar="T")
     parser.add_argument("--final-force", type=float, metavar="F")
