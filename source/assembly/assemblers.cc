@@ -3,6 +3,7 @@
 #include <gelmpm/assembly/contact.h>
 #include <gelmpm/assembly/displacement_nitsche.h>
 #include <gelmpm/assembly/neumann_terms.h>
+#include <gelmpm/assembly/self_contact.h>
 #include <gelmpm/assembly/volume_term.h>
 
 #include <algorithm>
@@ -75,6 +76,10 @@ namespace GelMPM
       }
     if (some_piece(flux_given))
       add(surface_term<SolventFluxAssembler>(in));
+    // The gel against itself adds nothing at its points, only beyond the blocks: last.
+    if constexpr (dim == 2)
+      if (in.contact.self_contact.enabled())
+        add(surface_term<SelfContactAssembler>(in)).set_settings(in.contact.self_contact);
     return terms;
   }
 
@@ -104,7 +109,8 @@ namespace GelMPM
     terms.clear();
     volume_terms.clear();
     surface_terms.clear();
-    contact_term = nullptr;
+    contact_term      = nullptr;
+    self_contact_term = nullptr;
     for (const auto *list : {&scene_terms, &added_terms})
       for (const auto &term : *list)
         {
@@ -112,6 +118,9 @@ namespace GelMPM
           (term->at_volume_points() ? volume_terms : surface_terms).push_back(term.get());
           if (const auto *contact = dynamic_cast<const ContactAssembler<dim> *>(term.get()))
             contact_term = contact;
+          if constexpr (dim == 2)
+            if (const auto *self = dynamic_cast<const SelfContactAssembler<dim> *>(term.get()))
+              self_contact_term = self;
         }
   }
 
@@ -145,6 +154,14 @@ namespace GelMPM
   TermList<dim>::contact() const
   {
     return contact_term;
+  }
+
+
+  template <int dim>
+  const SelfContactAssembler<dim> *
+  TermList<dim>::self_contact() const
+  {
+    return self_contact_term;
   }
 
 

@@ -51,6 +51,7 @@ namespace GelMPM
       "switch in and out from one Newton iteration to the next; a smaller factor (e.g. 0.01) "
       "lets the traction decide within that noise (doc/flat_punch.md, \"A rigid punch\"). "
       "The terms of an active point are the same. Not used by the penalty method.");
+    SelfContactSettings::declare_parameters(prm);
     prm.leave_subsection();
   }
 
@@ -69,6 +70,7 @@ namespace GelMPM
     penalty                = prm.get_double("Penalty");
     active_set_factor      = prm.get_double("Active set factor");
     sides                  = dealii::Utilities::split_string_list(prm.get("Grid sides"), ',');
+    self_contact.parse_parameters(prm, dim);
     prm.leave_subsection();
 
     const std::vector<std::string> allowed(side_names.begin(), side_names.begin() + 2 * dim);

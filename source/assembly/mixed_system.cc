@@ -343,11 +343,58 @@ namespace GelMPM
       },
       AssemblyScratch<dim>(),
       AssemblyCopy());
+    if (!failed)
+      add_beyond_blocks(solution, dt, with_matrix);
     if (with_matrix)
       matrix_.compress(dealii::VectorOperation::add);
     Collective::sum_in_place(communicator, residual_.begin(), residual_.size());
     // Collective: every rank learns of a failure on any, before the next collective call.
     Collective::agree_on_failure<NonPhysicalState>(communicator, failed ? failure : "");
+  }
+
+
+  template <int dim>
+  void
+  MixedSystem<dim>::add_beyond_blocks(const dealii::Vector<double> &solution,
+                                      const double                  dt,
+                                      const bool                    with_matrix)
+  {
+    std::vector<AssemblyCopy> copies;
+    for (const auto *term : terms.all())
+      term->assemble_beyond_blocks(cache, solution, dt, with_matrix, copies);
+    for (auto &copy : copies)
+      {
+        // The axis unknowns keep only their blocks' diagonal entries.
+        for (unsigned int i = 0; i < copy.dofs.size() && !on_axis.empty(); ++i)
+          if (on_axis[copy.dofs[i]])
+            {
+              copy.residual(i) = 0.;
+              for (unsigned int j = 0; j < copy.dofs.size() && with_matrix; ++j)
+                copy.matrix(i, j) = copy.matrix(j, i) = 0.;
+            }
+        for (unsigned int i = 0; i < copy.dofs.size(); ++i)
+          residual_(copy.dofs[i]) += copy.residual(i);
+        if (with_matrix)
+          add_to_matrix(copy);
+      }
+  }
+
+
+  template <int dim>
+  typename MixedSystem<dim>::SelfContactState
+  MixedSystem<dim>::self_contact_state(const dealii::Vector<double> &solution) const
+  {
+    SelfContactState state;
+    if constexpr (dim == 2)
+      if (const auto *self = terms.self_contact())
+        {
+          const auto s      = self->state(cache, solution);
+          state.points      = s.points;
+          state.force       = s.force;
+          state.area        = s.area;
+          state.penetration = s.penetration;
+        }
+    return state;
   }
 
 

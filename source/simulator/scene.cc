@@ -64,6 +64,12 @@ namespace GelMPM
                 "': both would write the statistics columns " + name +
                 "_force_x, ..., and the piece's force would be lost",
               "give the obstacle a name of its own, e.g. '" + name + "_obstacle'");
+    require(!contact.self_contact.enabled() ||
+              dealii::Utilities::MPI::n_mpi_processes(communicator) == 1,
+            "Contact/Self contact/Method",
+            "is penalty in a run on several MPI ranks, but the pairs of points and segments are "
+            "found on one rank only for now",
+            "run on one rank, or set 'Method = none'");
     obstacles = parse_obstacles<dim>(prm, obstacle_names);
     for (auto &obstacle : obstacles)
       obstacle.check_inside_grid(grid.lower, grid.upper);
@@ -377,7 +383,7 @@ namespace GelMPM
                                                 nitsche,
                                                 *spaces,
                                                 triangulation->get_communicator());
-    if (contact.enabled())
+    if (contact.enabled() || contact.self_contact.enabled())
       system->set_contact(contact, obstacles);
   }
 

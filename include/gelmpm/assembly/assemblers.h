@@ -7,6 +7,7 @@
 #include <gelmpm/assembly/nitsche_settings.h>
 #include <gelmpm/assembly/point_assembler.h>
 #include <gelmpm/assembly/point_cache.h>
+#include <gelmpm/assembly/self_contact.h>
 #include <gelmpm/scene/boundary_conditions.h>
 #include <gelmpm/scene/obstacle.h>
 
@@ -34,7 +35,8 @@ namespace GelMPM
   /**
    * The terms of the weak form that the scene of @p inputs needs, in the order of the
    * floating-point sums (Lethe's setup_assemblers()): the volume term, then at the surface points
-   * traction, displacement Nitsche, contact, chemical-potential Nitsche and solvent flux. A term
+   * traction, displacement Nitsche, contact, chemical-potential Nitsche, solvent flux and the
+   * gel's contact with itself (2D, which adds beyond the blocks only). A term
    * is left out where no piece asks for it (no displacement Nitsche term on a body without
    * prescribed displacements, no contact term with contact off), so a run does no work for what
    * is off; a term that is left out is one that would add nothing at any point, so the sums of
@@ -50,7 +52,7 @@ namespace GelMPM
    * @brief The terms of a system: the scene's (setup_assemblers()) and those added to them
    * (add()), in the order of the sums, and the views the assembly loops over (the terms at volume
    * points, those at surface points). It knows one term by its kind, contact, whose state and
-   * reactions the system reports.
+   * reactions the system reports, and the contact of the gel with itself, whose state it reports.
    */
   template <int dim>
   class TermList
@@ -78,6 +80,10 @@ namespace GelMPM
     const ContactAssembler<dim> *
     contact() const;
 
+    /** The term of the gel's contact with itself (nullptr: 'Contact/Self contact' off). */
+    const SelfContactAssembler<dim> *
+    self_contact() const;
+
     /** The pairs of cells the terms couple beyond the blocks of @p cache
      * (PointAssembler::add_cell_couplings()), each (a, b) with a < b, sorted, once each. */
     std::vector<std::pair<unsigned int, unsigned int>>
@@ -90,7 +96,8 @@ namespace GelMPM
 
     std::vector<std::unique_ptr<PointAssembler<dim>>> scene_terms, added_terms;
     std::vector<const PointAssembler<dim> *>          terms, volume_terms, surface_terms;
-    const ContactAssembler<dim>                      *contact_term = nullptr;
+    const ContactAssembler<dim>                      *contact_term      = nullptr;
+    const SelfContactAssembler<dim>                  *self_contact_term = nullptr;
   };
 } // namespace GelMPM
 

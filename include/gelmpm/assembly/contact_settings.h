@@ -1,6 +1,8 @@
 #ifndef gelmpm_assembly_contact_settings_h
 #define gelmpm_assembly_contact_settings_h
 
+#include <gelmpm/assembly/self_contact_settings.h>
+
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
@@ -69,6 +71,10 @@ namespace GelMPM
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
+
+    /** The subsection 'Self contact': the gel's boundary against itself (off by default,
+     * independent of 'Method'). */
+    SelfContactSettings self_contact;
 
     /** The names of the rigid obstacles ('Contact/Obstacles', read by SceneStructure). */
     std::vector<std::string> obstacles;

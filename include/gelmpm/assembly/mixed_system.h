@@ -270,6 +270,24 @@ namespace GelMPM
     std::pair<unsigned int, double>
     contact_state(const dealii::Vector<double> &solution) const;
 
+    /** The gel's contact with itself ('Contact/Self contact'; SelfContactAssembler::State). */
+    struct SelfContactState
+    {
+      /** Surface points in active contact (each face's points count). */
+      unsigned int points = 0;
+      /** The sum of the pairs' normal forces, in G times length^(dim-1) (per unit thickness in
+       * 2D, revolved in an axisymmetric scene). */
+      double force = 0.;
+      /** The area in contact (2D: length per unit thickness), each face counted once. */
+      double area = 0.;
+      /** The largest penetration of a point behind the surface. */
+      double penetration = 0.;
+    };
+
+    /** The self-contact of @p solution with the step's pairs (all zero when off). */
+    SelfContactState
+    self_contact_state(const dealii::Vector<double> &solution) const;
+
     /** What the boundary of one piece exerts on the body over a step. */
     struct PieceBalance
     {
@@ -353,6 +371,13 @@ namespace GelMPM
     /** Add a block's local matrix to the tangent (the copier of the assembly). */
     void
     add_to_matrix(const AssemblyCopy &copy);
+
+    /** Add the terms' systems beyond the blocks (pair terms, PointAssembler::
+     * assemble_beyond_blocks()), after the blocks. */
+    void
+    add_beyond_blocks(const dealii::Vector<double> &solution,
+                      const double                  dt,
+                      const bool                    with_matrix);
 
     /** The order in which assemble() visits the blocks (the cells' Z-order in 3D). */
     std::vector<unsigned int>

@@ -171,7 +171,8 @@ namespace GelMPM
    *
    * A term that couples the unknowns of two cells that are not neighbours (a pair term: a
    * surface point against the surface of another part of the body) declares the pairs of cells
-   * in add_cell_couplings(); the sparsity pattern then holds the entries between their unknowns.
+   * in add_cell_couplings(); the sparsity pattern then holds the entries between their unknowns,
+   * which it writes in assemble_beyond_blocks().
    */
   template <int dim>
   class PointAssembler
@@ -229,6 +230,21 @@ namespace GelMPM
     virtual void
     add_cell_couplings(const PointCache<dim> & /*cache*/,
                        std::vector<std::pair<unsigned int, unsigned int>> & /*pairs*/) const
+    {}
+
+    /**
+     * The entries of a pair term (those between the cells of add_cell_couplings()): append to
+     * @p copies local systems, each on the unknowns it lists in AssemblyCopy::dofs (sorted, no
+     * repetitions), for the Newton iterate @p solution of the points of @p cache. MixedSystem
+     * adds them after the blocks, in the order of the terms and of @p copies, so the sums stay
+     * deterministic. Nothing by default.
+     */
+    virtual void
+    assemble_beyond_blocks(const PointCache<dim> & /*cache*/,
+                           const dealii::Vector<double> & /*solution*/,
+                           const double /*dt*/,
+                           const bool /*with_matrix*/,
+                           std::vector<AssemblyCopy> & /*copies*/) const
     {}
   };
 

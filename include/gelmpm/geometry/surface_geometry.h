@@ -35,6 +35,7 @@ namespace GelMPM
       dealii::Tensor<1, 2> normal_0; ///< outward normal there (any length, N_0 A_0)
       dealii::Point<2>     x;        ///< current position
       double               mu = 0.;  ///< chemical potential mu/k_BT
+      unsigned int index = 0; ///< the caller's number of the point, carried through the ordering
     };
 
     /**

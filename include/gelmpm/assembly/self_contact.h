@@ -1,0 +1,154 @@
+#ifndef gelmpm_assembly_self_contact_h
+#define gelmpm_assembly_self_contact_h
+
+#include <gelmpm/assembly/point_assembler.h>
+#include <gelmpm/assembly/self_contact_settings.h>
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <array>
+#include <vector>
+
+namespace GelMPM
+{
+  /**
+   * @brief The signed gap g of a point x_s from the line of the segment [x_a, x_b] of a surface
+   * polyline, g = (x_s - x_a) . n with n the segment's outward unit normal (the polyline runs
+   * with the body on its right, SurfaceGeometry::order_along_surface(), so n is the tangent
+   * turned by +90 degrees), and its first and second derivatives with respect to the six
+   * coordinates (x_s, x_a, x_b) (component fastest). g < 0: the point is behind the segment.
+   */
+  struct PointSegmentGap
+  {
+    double g = 0.;
+    /** The parameter of the point's projection, 0 at x_a, 1 at x_b. */
+    double xi = 0.;
+    /** The segment's outward unit normal. */
+    dealii::Tensor<1, 2>                 normal;
+    std::array<double, 6>                gradient{};
+    std::array<std::array<double, 6>, 6> hessian{};
+  };
+
+  /** The gap of @p x_s from the segment [@p x_a, @p x_b] (a segment of nonzero length). */
+  PointSegmentGap
+  point_segment_gap(const dealii::Point<2> &x_s,
+                    const dealii::Point<2> &x_a,
+                    const dealii::Point<2> &x_b);
+
+
+  /**
+   * @brief Contact of the gel's boundary with itself ('Contact/Self contact'), a pair term: the
+   * surface points of the chosen free pieces against the current surface of the same body, point
+   * to segment in 2D (plane strain and axisymmetric), frictionless, by a penalty.
+   *
+   * At every MixedSystem::setup() (add_cell_couplings(), the points at x_n) the chosen points are
+   * ordered into polylines along the surface (SurfaceGeometry::order_along_surface() on their
+   * initial positions and normals, as the observables order them), and each point is paired with
+   * the segments that, at x_n, lie within 'Search distance' in front of it or up to 'Largest
+   * depth' behind, face it (its normal against theirs) and whose ends lie farther than 'Minimum
+   * arc length' from it along the surface (points of different curves always). The pairs are
+   * fixed over the step; they couple the point's cell with the cells of the segment's two ends,
+   * which may be no neighbours, so the term declares those pairs of cells (the sparsity pattern
+   * holds them and is kept while they stay).
+   *
+   * For each Newton iterate (assemble_beyond_blocks()) a point is active against its pair whose
+   * segment it lies behind, g < 0 with its projection on the segment (0 <= xi <= 1), the deepest
+   * one if several: the active set of the iterate, as for the obstacles. Its energy is
+   * W = A_s beta_s g^2 / 2 (beta_s = gamma_s G / h_u), R_u[w] = dW/dx . w at the three points and
+   * K its exact second derivative (the segment's turning included), symmetric. Each contact is
+   * seen from both sides (the points of each face against the segments of the other).
+   *
+   * Its per-point assemble() adds nothing: what it adds goes beyond the blocks. Not in a scene's
+   * list when the subsection is off. One MPI rank, 2D only (Scene refuses the rest).
+   */
+  template <int dim>
+  class SelfContactAssembler final : public SurfaceTermAssembler<dim>
+  {
+  public:
+    using SurfaceTermAssembler<dim>::SurfaceTermAssembler;
+
+    /** Use @p settings ('Contact/Self contact'); the chosen pieces are resolved here. */
+    void
+    set_settings(const SelfContactSettings &settings);
+
+    void
+    assemble(const PointRecord<dim> &,
+             const double,
+             const bool,
+             AssemblyScratch<dim> &,
+             AssemblyCopy &) const override
+    {}
+
+    /** The step's pairs (found here) and the pairs of cells they couple. */
+    void
+    add_cell_couplings(const PointCache<dim>                              &cache,
+                       std::vector<std::pair<unsigned int, unsigned int>> &pairs) const override;
+
+    /** One local system per active point, on the unknowns of its cell and its segment's. */
+    void
+    assemble_beyond_blocks(const PointCache<dim>        &cache,
+                           const dealii::Vector<double> &solution,
+                           const double                  dt,
+                           const bool                    with_matrix,
+                           std::vector<AssemblyCopy>    &copies) const override;
+
+    /** What statistics.csv reports of the self-contact of an iterate. */
+    struct State
+    {
+      /** Points in active contact (each face's points count). */
+      unsigned int points = 0;
+      /** The sum of the pairs' normal forces, sum A_s beta_s |g| (the force on each face). */
+      double force = 0.;
+      /** Half the sum of the active points' A_s: the area (2D: length) in contact, both faces
+       * being seen. */
+      double area = 0.;
+      /** The largest penetration -g of an active point (0 if none). */
+      double penetration = 0.;
+    };
+
+    /** The self-contact of @p solution with the step's pairs (@p cache of the last setup). */
+    State
+    state(const PointCache<dim> &cache, const dealii::Vector<double> &solution) const;
+
+    /** The number of pairs of the step. */
+    unsigned int
+    n_pairs() const;
+
+  private:
+    /** A point (its record) and a segment (the records of its ends, in the polyline's order). */
+    struct Pair
+    {
+      unsigned int point, a, b;
+    };
+
+    /** The pairs of the points of @p cache at x_n. */
+    std::vector<Pair>
+    find_pairs(const PointCache<dim> &cache) const;
+
+    /** The current position x_n + du of record @p p for @p solution. */
+    dealii::Point<dim>
+    current_position(const PointCache<dim>        &cache,
+                     const unsigned int            p,
+                     const dealii::Vector<double> &solution) const;
+
+    /** Per pair, its gap at @p solution; per point, the index of its active pair (or -1). */
+    std::vector<int>
+    active_pairs(const PointCache<dim>        &cache,
+                 const dealii::Vector<double> &solution,
+                 std::vector<PointSegmentGap> &gaps) const;
+
+    /** beta_s at the point @p r. */
+    double
+    penalty(const PointRecord<dim> &r) const;
+
+    SelfContactSettings settings;
+    /** Per piece, whether its points take part. */
+    std::vector<bool> chosen;
+    /** The pairs of the step, sorted by point (found at setup, where the couplings are asked:
+     * they are the couplings). */
+    mutable std::vector<Pair> pairs_;
+  };
+} // namespace GelMPM
+
+#endif

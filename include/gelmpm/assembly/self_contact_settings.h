@@ -1,0 +1,59 @@
+#ifndef gelmpm_assembly_self_contact_settings_h
+#define gelmpm_assembly_self_contact_settings_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+#include <vector>
+
+namespace GelMPM
+{
+  /**
+   * @brief The subsection "Contact/Self contact": contact of the gel's boundary with itself
+   * (SelfContactAssembler, doc/method.md, "Contact of the gel with itself"). Off by default; a
+   * scene that leaves it off has no self-contact term in its list and does no work for it.
+   *
+   * In 2D (plane strain and axisymmetric): every surface point of the chosen pieces against the
+   * segments of their current surface polylines (SurfaceGeometry::order_along_surface()), its
+   * own segments and those less than 'Minimum arc length' away along the surface excepted,
+   * frictionless, by a penalty beta_s = gamma_s G / h_u on the penetration.
+   */
+  struct SelfContactSettings
+  {
+    enum class Method
+    {
+      none,
+      penalty
+    };
+
+    Method method = Method::none;
+    /** gamma_s: beta_s = gamma_s G / h_u. */
+    double penalty = 1000.;
+    /** The pieces whose surface points touch each other (empty: every free piece). */
+    std::vector<std::string> pieces;
+    /** A point and a segment closer than this (times h_u) at the start of a step are a pair. */
+    double search_distance = 1.;
+    /** Along the surface (initial configuration), a point and the ends of a segment closer than
+     * this (times h_u) never touch: its own segments and their neighbours. */
+    double minimum_arc_length = 3.;
+    /** At the start of a step, a point up to this far (times h_u) behind a segment is still its
+     * pair (a penetration the penalty left); farther it is the other face of a thin body. */
+    double largest_depth = 0.25;
+
+    bool
+    enabled() const
+    {
+      return method != Method::none;
+    }
+
+    /** Its entries, in the subsection "Self contact" of the entered section "Contact". */
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    /** Read and check them (the section "Contact" entered); 3D is refused for now. */
+    void
+    parse_parameters(dealii::ParameterHandler &prm, const unsigned int dim);
+  };
+} // namespace GelMPM
+
+#endif

@@ -1,0 +1,345 @@
+#include <gelmpm/assembly/self_contact.h>
+#include <gelmpm/core/input_error.h>
+#include <gelmpm/geometry/surface_geometry.h>
+#include <gelmpm/particles/property_layout.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace GelMPM
+{
+  using dealii::Point;
+  using dealii::Tensor;
+
+
+  PointSegmentGap
+  point_segment_gap(const Point<2> &x_s, const Point<2> &x_a, const Point<2> &x_b)
+  {
+    // With d = x_s - x_a, e = x_b - x_a, L = |e|, t = e / L and R the rotation by +90 degrees:
+    // g = d . R e / L. Its derivatives in (d, e) are mapped to (x_s, x_a, x_b) by
+    // d = x_s - x_a, e = x_b - x_a.
+    PointSegmentGap    result;
+    const Tensor<1, 2> d = x_s - x_a, e = x_b - x_a;
+    const double       L = e.norm();
+    const Tensor<1, 2> t = e / L;
+    const Tensor<1, 2> n({-t[1], t[0]});
+    const Tensor<1, 2> RTd({d[1], -d[0]}); // R^T d
+    const double       R[2][2] = {{0., -1.}, {1., 0.}};
+    const double       g       = d * n;
+    const Tensor<1, 2> g_d     = n;
+    const Tensor<1, 2> g_e     = (RTd - g * t) / L;
+    const Tensor<2, 2> I       = dealii::unit_symmetric_tensor<2>();
+    Tensor<2, 2>       H_de, H_ee; // H_dd = 0
+    for (unsigned int i = 0; i < 2; ++i)
+      for (unsigned int j = 0; j < 2; ++j)
+        {
+          H_de[i][j] = (R[i][j] - n[i] * t[j]) / L;
+          H_ee[i][j] =
+            (-(RTd[i] * t[j] + t[i] * RTd[j]) - g * I[i][j] + 3. * g * t[i] * t[j]) / (L * L);
+        }
+    result.g      = g;
+    result.xi     = d * t / L;
+    result.normal = n;
+    // The coefficients of x_s, x_a, x_b in d and in e.
+    const double in_d[3] = {1., -1., 0.}, in_e[3] = {0., -1., 1.};
+    for (unsigned int k = 0; k < 3; ++k)
+      for (unsigned int i = 0; i < 2; ++i)
+        {
+          result.gradient[2 * k + i] = in_d[k] * g_d[i] + in_e[k] * g_e[i];
+          for (unsigned int l = 0; l < 3; ++l)
+            for (unsigned int j = 0; j < 2; ++j)
+              result.hessian[2 * k + i][2 * l + j] = in_d[k] * in_e[l] * H_de[i][j] +
+                                                     in_e[k] * in_d[l] * H_de[j][i] +
+                                                     in_e[k] * in_e[l] * H_ee[i][j];
+        }
+    return result;
+  }
+
+
+  namespace
+  {
+    /**
+     * How far beyond its ends (relative to its length) a point still projects onto a segment: a
+     * point that projects onto the common end of two segments of a straight surface is on both,
+     * whatever the round-off of xi (both put the same force on that end; the deepest is taken).
+     */
+    constexpr double end_tolerance = 1e-9;
+  } // namespace
+
+
+  template <int dim>
+  void
+  SelfContactAssembler<dim>::set_settings(const SelfContactSettings &self_contact)
+  {
+    settings               = self_contact;
+    const auto &conditions = this->boundary_conditions;
+    chosen.assign(conditions.n_pieces(), false);
+    for (unsigned int p = 0; p < conditions.n_pieces(); ++p)
+      chosen[p] = settings.pieces.empty() && !conditions.piece(p).displacement_prescribed();
+    for (const auto &name : settings.pieces)
+      {
+        unsigned int p = 0;
+        while (p < conditions.n_pieces() && conditions.piece(p).name != name)
+          ++p;
+        require(p < conditions.n_pieces(),
+                "Contact/Self contact/Pieces",
+                "names '" + name + "', which is not a piece of 'Boundary conditions/Pieces'",
+                "list pieces of 'Boundary conditions/Pieces', or leave it empty (every free "
+                "piece)");
+        require(!conditions.piece(p).displacement_prescribed(),
+                "Contact/Self contact/Pieces",
+                "names '" + name + "', whose displacement is prescribed",
+                "list pieces with a free displacement only");
+        chosen[p] = true;
+      }
+  }
+
+
+  template <int dim>
+  double
+  SelfContactAssembler<dim>::penalty(const PointRecord<dim> &r) const
+  {
+    return settings.penalty * r.gel->shear_modulus() / this->spaces.h_u();
+  }
+
+
+  template <int dim>
+  unsigned int
+  SelfContactAssembler<dim>::n_pairs() const
+  {
+    return pairs_.size();
+  }
+
+
+  template <int dim>
+  Point<dim>
+  SelfContactAssembler<dim>::current_position(const PointCache<dim>        &cache,
+                                              const unsigned int            p,
+                                              const dealii::Vector<double> &solution) const
+  {
+    const PointRecord<dim> &r    = cache.points()[p];
+    const auto             &dofs = this->spaces.u().cell_dofs(cache.blocks()[r.block].u_cell);
+    const double           *N    = cache.u_values_at(r);
+    Point<dim>              x    = r.x + r.edge_offset;
+    for (unsigned int a = 0; a < dofs.size(); ++a)
+      for (unsigned int d = 0; d < dim; ++d)
+        x[d] += N[a] * solution(dim * dofs[a] + d);
+    return x;
+  }
+
+
+  template <int dim>
+  std::vector<typename SelfContactAssembler<dim>::Pair>
+  SelfContactAssembler<dim>::find_pairs(const PointCache<dim> &cache) const
+  {
+    using Layout                                 = PropertyLayout<dim>;
+    const double                               h = this->spaces.h_u();
+    std::vector<SurfaceGeometry::SurfacePoint> surface;
+    const auto                                &points = cache.points();
+    for (unsigned int p = 0; p < points.size(); ++p)
+      {
+        const auto &r = points[p];
+        if (r.kind == PointKind::volume || r.piece < 0 || !chosen[r.piece])
+          continue;
+        SurfaceGeometry::SurfacePoint s;
+        const auto                    properties = cache.particle(p)->get_properties();
+        for (unsigned int d = 0; d < 2; ++d)
+          {
+            s.X_0[d]      = r.X0[d];
+            s.normal_0[d] = properties[Layout::normal_area_0 + d];
+            s.x[d]        = r.x[d] + r.edge_offset[d];
+          }
+        s.index = p;
+        surface.push_back(s);
+      }
+    // As the observables order a piece: surface points are at most h apart.
+    const auto line = SurfaceGeometry::order_along_surface(std::move(surface), 2. * h);
+
+    // The segments (i, i + 1) of every curve, the closing one of a closed curve, and the curve of
+    // every point.
+    std::vector<std::array<unsigned int, 2>> segments;
+    std::vector<unsigned int>                curve_of(line.points.size());
+    for (unsigned int c = 0; c < line.n_curves(); ++c)
+      {
+        const unsigned int begin = line.curve_begin[c], end = line.curve_begin[c + 1];
+        for (unsigned int i = begin; i < end; ++i)
+          {
+            curve_of[i] = c;
+            if (i + 1 < end)
+              segments.push_back({{i, i + 1}});
+          }
+        if (line.closed[c] && end - begin >= 3)
+          segments.push_back({{end - 1, begin}});
+      }
+    const auto arc_length = [&line](const unsigned int i, const unsigned int j, const unsigned c) {
+      const double s = std::abs(line.s_0[i] - line.s_0[j]);
+      return line.closed[c] ? std::min(s, line.length_0[c] - s) : s;
+    };
+
+    const double search = settings.search_distance * h, depth = settings.largest_depth * h,
+                 separation = settings.minimum_arc_length * h;
+    std::vector<Pair> found;
+    for (unsigned int i = 0; i < line.points.size(); ++i)
+      {
+        const Point<2> &x_s    = line.points[i].x;
+        const auto     &normal = points[line.points[i].index].normal;
+        for (const auto &[ja, jb] : segments)
+          {
+            const Point<2> &x_a = line.points[ja].x, &x_b = line.points[jb].x;
+            // Bounding boxes first: most segments are far away.
+            bool far = false;
+            for (unsigned int d = 0; d < 2 && !far; ++d)
+              far = x_s[d] < std::min(x_a[d], x_b[d]) - search ||
+                    x_s[d] > std::max(x_a[d], x_b[d]) + search;
+            if (far)
+              continue;
+            const unsigned int c = curve_of[ja];
+            if (curve_of[i] == c &&
+                (arc_length(i, ja, c) < separation || arc_length(i, jb, c) < separation))
+              continue;
+            const Tensor<1, 2> e = x_b - x_a;
+            const double       L = e.norm();
+            if (L == 0.)
+              continue;
+            const Tensor<1, 2> n({-e[1] / L, e[0] / L});
+            const double       g        = (x_s - x_a) * n;
+            const double       xi       = std::clamp((x_s - x_a) * e / (L * L), 0., 1.);
+            const double       distance = (x_s - (x_a + xi * e)).norm();
+            if (distance <= search && g >= -depth && normal * n < 0.)
+              found.push_back({line.points[i].index, line.points[ja].index, line.points[jb].index});
+          }
+      }
+    return found;
+  }
+
+
+  template <int dim>
+  void
+  SelfContactAssembler<dim>::add_cell_couplings(
+    const PointCache<dim>                              &cache,
+    std::vector<std::pair<unsigned int, unsigned int>> &pairs) const
+  {
+    pairs_ = find_pairs(cache);
+    for (const auto &pair : pairs_)
+      {
+        const unsigned int cells[3] = {cache.blocks()[cache.points()[pair.point].block].u_cell,
+                                       cache.blocks()[cache.points()[pair.a].block].u_cell,
+                                       cache.blocks()[cache.points()[pair.b].block].u_cell};
+        for (unsigned int k = 0; k < 3; ++k)
+          for (unsigned int l = k + 1; l < 3; ++l)
+            if (cells[k] != cells[l])
+              pairs.emplace_back(cells[k], cells[l]);
+      }
+  }
+
+
+  template <int dim>
+  std::vector<int>
+  SelfContactAssembler<dim>::active_pairs(const PointCache<dim>        &cache,
+                                          const dealii::Vector<double> &solution,
+                                          std::vector<PointSegmentGap> &gaps) const
+  {
+    gaps.resize(pairs_.size());
+    std::vector<int> active;
+    // The pairs of a point follow each other; its active pair is the deepest it lies behind.
+    for (unsigned int k = 0; k < pairs_.size();)
+      {
+        const unsigned int point   = pairs_[k].point;
+        const Point<dim>   x_s     = current_position(cache, point, solution);
+        int                deepest = -1;
+        for (; k < pairs_.size() && pairs_[k].point == point; ++k)
+          {
+            gaps[k] = point_segment_gap(x_s,
+                                        current_position(cache, pairs_[k].a, solution),
+                                        current_position(cache, pairs_[k].b, solution));
+            if (gaps[k].g < 0. && gaps[k].xi >= -end_tolerance &&
+                gaps[k].xi <= 1. + end_tolerance && (deepest < 0 || gaps[k].g < gaps[deepest].g))
+              deepest = k;
+          }
+        if (deepest >= 0)
+          active.push_back(deepest);
+      }
+    return active;
+  }
+
+
+  template <int dim>
+  void
+  SelfContactAssembler<dim>::assemble_beyond_blocks(const PointCache<dim>        &cache,
+                                                    const dealii::Vector<double> &solution,
+                                                    const double /*dt*/,
+                                                    const bool                 with_matrix,
+                                                    std::vector<AssemblyCopy> &copies) const
+  {
+    std::vector<PointSegmentGap> gaps;
+    for (const int k : active_pairs(cache, solution, gaps))
+      {
+        const Pair             &pair  = pairs_[k];
+        const PointSegmentGap  &gap   = gaps[k];
+        const PointRecord<dim> &point = cache.points()[pair.point];
+        // W = A beta g^2 / 2: dW = A beta g dg, d2W = A beta (dg (x) dg + g d2g).
+        const double                     scale    = point.measure * penalty(point);
+        const unsigned int               nodes[3] = {pair.point, pair.a, pair.b};
+        const std::vector<unsigned int> *dofs[3];
+        const double                    *N[3];
+        AssemblyCopy                     copy;
+        for (unsigned int m = 0; m < 3; ++m)
+          {
+            const auto &r = cache.points()[nodes[m]];
+            dofs[m]       = &this->spaces.u().cell_dofs(cache.blocks()[r.block].u_cell);
+            N[m]          = cache.u_values_at(r);
+            for (const unsigned int i : *dofs[m])
+              for (unsigned int d = 0; d < dim; ++d)
+                copy.dofs.push_back(dim * i + d);
+          }
+        std::sort(copy.dofs.begin(), copy.dofs.end());
+        copy.dofs.erase(std::unique(copy.dofs.begin(), copy.dofs.end()), copy.dofs.end());
+        const auto local = [&copy](const unsigned int global) {
+          return std::lower_bound(copy.dofs.begin(), copy.dofs.end(), global) - copy.dofs.begin();
+        };
+        copy.residual.reinit(copy.dofs.size());
+        if (with_matrix)
+          copy.matrix.reinit(copy.dofs.size(), copy.dofs.size());
+        for (unsigned int m = 0; m < 3; ++m)
+          for (unsigned int a = 0; a < dofs[m]->size(); ++a)
+            for (unsigned int i = 0; i < dim; ++i)
+              {
+                const unsigned int row = local(dim * (*dofs[m])[a] + i);
+                copy.residual(row) += scale * gap.g * gap.gradient[2 * m + i] * N[m][a];
+                if (!with_matrix)
+                  continue;
+                for (unsigned int l = 0; l < 3; ++l)
+                  for (unsigned int c = 0; c < dofs[l]->size(); ++c)
+                    for (unsigned int j = 0; j < dim; ++j)
+                      copy.matrix(row, local(dim * (*dofs[l])[c] + j)) +=
+                        scale * N[m][a] * N[l][c] *
+                        (gap.gradient[2 * m + i] * gap.gradient[2 * l + j] +
+                         gap.g * gap.hessian[2 * m + i][2 * l + j]);
+              }
+        copies.push_back(std::move(copy));
+      }
+  }
+
+
+  template <int dim>
+  typename SelfContactAssembler<dim>::State
+  SelfContactAssembler<dim>::state(const PointCache<dim>        &cache,
+                                   const dealii::Vector<double> &solution) const
+  {
+    State                        state;
+    std::vector<PointSegmentGap> gaps;
+    for (const int k : active_pairs(cache, solution, gaps))
+      {
+        const PointRecord<dim> &point = cache.points()[pairs_[k].point];
+        ++state.points;
+        state.force += point.measure * penalty(point) * -gaps[k].g;
+        state.area += 0.5 * point.measure;
+        state.penetration = std::max(state.penetration, -gaps[k].g);
+      }
+    return state;
+  }
+
+
+  // 2D only: point to segment (3D, point to facet, is not written yet; the settings refuse it).
+  template class SelfContactAssembler<2>;
+} // namespace GelMPM

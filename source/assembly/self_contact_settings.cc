@@ -1,0 +1,91 @@
+#include <gelmpm/assembly/nitsche_settings.h>
+#include <gelmpm/assembly/self_contact_settings.h>
+#include <gelmpm/core/input_error.h>
+
+#include <deal.II/base/utilities.h>
+
+#include <algorithm>
+
+namespace GelMPM
+{
+  void
+  SelfContactSettings::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    using namespace dealii;
+    prm.enter_subsection("Self contact");
+    prm.declare_entry(
+      "Method",
+      "none",
+      Patterns::Selection("none|penalty"),
+      "Contact of the gel's boundary with itself (doc/method.md, \"Contact of the gel with "
+      "itself\"): none (off: no term, no cost); penalty (the surface points of 'Pieces' against "
+      "the segments of their current surface, frictionless, beta_s g on a point behind a "
+      "segment). 2D (plane strain and axisymmetric), one MPI rank. Where the two sides share "
+      "cells of the background grid they also stay tied by its functions (not undone here).");
+    prm.declare_entry(
+      "Penalty",
+      "1000",
+      Patterns::Double(0.),
+      "gamma_s: the self-contact penalty is beta_s = gamma_s G / h_u. At most 1e8.");
+    prm.declare_entry("Pieces",
+                      "",
+                      Patterns::Anything(),
+                      "The boundary pieces whose surface points touch each other (any with the "
+                      "other), a comma-separated list of pieces with a free displacement; empty: "
+                      "every piece whose displacement is free.");
+    prm.declare_entry("Search distance",
+                      "1",
+                      Patterns::Double(0.),
+                      "In cells h_u: a surface point and a segment of the surface closer than this "
+                      "at the start of a step are a pair of the step (the pairs, and the sparsity "
+                      "pattern with them, are fixed over the step). A motion of more than this "
+                      "within one step passes unseen.");
+    prm.declare_entry("Minimum arc length",
+                      "3",
+                      Patterns::Double(0.),
+                      "In cells h_u: a point never touches a segment whose ends lie closer than "
+                      "this to it along the surface in the initial configuration (its own "
+                      "segments and their neighbours; on a closed curve the shorter way round).");
+    prm.declare_entry("Largest depth",
+                      "0.25",
+                      Patterns::Double(0.),
+                      "In cells h_u: at the start of a step a point up to this far behind a "
+                      "segment is still its pair (a penetration the penalty left); farther "
+                      "behind it is taken for the other face of a thin body.");
+    prm.leave_subsection();
+  }
+
+
+  void
+  SelfContactSettings::parse_parameters(dealii::ParameterHandler &prm, const unsigned int dim)
+  {
+    prm.enter_subsection("Self contact");
+    method             = prm.get("Method") == "penalty" ? Method::penalty : Method::none;
+    penalty            = prm.get_double("Penalty");
+    pieces             = dealii::Utilities::split_string_list(prm.get("Pieces"), ',');
+    search_distance    = prm.get_double("Search distance");
+    minimum_arc_length = prm.get_double("Minimum arc length");
+    largest_depth      = prm.get_double("Largest depth");
+    prm.leave_subsection();
+    if (!enabled())
+      return;
+    const std::string section = "Contact/Self contact/";
+    require(dim == 2,
+            section + "Method",
+            "is penalty in a 3D scene, but self-contact is made for 2D scenes only (point to "
+            "segment; point to facet is not written yet)",
+            "set 'Method = none', or run a 2D or axisymmetric scene");
+    require(penalty > 0. && penalty <= largest_penalty,
+            section + "Penalty",
+            "must lie in (0, 1e8]: above, the linear solves keep no digit",
+            "give gamma_s of e.g. 1000");
+    require(search_distance > 0.,
+            section + "Search distance",
+            "must be positive: no pair would ever be found",
+            "give e.g. 1 (one cell)");
+    require(minimum_arc_length > 0.,
+            section + "Minimum arc length",
+            "must be positive: a point would touch its own segments",
+            "give e.g. 3 (cells)");
+  }
+} // namespace GelMPM

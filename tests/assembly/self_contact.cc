@@ -1,0 +1,251 @@
+// Contact of the gel with itself ('Contact/Self contact', SelfContactAssembler), a pair term, on
+// one body of two blocks, [0, 1] x [0, 0.75] and [0, 1] x [1, 1.75], two cells of h = 0.125
+// apart (so that no B-spline is nonzero on both), in plane strain and axisymmetric (the left side
+// the axis), the facing sides the pieces that touch:
+// - the point-to-segment gap: its gradient and second derivative against central differences
+//   (1e-7 of their scale), and its value on a known configuration;
+// - the term is in the list only when the subsection switches it on, and it makes pairs of the
+//   facing sides at the setup (search distance 3 cells), which couple cells with no unknown in
+//   common (the tangent below writes their entries);
+// - with the upper block's displacement unknowns at du_y = -0.3 (a rigid shift by partition of
+//   unity; its bottom 0.05 behind the lower block's top) both faces' points are active, by 0.05,
+//   and the pair term's y-residual summed over the upper block's unknowns is minus the reported
+//   force sum A_s beta_s |g| (1e-10), over all unknowns zero (action and reaction, 1e-10 of it);
+// - on that state perturbed at random, the pair term's tangent (the system's with the term less
+//   the system's without it) equals the central finite-difference Jacobian of its residual to
+//   1e-6 of its largest entry, and is symmetric to 1e-12 (but for the radial unknowns on the
+//   axis, which the system holds at zero).
+#include <gelmpm/assembly/self_contact.h>
+#include <gelmpm/simulator/scene.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/lac/vector.h>
+
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <random>
+#include <string>
+
+#include "matrix_entries.h"
+
+using namespace dealii;
+
+namespace
+{
+  const std::vector<std::string> pieces = {"lower_top", "upper_bottom", "rest"};
+
+  bool
+  report(const std::string &what, const bool ok)
+  {
+    std::cout << "  " << what << ": " << (ok ? "yes" : "no  FAIL") << std::endl;
+    return ok;
+  }
+
+
+  /** The two blocks' scene, with self-contact by @p method, axisymmetric or not. */
+  struct TwoBlocks
+  {
+    ParameterHandler                  prm;
+    std::unique_ptr<GelMPM::Scene<2>> scene;
+
+    TwoBlocks(const std::string &method, const bool axisymmetric)
+    {
+      GelMPM::Scene<2>::declare_parameters(prm, pieces);
+      prm.parse_input_from_string(std::string(R"(
+        subsection Background grid
+          set Coordinate system = )") +
+                                  (axisymmetric ? "axisymmetric" : "Cartesian") + R"(
+          set Lower corner = )" + (axisymmetric ? "0" : "-0.25") +
+                                  R"(, -0.25
+          set Upper corner = 1.25, 2
+          set Cells = )" + (axisymmetric ? "10" : "12") +
+                                  R"(, 18
+        end
+        subsection Geometry
+          set Boxes = 0, 0 : 1, 0.75; 0, 1 : 1, 1.75
+        end
+        subsection Material points
+          set Points per cell = 3
+        end
+        subsection Boundary conditions
+          # The facing sides (flat: no corner touches); the rest not the axis of an
+          # axisymmetric scene, which has no area.
+          subsection lower_top
+            set Selector = ny > 0.5 && y < 0.875
+          end
+          subsection upper_bottom
+            set Selector = ny < -0.5 && y > 0.875
+          end
+          subsection rest
+            set Selector = x > 1e-6
+          end
+        end
+        subsection Contact
+          subsection Self contact
+            set Method = )" + method +
+                                  R"(
+            set Pieces = lower_top, upper_bottom
+            set Search distance = 3
+          end
+        end)");
+      scene = std::make_unique<GelMPM::Scene<2>>(prm, pieces);
+      scene->create_material_points();
+      scene->create_system();
+      scene->system->setup(scene->particles);
+      scene->system->set_boundary_values(0.5, 0.);
+    }
+  };
+
+
+  /** The upper block shifted down by 0.3, plus @p noise at random; mu_0 (plus noise) for mu. */
+  Vector<double>
+  pressed_state(const GelMPM::Scene<2> &scene, const double noise)
+  {
+    const auto                      &spaces   = scene.system->spaces();
+    const auto                       greville = spaces.u_dof_greville_points();
+    Vector<double>                   state(spaces.n_dofs());
+    std::mt19937                     rng(7);
+    std::uniform_real_distribution<> u(-1., 1.);
+    for (unsigned int i = 0; i < spaces.n_dofs(); ++i)
+      if (i < spaces.n_u_dofs())
+        state(i) = noise * u(rng);
+      else
+        state(i) = scene.material.mu_0() + 10. * noise * u(rng);
+    // greville[i] of a y-component is its control point's y.
+    for (unsigned int i = 1; i < spaces.n_u_dofs(); i += 2)
+      if (greville[i] > 0.875)
+        state(i) -= 0.3;
+    scene.system->hold_axis(state);
+    return state;
+  }
+
+
+  bool
+  check_gap()
+  {
+    std::cout << "point-to-segment gap" << std::endl;
+    const Point<2> x_s(0.3, -0.2), x_a(0., 0.), x_b(1., 0.1);
+    const auto     gap = GelMPM::point_segment_gap(x_s, x_a, x_b);
+    // The segment runs along +x (body on its right, below): outward normal up.
+    const double expected = (-0.2 - 0.03) / std::sqrt(1.01);
+    bool         ok = report("g below the segment (1e-14)", std::abs(gap.g - expected) < 1e-14);
+    double       error_1 = 0., error_2 = 0., scale_2 = 0.;
+    const double h = 1e-5;
+    for (unsigned int k = 0; k < 6; ++k)
+      {
+        Point<2> p[3] = {x_s, x_a, x_b}, m[3] = {x_s, x_a, x_b};
+        p[k / 2][k % 2] += h;
+        m[k / 2][k % 2] -= h;
+        const auto plus  = GelMPM::point_segment_gap(p[0], p[1], p[2]);
+        const auto minus = GelMPM::point_segment_gap(m[0], m[1], m[2]);
+        error_1 = std::max(error_1, std::abs((plus.g - minus.g) / (2. * h) - gap.gradient[k]));
+        for (unsigned int l = 0; l < 6; ++l)
+          {
+            error_2 = std::max(error_2,
+                               std::abs((plus.gradient[l] - minus.gradient[l]) / (2. * h) -
+                                        gap.hessian[k][l]));
+            scale_2 = std::max(scale_2, std::abs(gap.hessian[k][l]));
+          }
+      }
+    ok &= report("gradient = central differences (1e-7)", error_1 < 1e-7);
+    ok &= report("second derivative = central differences (1e-7)", error_2 < 1e-7 * scale_2);
+    return ok;
+  }
+
+
+  bool
+  check_term(const bool axisymmetric)
+  {
+    std::cout << (axisymmetric ? "axisymmetric" : "plane strain") << std::endl;
+    TwoBlocks    on("penalty", axisymmetric), off("none", axisymmetric);
+    auto        &system = *on.scene->system, &plain = *off.scene->system;
+    const double dt = 0.05;
+    bool         ok = report("no self-contact term when off",
+                     plain.assemblers().size() == 3 && system.assemblers().size() == 4);
+    const auto  *term =
+      dynamic_cast<const GelMPM::SelfContactAssembler<2> *>(system.assemblers().back());
+    std::cout << "  " << term->n_pairs() << " pairs" << std::endl;
+    ok &= report("pairs found at the setup", term->n_pairs() > 0);
+
+    // Exact shift: both faces flat, every active point by 0.05.
+    const Vector<double> shifted = pressed_state(*on.scene, 0.);
+    const auto           state   = system.self_contact_state(shifted);
+    std::cout << "  " << state.points << " points active, force " << state.force << std::endl;
+    ok &= report("active points on both faces, penetration 0.05 (1e-12)",
+                 state.points > 0 && std::abs(state.penetration - 0.05) < 1e-12);
+    system.assemble(shifted, dt, false);
+    plain.assemble(shifted, dt, false);
+    const auto greville = system.spaces().u_dof_greville_points();
+    double     upper = 0., total_y = 0., total_x = 0.;
+    for (unsigned int i = 0; i < system.spaces().n_u_dofs(); ++i)
+      {
+        const double r = system.residual()(i) - plain.residual()(i);
+        (i % 2 == 0 ? total_x : total_y) += r;
+        if (i % 2 == 1 && greville[i] > 0.875)
+          upper += r;
+      }
+    ok &= report("upper block's y-residual = -force (1e-10)",
+                 std::abs(upper + state.force) < 1e-10 * state.force);
+    ok &=
+      report("sum over all unknowns zero (1e-10 of the force)",
+             std::abs(total_x) < 1e-10 * state.force && std::abs(total_y) < 1e-10 * state.force);
+
+    // The tangent of the pair term alone against differences of its residual.
+    const Vector<double> perturbed = pressed_state(*on.scene, 2e-3);
+    const unsigned int   n         = system.spaces().n_dofs();
+    system.assemble(perturbed, dt, true);
+    plain.assemble(perturbed, dt, true);
+    const MatrixEntries K(system.matrix()), K_plain(plain.matrix());
+    // The radial unknowns on the axis stay zero: their rows and columns hold the diagonal only.
+    std::vector<bool> on_axis(n, false);
+    for (const auto i : system.spaces().axis_unknowns())
+      on_axis[i] = true;
+    double error = 0., largest = 0., asymmetry = 0.;
+    for (unsigned int j = 0; j < n; ++j)
+      {
+        if (on_axis[j])
+          continue;
+        const double   h = j < system.spaces().n_u_dofs() ? 1e-7 : 1e-6;
+        Vector<double> plus(perturbed), minus(perturbed);
+        plus(j) += h;
+        minus(j) -= h;
+        system.assemble(plus, dt, false);
+        plain.assemble(plus, dt, false);
+        Vector<double> fd(system.residual());
+        fd -= plain.residual();
+        system.assemble(minus, dt, false);
+        plain.assemble(minus, dt, false);
+        fd -= system.residual();
+        fd += plain.residual();
+        fd /= 2. * h;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            if (on_axis[i])
+              continue;
+            const double k_ij = K.at(i, j) - K_plain.at(i, j);
+            error             = std::max(error, std::abs(k_ij - fd(i)));
+            largest           = std::max(largest, std::abs(k_ij));
+            asymmetry = std::max(asymmetry, std::abs(k_ij - (K.at(j, i) - K_plain.at(j, i))));
+          }
+      }
+    std::cout << "  " << system.self_contact_state(perturbed).points
+              << " points active on the perturbed state" << std::endl;
+    ok &= report("|K - K_fd| / max|K| < 1e-6", largest > 0. && error <= 1e-6 * largest);
+    ok &= report("symmetric to 1e-12", asymmetry <= 1e-12 * largest);
+    return ok;
+  }
+} // namespace
+
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  bool                             ok = check_gap();
+  ok &= check_term(false);
+  ok &= check_term(true);
+  std::cout << (ok ? "self-contact checks passed" : "SELF-CONTACT CHECKS FAILED") << std::endl;
+  return ok ? 0 : 1;
+}
