@@ -196,6 +196,12 @@ namespace GelMPM
     if (scene.contact.enabled())
       for (const char *name : {"contact_points", "contact_penetration"})
         columns.push_back(name);
+    if (scene.contact.self_contact.enabled())
+      for (const char *name : {"self_contact_points",
+                               "self_contact_force",
+                               "self_contact_area",
+                               "self_contact_penetration"})
+        columns.push_back(name);
     for (const auto &c : obstacle_columns())
       columns.push_back(c);
     for (const auto &c : observables.columns())
@@ -347,10 +353,30 @@ namespace GelMPM
         row.set("contact_points", active);
         row.set("contact_penetration", penetration);
       }
+    if (scene.contact.self_contact.enabled() && solution != nullptr)
+      record_self_contact(*solution);
     set_obstacle_columns(solution != nullptr);
     observables.evaluate(scene.particles, scene.regions, dirichlet_errors, row);
     row.write_row();
     record_pore_events();
+  }
+
+
+  template <int dim>
+  void
+  RunRecord<dim>::record_self_contact(const dealii::Vector<double> &solution)
+  {
+    const auto state = scene.system->self_contact_state(solution);
+    statistics_file.set("self_contact_points", state.points);
+    statistics_file.set("self_contact_force", state.force);
+    statistics_file.set("self_contact_area", state.area);
+    statistics_file.set("self_contact_penetration", state.penetration);
+    if (state.points > 0 && !self_touching)
+      {
+        write_event("self_contact", current_time(), 0);
+        log << "  event: self_contact of the gel's surface at t/tau_d = " << current_time() << '\n';
+      }
+    self_touching = state.points > 0;
   }
 
 
@@ -402,7 +428,8 @@ namespace GelMPM
   bool
   RunRecord<dim>::writes_events() const
   {
-    return stability.detects_onset() || observables.writes_events();
+    return stability.detects_onset() || observables.writes_events() ||
+           scene.contact.self_contact.enabled();
   }
 
 

@@ -135,6 +135,13 @@ namespace GelMPM
     void
     record_pore_events();
 
+    /**
+     * The columns of the gel's contact with itself for @p solution, and the event 'self_contact'
+     * when parts of its surface touch where none did at the last accepted step.
+     */
+    void
+    record_self_contact(const dealii::Vector<double> &solution);
+
     /** Whether the run writes events.csv: with a stability analysis that detects an onset or
      * an observable that has events (as open_files() opens it). */
     bool
@@ -197,6 +204,10 @@ namespace GelMPM
     serialize_counters(Archive &ar)
     {
       ar &output_step &inexact_extrapolation_noted &mode_recorded;
+      // Only with 'Contact/Self contact', so that the checkpoints of other scenes stay as they
+      // were.
+      if (scene.contact.self_contact.enabled())
+        ar &self_touching;
     }
 
     /** Boost serialization of the observables' events, the balances' sums and the series. */
@@ -275,6 +286,8 @@ namespace GelMPM
     std::vector<unsigned int>            grid_volume_points;          // per cell, start of the step
     unsigned int output_step = dealii::numbers::invalid_unsigned_int; // of the last output
     bool         inexact_extrapolation_noted = false;
+    // Whether the gel's surface touched itself at the last accepted step ('Contact/Self contact').
+    bool self_touching = false;
     // The pieces' terms of the step being accepted, taken before a kick moves its state.
     std::vector<typename MixedSystem<dim>::PieceBalance> balances;
     /** The rigid obstacles' reactions of the step being accepted. */
