@@ -432,6 +432,15 @@ namespace GelMPM
       pcout << "gelmpm: " << loop->newton_iterations() << " Newton iterations, "
             << loop->factorizations() << " factorisations (" << linear_solver.name() << "), "
             << model->new_patterns() << " sparsity patterns";
+    if (loop && loop->newton().reuse_contraction > 0.)
+      {
+        // Why the modified Newton iteration factorised, where it did not reuse.
+        const auto &fresh = loop->fresh_tangents();
+        pcout << ", fresh tangents: " << fresh.without_reuse << " without one kept, "
+              << fresh.contraction << " on the contraction, " << fresh.step_ratio
+              << " on the step ratio, " << fresh.reuses << " on the reuse count, "
+              << fresh.discarded << " after a discarded update";
+      }
     if (loop && Collective::is_parallel(scene.communicator))
       pcout << ", " << dealii::Utilities::MPI::n_mpi_processes(scene.communicator)
             << " ranks, partitioned anew " << model->repartitions() << " times";

@@ -419,9 +419,11 @@ namespace GelMPM
                                      std::to_string(error) + ")");
           }
       }
-    factorized_matrix = &K;
-    factorized        = true;
-    call_failed       = false;
+    factorized_matrix           = &K;
+    factorized                  = true;
+    factorized_dt               = 0.;
+    n_solves_with_factorization = 0;
+    call_failed                 = false;
     ++numeric_count;
     if (keep_values)
       {
@@ -455,7 +457,9 @@ namespace GelMPM
 
 
   void
-  LinearSolver::solve(dealii::Vector<double> &x, const dealii::Vector<double> &b) const
+  LinearSolver::solve(dealii::Vector<double>       &x,
+                      const dealii::Vector<double> &b,
+                      const double                  refinement_target) const
   {
     // Until it returns: every failure below throws.
     call_failed = true;
@@ -467,7 +471,7 @@ namespace GelMPM
         ++n_krylov_solves;
       }
     else if (ldlt)
-      solve_ldlt(x, b);
+      solve_ldlt(x, b, refinement_target);
     else
       {
         const Epetra_RowMatrix &matrix = *problem->GetMatrix();
@@ -514,6 +518,7 @@ namespace GelMPM
       if (!std::isfinite(v))
         throw std::runtime_error("the direct solver (" + name() +
                                  ") returned a non-finite solution (singular tangent)");
+    ++n_solves_with_factorization;
     call_failed = false;
   }
 
@@ -532,6 +537,27 @@ namespace GelMPM
   LinearSolver::has_factorization() const
   {
     return factorized;
+  }
+
+
+  double
+  LinearSolver::factorized_step() const
+  {
+    return factorized_dt;
+  }
+
+
+  void
+  LinearSolver::note_factorized_step(const double dt) const
+  {
+    factorized_dt = dt;
+  }
+
+
+  unsigned int
+  LinearSolver::solves_with_factorization() const
+  {
+    return n_solves_with_factorization;
   }
 
 
@@ -569,23 +595,30 @@ namespace GelMPM
 
 
   void
-  LinearSolver::solve_ldlt(dealii::Vector<double> &x, const dealii::Vector<double> &b) const
+  LinearSolver::solve_ldlt(dealii::Vector<double>       &x,
+                           const dealii::Vector<double> &b,
+                           const double                  refinement_target) const
   {
     x = b;
     try
       {
-        ldlt->solve(x);
+        ldlt->solve(x, refinement_target);
         refinement_steps += ldlt->refinement_steps();
       }
     catch (const RefinementFailure &failure)
       {
         // The single-precision factors are too inexact for this tangent: double from now on.
-        precision_fallback = failure.what();
-        precision          = SymmetricFactorization::Precision::double_precision;
-        const auto &K      = *factorized_matrix;
+        precision_fallback  = failure.what();
+        precision           = SymmetricFactorization::Precision::double_precision;
+        const auto  &K      = *factorized_matrix;
+        const double dt     = factorized_dt;
+        const auto   solves = n_solves_with_factorization;
         new_pattern();
         factorize(K);
-        x = b;
+        // The same tangent, in double precision: its step and reuses stay.
+        factorized_dt               = dt;
+        n_solves_with_factorization = solves;
+        x                           = b;
         ldlt->solve(x);
       }
   }

@@ -73,7 +73,23 @@ namespace GelMPM
       "next iteration assembles and factorises a fresh tangent, and an update from an old "
       "factorisation that is not physical or does not reduce the residual is discarded. The "
       "converged state is the same to 'Tolerance'. 0: a fresh tangent at every iteration "
-      "(Newton's method; doc/performance.md).");
+      "(Newton's method; doc/performance.md). With single-precision factors ('Linear "
+      "solver/Precision') a solve with an old factorisation is refined only to a tenth of "
+      "this factor.");
+    prm.declare_entry(
+      "Reuse step ratio",
+      "0",
+      dealii::Patterns::Double(0.),
+      "With 'Reuse contraction' > 0: a step whose time step differs from that of the kept "
+      "tangent by more than this factor (larger over smaller) starts with a fresh tangent "
+      "instead of the kept factorisation. At least 1; 0: the kept factorisation whatever the "
+      "time step (doc/performance.md, 'Fewer factorisations').");
+    prm.declare_entry("Maximum reuses",
+                      "0",
+                      dealii::Patterns::Integer(0),
+                      "With 'Reuse contraction' > 0: the solves one factorisation serves at "
+                      "most, over iterations and steps, before a fresh tangent is factorised; "
+                      "0: no limit.");
     prm.leave_subsection();
   }
 
@@ -93,7 +109,14 @@ namespace GelMPM
     mu_from_points           = prm.get("Initial chemical potential") == "points";
     extrapolate_displacement = prm.get("Initial displacement") == "extrapolated";
     reuse_contraction        = prm.get_double("Reuse contraction");
+    reuse_step_ratio         = prm.get_double("Reuse step ratio");
+    maximum_reuses           = prm.get_integer("Maximum reuses");
     prm.leave_subsection();
+    require(reuse_step_ratio == 0. || reuse_step_ratio >= 1.,
+            "Newton/Reuse step ratio",
+            "must be 0 (no limit) or at least 1 (a ratio of time steps, the larger over the "
+            "smaller)",
+            "use e.g. 1.5, or 0");
     require(smallest_damping > 0. && smallest_damping <= 1.,
             "Newton/Smallest damping",
             "must lie in (0, 1]",
@@ -147,6 +170,22 @@ namespace GelMPM
     return hint.str();
   }
 
+  namespace
+  {
+    /**
+     * Whether a tangent factorised at the time step @p factorized_dt (0: unknown) is too far
+     * from @p dt for 'Newton/Reuse step ratio'.
+     */
+    bool
+    step_ratio_exceeded(const double factorized_dt, const double dt, const NewtonSettings &settings)
+    {
+      if (settings.reuse_step_ratio == 0. || !(factorized_dt > 0.) || !(dt > 0.))
+        return false;
+      return std::max(dt / factorized_dt, factorized_dt / dt) > settings.reuse_step_ratio;
+    }
+  } // namespace
+
+
   NewtonReport
   solve_newton(NewtonSystem           &system,
                dealii::Vector<double> &solution,
@@ -188,9 +227,14 @@ namespace GelMPM
     const unsigned int minimum_iterations = linear_solver.last_call_failed()
                                               ? std::max(settings.minimum_iterations, 1u)
                                               : settings.minimum_iterations;
-    // Whether the next iteration factorises the tangent at its iterate. Without reuse every
-    // assembly includes the tangent, which the next iteration then factorises.
-    bool fresh = !reuse || !linear_solver.has_factorization();
+    // Whether the next iteration factorises the tangent at its iterate, and why. Without
+    // reuse every assembly includes the tangent, which the next iteration then factorises.
+    unsigned int *why_fresh = nullptr;
+    if (!reuse || !linear_solver.has_factorization())
+      why_fresh = &report.fresh_tangents.without_reuse;
+    else if (step_ratio_exceeded(linear_solver.factorized_step(), dt, settings))
+      why_fresh = &report.fresh_tangents.step_ratio;
+    bool fresh = why_fresh != nullptr;
     if (!assemble_at(solution, fresh))
       return report;
     dealii::Vector<double> increment(solution.size()), trial(solution.size());
@@ -213,6 +257,12 @@ namespace GelMPM
             report.failure = "no convergence in " + std::to_string(k) + " Newton iterations";
             return report;
           }
+        if (!fresh && settings.maximum_reuses > 0 &&
+            linear_solver.solves_with_factorization() >= settings.maximum_reuses)
+          {
+            fresh     = true;
+            why_fresh = &report.fresh_tangents.reuses;
+          }
         // The state was physical when its residual was assembled: so is its tangent.
         if (fresh && !report.tangent_at_solution && !assemble_at(solution, true))
           return report;
@@ -222,9 +272,17 @@ namespace GelMPM
             if (fresh)
               {
                 linear_solver.factorize(system.matrix());
+                linear_solver.note_factorized_step(dt);
                 ++report.factorizations;
+                ++*why_fresh;
               }
-            linear_solver.solve(increment, system.residual());
+            // The kept factorisation is of another matrix: the true residual of the next
+            // iterate corrects its solve, so refining it far below the contraction it is kept
+            // for buys nothing.
+            linear_solver.solve(increment,
+                                system.residual(),
+                                fresh ? SymmetricFactorization::refinement_tolerance
+                                      : 0.1 * settings.reuse_contraction);
           }
         catch (const std::exception &e)
           {
@@ -281,7 +339,8 @@ namespace GelMPM
           {
             // Back to the iterate, whose residual and (physical) tangent the next iteration
             // needs.
-            fresh = true;
+            fresh     = true;
+            why_fresh = &report.fresh_tangents.discarded;
             if (!assemble_at(solution, true))
               return report;
             continue;
@@ -291,6 +350,8 @@ namespace GelMPM
         solution.swap(trial);
         fresh =
           !reuse || merit() > settings.reuse_contraction * settings.reuse_contraction * merit_0;
+        why_fresh =
+          reuse ? &report.fresh_tangents.contraction : &report.fresh_tangents.without_reuse;
       }
   }
 } // namespace GelMPM

@@ -247,6 +247,7 @@ namespace GelMPM
                                            timer);
         n_newton_iterations += report.iterations;
         n_factorizations += report.factorizations;
+        fresh_tangents_ += report.fresh_tangents;
         if (report.converged && increment_bound_applies(step_dt))
           {
             const double moved = model.largest_motion_in_cells(solution);
@@ -542,6 +543,13 @@ namespace GelMPM
   TimeLoop::factorizations() const
   {
     return n_factorizations;
+  }
+
+
+  const FreshTangents &
+  TimeLoop::fresh_tangents() const
+  {
+    return fresh_tangents_;
   }
 
 

@@ -427,12 +427,12 @@ namespace GelMPM
     /**
      * Solve K x = b (b in @p x on entry, rank 0's) with the single-precision factors, refined
      * in double precision (x += K~^{-1} (b - K x)) until the residual stops shrinking by half
-     * or is within refinement_tolerance of b. Throws RefinementFailure when it stops above
+     * or is within @p target of b. Throws RefinementFailure when it stops above @p target and
      * refinement_acceptance: the factors are then too inexact for this matrix (a condition
      * number near the reciprocal of single precision's 6e-8).
      */
     void
-    solve_refined(dealii::Vector<double> &x)
+    solve_refined(dealii::Vector<double> &x, const double target)
     {
       broadcast(x);
       const dealii::Vector<double> b       = x;
@@ -441,7 +441,7 @@ namespace GelMPM
       dealii::Vector<double> residual      = b;
       double                 residual_norm = b_norm;
       refinement_steps                     = 0;
-      while (residual_norm > SymmetricFactorization::refinement_tolerance * b_norm)
+      while (residual_norm > target * b_norm)
         {
           // Scaled to unit norm, so that single precision neither underflows nor overflows.
           dealii::Vector<double> correction = residual;
@@ -457,7 +457,8 @@ namespace GelMPM
           if (!(residual_norm <= 0.5 * last) || refinement_steps == 30)
             break;
         }
-      if (!(residual_norm <= SymmetricFactorization::refinement_acceptance * b_norm))
+      if (!(residual_norm <=
+            std::max(target, SymmetricFactorization::refinement_acceptance) * b_norm))
         {
           std::ostringstream why;
           why.precision(2);
@@ -646,13 +647,13 @@ namespace GelMPM
 
 
   void
-  SymmetricFactorization::solve(dealii::Vector<double> &x) const
+  SymmetricFactorization::solve(dealii::Vector<double> &x, const double refinement_target) const
   {
     if (!data->factorized)
       throw std::logic_error("SymmetricFactorization::solve() before factorize()");
     if (data->precision == Precision::single_precision)
       {
-        data->solve_refined(x);
+        data->solve_refined(x, std::max(refinement_target, refinement_tolerance));
         return;
       }
     data->full.solve(x);

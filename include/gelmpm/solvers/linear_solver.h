@@ -84,10 +84,14 @@ namespace GelMPM
 
     /**
      * Solve K x = b with the factorisation of the last factorize(). Throws std::runtime_error
-     * when there is none or the solution is not finite.
+     * when there is none or the solution is not finite. Single-precision factors are refined to
+     * the relative residual @p refinement_target (SymmetricFactorization::solve()); the other
+     * solvers ignore it.
      */
     void
-    solve(dealii::Vector<double> &x, const dealii::Vector<double> &b) const;
+    solve(dealii::Vector<double>       &x,
+          const dealii::Vector<double> &b,
+          const double refinement_target = SymmetricFactorization::refinement_tolerance) const;
 
     /** factorize(@p K), then solve(@p x, @p b). */
     void
@@ -111,6 +115,22 @@ namespace GelMPM
     /** Whether a factorisation of the current pattern is there to solve with. */
     bool
     has_factorization() const;
+
+    /**
+     * The time step of the tangent factorised last, as solve_newton() notes it after each
+     * factorize() (0: not noted, e.g. the tangent a resumed run refactorised): the modified
+     * Newton iteration's 'Reuse step ratio' compares it with the step's.
+     */
+    double
+    factorized_step() const;
+
+    /** Note the time step of the tangent just factorised (see factorized_step()). */
+    void
+    note_factorized_step(const double dt) const;
+
+    /** The solves made with the current factorisation ('Newton/Maximum reuses'). */
+    unsigned int
+    solves_with_factorization() const;
 
     /**
      * Whether the last factorize() or solve() failed (threw). A Newton solve then takes at least
@@ -215,7 +235,9 @@ namespace GelMPM
      * precision, which the run keeps.
      */
     void
-    solve_ldlt(dealii::Vector<double> &x, const dealii::Vector<double> &b) const;
+    solve_ldlt(dealii::Vector<double>       &x,
+               const dealii::Vector<double> &b,
+               const double                  refinement_target) const;
 
     /** Count the last LDL^T factorisation's operations, entries and memory. */
     void
@@ -247,10 +269,12 @@ namespace GelMPM
     mutable std::unique_ptr<Amesos_BaseSolver>      factorisation;
     mutable std::unique_ptr<SymmetricFactorization> ldlt;
     // The matrix the factorisation was analysed for (LDL^T path).
-    mutable const Epetra_CrsMatrix *analysed_matrix = nullptr;
-    mutable bool                    factorized      = false;
-    mutable bool                    call_failed     = false;
-    bool                            keep_values     = false;
+    mutable const Epetra_CrsMatrix *analysed_matrix             = nullptr;
+    mutable bool                    factorized                  = false;
+    mutable double                  factorized_dt               = 0.;
+    mutable unsigned int            n_solves_with_factorization = 0;
+    mutable bool                    call_failed                 = false;
+    bool                            keep_values                 = false;
     mutable SparseEntries           factorized_entries;
     mutable unsigned int            symbolic_count = 0;
     mutable unsigned int            numeric_count  = 0;

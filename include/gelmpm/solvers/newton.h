@@ -59,6 +59,14 @@ namespace GelMPM
      * at every iterate).
      */
     double reuse_contraction = 1e-3;
+    /**
+     * With reuse: the factorisation kept from an earlier step serves the step's first iteration
+     * only while its tangent's time step lies within this factor of the step's (either way);
+     * 0: whatever the time step (the modified Newton iteration before this entry).
+     */
+    double reuse_step_ratio = 0.;
+    /** With reuse: the solves one factorisation serves at most (0: no limit). */
+    unsigned int maximum_reuses = 0;
 
     /** The smallest 'Tolerance' accepted: below it the scaled residuals stop on round-off. */
     static constexpr double smallest_tolerance = 1e-14;
@@ -68,6 +76,36 @@ namespace GelMPM
 
     void
     parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+
+  /**
+   * Why the modified Newton iteration (NewtonSettings::reuse_contraction) factorised a fresh
+   * tangent instead of solving with the kept factorisation, counted per reason.
+   */
+  struct FreshTangents
+  {
+    /** Newton's method (no reuse), or no factorisation of the current sparsity pattern. */
+    unsigned int without_reuse = 0;
+    /** The last iteration reduced the scaled residual norm by less than 'Reuse contraction'. */
+    unsigned int contraction = 0;
+    /** The kept tangent's time step differs from the step's by more than 'Reuse step ratio'. */
+    unsigned int step_ratio = 0;
+    /** The kept factorisation has served 'Maximum reuses' solves. */
+    unsigned int reuses = 0;
+    /** An update of the kept factorisation was not physical or did not reduce the residual. */
+    unsigned int discarded = 0;
+
+    FreshTangents &
+    operator+=(const FreshTangents &other)
+    {
+      without_reuse += other.without_reuse;
+      contraction += other.contraction;
+      step_ratio += other.step_ratio;
+      reuses += other.reuses;
+      discarded += other.discarded;
+      return *this;
+    }
   };
 
 
@@ -82,6 +120,9 @@ namespace GelMPM
     unsigned int damped_iterations = 0;
     /** Numeric factorisations of a tangent (at most one per iteration). */
     unsigned int factorizations = 0;
+    /** Why each fresh tangent was factorised (modified Newton; the counts sum to
+     * 'factorizations' unless the last factorisation failed). */
+    FreshTangents fresh_tangents;
     /** Whether the system's matrix() is the tangent at the returned state. */
     bool tangent_at_solution = false;
     /**
@@ -126,7 +167,15 @@ namespace GelMPM
    * at once when an update from an old factorisation is not physical or does not decrease the
    * residual (it is then discarded, not damped). The convergence test is the same, so is the
    * converged state to the tolerance; near it an old tangent costs a few cheap iterations where
-   * a fresh one costs an assembly of the tangent and a factorisation.
+   * a fresh one costs an assembly of the tangent and a factorisation. Two more rules ask for a
+   * fresh tangent: a step whose time step differs from the kept tangent's by more than 'Reuse
+   * step ratio' starts with one (the μ block scales with the time step, so such a tangent's
+   * first update mostly fails the contraction test and is paid for nothing), and so does an
+   * iteration whose factorisation has served 'Maximum reuses' solves. A solve with the kept
+   * factorisation of an earlier iterate or step is refined (single-precision factors) only to
+   * a tenth of 'Reuse contraction': that factorisation is of another matrix, and the iteration
+   * corrects what the solve leaves with the true residual. NewtonReport::fresh_tangents counts
+   * why each tangent was factorised.
    *
    * A first iterate that meets the tolerance is the solution (no iteration), unless the linear
    * solver's last call failed (LinearSolver::last_call_failed()): then one iteration, whose solve

@@ -320,6 +320,9 @@ namespace GelMPM
     newton_iterations() const;
     unsigned long
     factorizations() const;
+    /** Why Newton's factorisations were made (NewtonReport::fresh_tangents, summed). */
+    const FreshTangents &
+    fresh_tangents() const;
     /** Steps accepted although their error estimate exceeds its tolerance whatever the step. */
     unsigned long
     uncontrolled_errors() const;
@@ -404,9 +407,10 @@ namespace GelMPM
     double        next_output_time = 0.;
     std::string   failure_;
     std::string   round_off_hint_;
-    int           signal_               = 0;
-    unsigned long n_newton_iterations   = 0;
-    unsigned long n_factorizations      = 0;
+    int           signal_             = 0;
+    unsigned long n_newton_iterations = 0;
+    unsigned long n_factorizations    = 0;
+    FreshTangents fresh_tangents_;
     unsigned long n_uncontrolled_errors = 0;
     /** Whether the log has said that the model bounds the steps (bound_step()). */
     bool step_bound_said = false;

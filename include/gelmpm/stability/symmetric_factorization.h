@@ -165,10 +165,13 @@ namespace GelMPM
 
     /**
      * Solve K x = b with the factorisation: @p x holds b on entry (rank 0's is used) and x on
-     * exit (on every rank).
+     * exit (on every rank). Single-precision factors refine the solution to the relative
+     * residual @p refinement_target (at least refinement_tolerance): a modified Newton iteration
+     * that solves with the factors of an older tangent needs no more than a fraction of its
+     * own contraction (LinearSolver::solve()).
      */
     void
-    solve(dealii::Vector<double> &x) const;
+    solve(dealii::Vector<double> &x, const double refinement_target = refinement_tolerance) const;
 
     /** Use @p ordering in the analyses from now on (the default: fewest flops). */
     void
