@@ -16,6 +16,7 @@ namespace GelMPM
     CentreOffset<dim>::declare_parameters(prm);
     PoreShapes<dim>::declare_parameters(prm);
     SurfaceShapes<dim>::declare_parameters(prm);
+    ShapeFits<dim>::declare_parameters(prm);
     VolumeRatioRange<dim>::declare_parameters(prm);
     BoundaryConditionError<dim>::declare_parameters(prm);
     ChemicalPotentialOscillation<dim>::declare_parameters(prm);
@@ -31,11 +32,13 @@ namespace GelMPM
     kinds.clear();
     pores    = nullptr;
     surfaces = nullptr;
+    fits     = nullptr;
     prm.enter_subsection("Observables");
     add(SwellingExtent<dim>::parse(prm, pieces));
     add(CentreOffset<dim>::parse(prm, pieces));
     pores    = add(PoreShapes<dim>::parse(prm, pieces));
     surfaces = add(SurfaceShapes<dim>::parse(prm, pieces));
+    fits     = add(ShapeFits<dim>::parse(prm, pieces));
     add(VolumeRatioRange<dim>::parse(prm));
     add(ChemicalPotentialOscillation<dim>::parse(prm));
     add(BoundaryConditionError<dim>::parse(prm));
@@ -110,6 +113,8 @@ namespace GelMPM
   {
     if (surfaces)
       surfaces->set_grid_spacing(spacing);
+    if (fits)
+      fits->set_grid_spacing(spacing);
   }
 
 
@@ -120,6 +125,9 @@ namespace GelMPM
     std::vector<std::pair<std::string, unsigned int>> events;
     if (surfaces)
       events = surfaces->new_events(particles);
+    if (fits)
+      for (auto &event : fits->new_events(particles))
+        events.push_back(std::move(event));
     if (pores)
       for (auto &event : pores->new_events(particles))
         events.push_back(std::move(event));
@@ -132,7 +140,8 @@ namespace GelMPM
   Observables<dim>::writes_events() const
   {
     // A surface's folds are counted on its polyline, which 2D alone has.
-    return pores != nullptr || (dim == 2 && surfaces != nullptr);
+    return pores != nullptr || (dim == 2 && surfaces != nullptr) ||
+           (fits != nullptr && fits->writes_events());
   }
 
 

@@ -6,6 +6,7 @@
 #include <gelmpm/scene/material_regions.h>
 #include <gelmpm/simulator/observable.h>
 #include <gelmpm/simulator/observable_pore_shapes.h>
+#include <gelmpm/simulator/observable_shape_fits.h>
 #include <gelmpm/simulator/observable_surface_shapes.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -28,7 +29,10 @@ namespace GelMPM
    * SwellingExtent (delta_h_over_h0, radius_over_R0), CentreOffset (centre_offset_x, ...,
    * centre_distance), PoreShapes (pore_*_k, mu_boundary; events 'self_contact', 'crease'),
    * SurfaceShapes (<piece>_relief, _curvature, _turning, _folds; events 'crease_<piece>',
-   * surface_<piece>-NNNNN.csv), VolumeRatioRange (J_min, J_mean, J_max),
+   * surface_<piece>-NNNNN.csv), ShapeFits (<piece>_fit_curvature, _fit_residual, _amplitude,
+   * _skewness, _wavelength, _relative_amplitude, _dip_crest_ratio; events
+   * 'instability_crease_<piece>', 'instability_wrinkle_<piece>'), VolumeRatioRange (J_min,
+   * J_mean, J_max),
    * ChemicalPotentialOscillation (mu_oscillation) and BoundaryConditionError (u_bc_error,
    * mu_bc_error). The section's 'Forces and fluxes' belongs to BoundaryBalance.
    */
@@ -74,15 +78,16 @@ namespace GelMPM
 
     /**
      * The cell size h_u (@p spacing) of the displacement grid, the unit of the surface measures
-     * ('Fold approach distance', 'Fold arc length', <piece>_curvature); needed in 2D with 'Surface
-     * pieces' before evaluate().
+     * ('Fold approach distance', 'Fold arc length', <piece>_curvature) and of the polylines of
+     * 'Shape pieces'; needed in 2D with 'Surface pieces' or 'Shape pieces' before evaluate().
      */
     void
     set_grid_spacing(const double spacing);
 
     /**
      * The events that happened since the last call, as (name, pore number from 1, or 0 for an
-     * event of a surface piece): SurfaceShapes::new_events(), then PoreShapes::new_events().
+     * event of a surface piece): SurfaceShapes::new_events(), ShapeFits::new_events(), then
+     * PoreShapes::new_events().
      */
     std::vector<std::pair<std::string, unsigned int>>
     new_events(const dealii::Particles::ParticleHandler<dim> &particles);
@@ -99,7 +104,8 @@ namespace GelMPM
     /**
      * The events seen and the surface files written so far, for a checkpoint (boost
      * serialization): the pores' and the surfaces' fields, in the order the archive has always
-     * had them; a kind the scene does not ask for writes, and reads, its empty state.
+     * had them, then the shape fits'; a kind the scene does not ask for writes, and reads, its
+     * empty state.
      */
     template <class Archive>
     void
@@ -107,8 +113,10 @@ namespace GelMPM
     {
       PoreShapes<dim>    no_pores;
       SurfaceShapes<dim> no_surfaces;
+      ShapeFits<dim>     no_fits;
       (pores ? *pores : no_pores).serialize(ar, version);
       (surfaces ? *surfaces : no_surfaces).serialize(ar, version);
+      (fits ? *fits : no_fits).serialize(ar, version);
     }
 
     /**
@@ -126,9 +134,10 @@ namespace GelMPM
 
     /** The kinds the scene asks for, in the order of their columns. */
     std::vector<std::unique_ptr<Observable<dim>>> kinds;
-    /** The two kinds with events, files and a state in checkpoints, if asked for (in kinds). */
+    /** The kinds with events, files and a state in checkpoints, if asked for (in kinds). */
     PoreShapes<dim>    *pores        = nullptr;
     SurfaceShapes<dim> *surfaces     = nullptr;
+    ShapeFits<dim>     *fits         = nullptr;
     MPI_Comm            communicator = MPI_COMM_SELF;
   };
 } // namespace GelMPM

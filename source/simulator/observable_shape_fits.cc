@@ -1,0 +1,277 @@
+#include <gelmpm/core/input_error.h>
+#include <gelmpm/geometry/surface_geometry.h>
+#include <gelmpm/particles/property_layout.h>
+#include <gelmpm/scene/boundary_conditions.h>
+#include <gelmpm/simulator/observable_shape_fits.h>
+
+#include <deal.II/base/utilities.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace GelMPM
+{
+  template <int dim>
+  void
+  ShapeFits<dim>::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.declare_entry(
+      "Shape pieces",
+      "",
+      dealii::Patterns::Anything(),
+      "Boundary piece names 'first, second, ...' (e.g. 'bottom', the lower face of a bilayer): "
+      "per piece the fitted shape of its current surface points and the relief on it. "
+      "<piece>_fit_curvature: the signed curvature 1/R of the least-squares circle (2D, also "
+      "an axisymmetric scene's meridian) or sphere (3D) through them (Taubin's fit; positive "
+      "where the body lies on the centre's side, a convex piece; 0 for a straight or flat "
+      "one); <piece>_fit_residual: their RMS distance from it. The relief is measured from the "
+      "piece's smooth shape, that circle or sphere if its RMS distance is at most half that of "
+      "the least-squares line or plane, the line or plane otherwise, as the points' distances "
+      "from it along the outward normal: <piece>_amplitude (half their range) and "
+      "<piece>_skewness (negative: narrow deep dips between broad crests). In 2D also, along "
+      "the points in their order along the surface (as for 'Surface pieces'): "
+      "<piece>_wavelength (the dominant wavelength of the relief over the current arc length, "
+      "by a discrete Fourier transform), <piece>_relative_amplitude (amplitude over "
+      "wavelength) and <piece>_dip_crest_ratio (the largest curvature of the relief's dips "
+      "over that of its crests: 1 for a sinusoid). Lengths in the scene's unit. Empty: off.");
+    prm.declare_entry(
+      "Instability threshold",
+      "0",
+      dealii::Patterns::Double(0.),
+      "With 'Shape pieces' (2D): the first time (the initial state included) a piece's "
+      "<piece>_relative_amplitude, its relief's amplitude over its wavelength, reaches this "
+      "value, the relief has left the smooth shape: a row 'instability_crease_<piece>' or "
+      "'instability_wrinkle_<piece>' in events.csv (see 'Crease skewness'), once per piece. "
+      "Give a value above the piece's initial relative amplitude (row 0 of statistics.csv; a "
+      "seed or texture has one): an event at t = 0 says it is not. Measured "
+      "(doc/own_scenes.md, section 8): 0.01 is reached as the core-shell disk's grooves and the "
+      "skin's wrinkles appear; the creasing film's seeded top starts at 0.011 and reaches 0.05 "
+      "0.26 tau_d before its crease folds. 0: no such events.");
+    prm.declare_entry(
+      "Crease skewness",
+      "1",
+      dealii::Patterns::Double(0.),
+      "With 'Instability threshold': the piece's instability is a crease if its "
+      "<piece>_skewness is at or below minus this value when the threshold is reached (its "
+      "relief is made of narrow dips into the body between broad crests), a wrinkle otherwise "
+      "(a sinusoidal relief has skewness 0). Measured at the threshold: wrinkles of a stiff "
+      "skin +0.04, the creasing film -2.4 (doc/own_scenes.md, section 8).");
+  }
+
+
+  template <int dim>
+  std::unique_ptr<ShapeFits<dim>>
+  ShapeFits<dim>::parse(dealii::ParameterHandler &prm, const std::vector<std::string> &pieces)
+  {
+    auto fits    = std::make_unique<ShapeFits>();
+    fits->names  = dealii::Utilities::split_string_list(prm.get("Shape pieces"), ',');
+    fits->pieces = piece_indices(fits->names, pieces, "Observables/Shape pieces");
+    fits->instability_threshold = prm.get_double("Instability threshold");
+    fits->crease_skewness       = prm.get_double("Crease skewness");
+    require(dim == 2 || fits->instability_threshold == 0.,
+            "Observables/Instability threshold",
+            "is not available in 3D: the relief's wavelength is measured along a 2D piece's "
+            "polyline",
+            "set it to 0 (the 3D columns of 'Shape pieces' remain)");
+    require(fits->instability_threshold == 0. || !fits->names.empty(),
+            "Observables/Instability threshold",
+            "is set but 'Shape pieces' names no piece to watch",
+            "name the pieces in 'Observables/Shape pieces', e.g. 'top'");
+    if (fits->names.empty())
+      return nullptr;
+    return fits;
+  }
+
+
+  template <int dim>
+  std::vector<std::string>
+  ShapeFits<dim>::columns() const
+  {
+    std::vector<std::string> c;
+    for (const auto &name : names)
+      {
+        for (const char *measure : {"_fit_curvature", "_fit_residual", "_amplitude", "_skewness"})
+          c.push_back(name + measure);
+        if (dim == 2)
+          for (const char *measure : {"_wavelength", "_relative_amplitude", "_dip_crest_ratio"})
+            c.push_back(name + measure);
+      }
+    return c;
+  }
+
+
+  template <int dim>
+  void
+  ShapeFits<dim>::evaluate(const ObservedState<dim> &state, StatisticsFile &statistics) const
+  {
+    const auto measured = shapes(state.particles);
+    for (unsigned int k = 0; k < measured.size(); ++k)
+      {
+        const auto &shape = measured[k];
+        statistics.set(names[k] + "_fit_curvature", shape.fit_curvature);
+        statistics.set(names[k] + "_fit_residual", shape.fit_residual);
+        statistics.set(names[k] + "_amplitude", shape.amplitude);
+        statistics.set(names[k] + "_skewness", shape.skewness);
+        if (dim == 2)
+          {
+            statistics.set(names[k] + "_wavelength", shape.wavelength);
+            statistics.set(names[k] + "_relative_amplitude", shape.relative_amplitude);
+            statistics.set(names[k] + "_dip_crest_ratio", shape.dip_crest_ratio);
+          }
+      }
+  }
+
+
+  template <int dim>
+  void
+  ShapeFits<dim>::set_grid_spacing(const double spacing)
+  {
+    h_u = spacing;
+  }
+
+
+  template <int dim>
+  bool
+  ShapeFits<dim>::writes_events() const
+  {
+    return dim == 2 && instability_threshold > 0.;
+  }
+
+
+  template <int dim>
+  std::vector<std::pair<std::string, unsigned int>>
+  ShapeFits<dim>::new_events(const dealii::Particles::ParticleHandler<dim> &particles)
+  {
+    std::vector<std::pair<std::string, unsigned int>> events;
+    if (!writes_events())
+      return events;
+    const auto measured = shapes(particles);
+    instabilities_seen.resize(measured.size(), 0);
+    for (unsigned int k = 0; k < measured.size(); ++k)
+      if (instabilities_seen[k] == 0 && measured[k].relative_amplitude >= instability_threshold)
+        {
+          const bool crease = measured[k].skewness <= -crease_skewness;
+          events.emplace_back(std::string("instability_") + (crease ? "crease_" : "wrinkle_") +
+                                names[k],
+                              0);
+          instabilities_seen[k] = 1;
+        }
+    return events;
+  }
+
+
+  template <int dim>
+  std::vector<typename ShapeFits<dim>::Shape>
+  ShapeFits<dim>::shapes(const dealii::Particles::ParticleHandler<dim> &particles) const
+  {
+    using Layout = PropertyLayout<dim>;
+    AssertThrow(dim == 3 || h_u > 0.,
+                dealii::ExcMessage("Observables: set_grid_spacing() before the shape fits"));
+    // Per point of a watched piece, gathered from every rank (a fit needs all of the piece):
+    // the piece's place in 'Shape pieces', x, N_n A_n, and in 2D X_0 and N_0 A_0 (the order
+    // along the surface).
+    const unsigned int  n_values = 1 + 2 * dim + (dim == 2 ? 2 * dim : 0);
+    std::vector<double> local;
+    for (const auto &particle : particles)
+      {
+        const auto props = particle.get_properties();
+        const auto it    = std::find(pieces.begin(), pieces.end(), piece_of(props));
+        if (it == pieces.end())
+          continue;
+        local.push_back(it - pieces.begin());
+        const auto x = position_of(particle.get_location(), props);
+        for (unsigned int d = 0; d < dim; ++d)
+          local.push_back(x[d]);
+        for (unsigned int d = 0; d < dim; ++d)
+          local.push_back(props[Layout::normal_area_n + d]);
+        if (dim == 2)
+          {
+            for (unsigned int d = 0; d < dim; ++d)
+              local.push_back(props[Layout::position_0 + d]);
+            for (unsigned int d = 0; d < dim; ++d)
+              local.push_back(props[Layout::normal_area_0 + d]);
+          }
+      }
+    const std::vector<double> all = ObservedPieces::gathered(this->communicator, std::move(local));
+
+    const unsigned int                                      n_pieces = pieces.size();
+    std::vector<std::vector<dealii::Point<dim>>>            positions(n_pieces);
+    std::vector<std::vector<dealii::Tensor<1, dim>>>        normals(n_pieces);
+    std::vector<std::vector<SurfaceGeometry::SurfacePoint>> points(n_pieces);
+    for (std::size_t first = 0; first < all.size(); first += n_values)
+      {
+        const unsigned int     k = std::lround(all[first]);
+        dealii::Point<dim>     x;
+        dealii::Tensor<1, dim> normal;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            x[d]      = all[first + 1 + d];
+            normal[d] = all[first + 1 + dim + d];
+          }
+        positions[k].push_back(x);
+        normals[k].push_back(normal);
+        if (dim == 2)
+          {
+            SurfaceGeometry::SurfacePoint point;
+            for (unsigned int d = 0; d < 2; ++d)
+              {
+                point.x[d]        = x[d];
+                point.X_0[d]      = all[first + 1 + 2 * dim + d];
+                point.normal_0[d] = all[first + 1 + 3 * dim + d];
+              }
+            points[k].push_back(point);
+          }
+      }
+
+    std::vector<Shape> shapes(n_pieces);
+    for (unsigned int k = 0; k < n_pieces; ++k)
+      {
+        if (positions[k].size() < dim + 1)
+          continue;
+        auto fit = ShapeFit::fit_sphere(positions[k]);
+        fit.orient(positions[k], normals[k]);
+        shapes[k].fit_curvature = fit.curvature();
+        shapes[k].fit_residual  = ShapeFit::rms_distance(fit, positions[k]);
+
+        auto smooth = ShapeFit::smooth_shape(positions[k]);
+        smooth.orient(positions[k], normals[k]);
+        std::vector<double> deviations;
+        for (const auto &x : positions[k])
+          deviations.push_back(smooth.distance(x));
+        const auto extent   = std::minmax_element(deviations.begin(), deviations.end());
+        shapes[k].amplitude = 0.5 * (*extent.second - *extent.first);
+        shapes[k].skewness  = ShapeFit::skewness(deviations);
+        if constexpr (dim == 2)
+          {
+            // Along the longest curve of the piece's polyline (a piece is usually one curve).
+            const auto   polyline = SurfaceGeometry::order_along_surface(points[k], 2. * h_u);
+            unsigned int longest  = 0;
+            for (unsigned int c = 1; c < polyline.n_curves(); ++c)
+              if (polyline.curve_begin[c + 1] - polyline.curve_begin[c] >
+                  polyline.curve_begin[longest + 1] - polyline.curve_begin[longest])
+                longest = c;
+            std::vector<dealii::Point<2>> curve;
+            std::vector<double>           along;
+            for (unsigned int i = polyline.curve_begin[longest];
+                 i < polyline.curve_begin[longest + 1];
+                 ++i)
+              {
+                curve.push_back(polyline.points[i].x);
+                along.push_back(smooth.distance(polyline.points[i].x));
+              }
+            const bool closed    = polyline.closed[longest];
+            const auto relief    = ShapeFit::undulation(curve, along, closed);
+            shapes[k].wavelength = relief.wavelength;
+            shapes[k].relative_amplitude =
+              relief.wavelength > 0. ? shapes[k].amplitude / relief.wavelength : 0.;
+            shapes[k].dip_crest_ratio =
+              ShapeFit::dip_crest_curvature_ratio(curve, closed, smooth.curvature());
+          }
+      }
+    return shapes;
+  }
+
+
+  template class ShapeFits<2>;
+  template class ShapeFits<3>;
+} // namespace GelMPM
