@@ -68,12 +68,11 @@ namespace GelMPM
 
 
   template <int dim>
-  void
-  SelfContactAssembler<dim>::set_settings(const SelfContactSettings &self_contact)
+  std::vector<bool>
+  self_contact_pieces(const SelfContactSettings     &settings,
+                      const BoundaryConditions<dim> &conditions)
   {
-    settings               = self_contact;
-    const auto &conditions = this->boundary_conditions;
-    chosen.assign(conditions.n_pieces(), false);
+    std::vector<bool> chosen(conditions.n_pieces(), false);
     for (unsigned int p = 0; p < conditions.n_pieces(); ++p)
       chosen[p] = settings.pieces.empty() && !conditions.piece(p).displacement_prescribed();
     for (const auto &name : settings.pieces)
@@ -92,6 +91,16 @@ namespace GelMPM
                 "list pieces with a free displacement only");
         chosen[p] = true;
       }
+    return chosen;
+  }
+
+
+  template <int dim>
+  void
+  SelfContactAssembler<dim>::set_settings(const SelfContactSettings &self_contact)
+  {
+    settings = self_contact;
+    chosen   = self_contact_pieces(settings, this->boundary_conditions);
   }
 
 
@@ -340,6 +349,10 @@ namespace GelMPM
   }
 
 
+  template std::vector<bool>
+  self_contact_pieces(const SelfContactSettings &, const BoundaryConditions<2> &);
+  template std::vector<bool>
+  self_contact_pieces(const SelfContactSettings &, const BoundaryConditions<3> &);
   // 2D only: point to segment (3D, point to facet, is not written yet; the settings refuse it).
   template class SelfContactAssembler<2>;
 } // namespace GelMPM

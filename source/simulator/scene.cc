@@ -1,3 +1,4 @@
+#include <gelmpm/assembly/self_contact.h>
 #include <gelmpm/core/collective.h>
 #include <gelmpm/core/format_point.h>
 #include <gelmpm/core/input_error.h>
@@ -70,6 +71,13 @@ namespace GelMPM
             "is penalty in a run on several MPI ranks, but the pairs of points and segments are "
             "found on one rank only for now",
             "run on one rank, or set 'Method = none'");
+    if (contact.self_contact.enabled())
+      self_contact_pieces(contact.self_contact, boundary_conditions);
+    require(!contact.self_contact.enabled() || !grid.refined(),
+            "Contact/Self contact/Method",
+            "is penalty on a grid with 'Background grid/Refinement boxes', but the pairs couple "
+            "the unknowns of uniform cells only for now",
+            "remove 'Refinement boxes', or set 'Method = none'");
     obstacles = parse_obstacles<dim>(prm, obstacle_names);
     for (auto &obstacle : obstacles)
       obstacle.check_inside_grid(grid.lower, grid.upper);

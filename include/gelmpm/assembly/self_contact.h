@@ -38,6 +38,17 @@ namespace GelMPM
 
 
   /**
+   * Per piece of @p conditions, whether its surface points take part in the self-contact of
+   * @p settings ('Pieces', or every piece with a free displacement); throws InputError for a
+   * name that is no piece or a piece whose displacement is prescribed.
+   */
+  template <int dim>
+  std::vector<bool>
+  self_contact_pieces(const SelfContactSettings     &settings,
+                      const BoundaryConditions<dim> &conditions);
+
+
+  /**
    * @brief Contact of the gel's boundary with itself ('Contact/Self contact'), a pair term: the
    * surface points of the chosen free pieces against the current surface of the same body, point
    * to segment in 2D (plane strain and axisymmetric), frictionless, by a penalty.
