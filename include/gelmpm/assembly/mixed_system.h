@@ -71,8 +71,8 @@ namespace GelMPM
    * updates. Each term of the weak form is an assembler of its own (PointAssembler), and the
    * scene's terms are one list, built by setup_assemblers() with the terms the scene needs, in
    * the order of the sums; the class knows no term but contact, whose state and reactions it
-   * reports. The projections are PointProjection's; the error norms of a step are in
-   * mixed_system_errors.cc.
+   * reports, and the gel's contact with itself, whose state it reports. The projections are
+   * PointProjection's; the error norms of a step are in mixed_system_errors.cc.
    *
    * On several MPI ranks each rank holds the material points of its cells and assembles them;
    * the classification, the spaces and their numbering, the residual and the Newton vectors are

@@ -224,8 +224,8 @@ namespace GelMPM
      * points at x_n), on each rank for the pairs its own points make: the pattern is built anew
      * when the pairs of all terms (sorted, without repetitions) differ from those it was built
      * for, so that a pair term whose pairs do not change over steps keeps the linear solver's
-     * analysis. The term writes the entries of a pair itself; a block's AssemblyCopy holds the
-     * unknowns of its own cell only.
+     * analysis. The term writes the entries of a pair itself, in assemble_beyond_blocks(); a
+     * block's AssemblyCopy holds the unknowns of its own cell only.
      */
     virtual void
     add_cell_couplings(const PointCache<dim> & /*cache*/,
