@@ -12,6 +12,7 @@
 #include <gelmpm/core/input_error.h>
 #include <gelmpm/core/parameters.h>
 #include <gelmpm/core/stop_request.h>
+#include <gelmpm/core/units.h>
 #include <gelmpm/simulator/scene_structure.h>
 #include <gelmpm/simulator/simulator.h>
 
@@ -76,25 +77,39 @@ namespace
   {
     dealii::ParameterHandler prm;
     GelMPM::Simulator<dim>::declare_parameters(prm, structure);
+    GelMPM::Units::declare_parameters(prm);
+    GelMPM::Units units;
     if (!cl.scene_file.empty())
-      GelMPM::read_scene_file(prm, cl.scene_file, cl.overrides);
+      {
+        GelMPM::read_scene_file(prm, cl.scene_file, cl.overrides);
+        // Before anything reads the parameters: a scene of laboratory values becomes normalised.
+        units = GelMPM::Units::convert_scene(prm);
+      }
 
     if (cl.print_parameters)
       {
         std::ostringstream listing;
         GelMPM::print_parameters_with_patterns(prm, listing);
-        std::cout << (cl.scene_file.empty() ? mark_templates(listing.str()) : listing.str());
+        const std::string annotated = GelMPM::Units::annotate_reference(listing.str());
+        std::cout << (cl.scene_file.empty() ? mark_templates(annotated) : annotated);
         return 0;
       }
 
+    const bool             root = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
     GelMPM::Simulator<dim> simulator(prm, structure, cl.scene_file, cl.resume);
+    if (root)
+      units.print_conversions(std::cout);
     if (cl.check_only)
       {
         simulator.print_piece_table();
         std::cout << "gelmpm: scene '" << cl.scene_file << "' is valid\n";
         return 0;
       }
-    return simulator.run();
+    const int status = simulator.run();
+    // While the run still holds its output directory: statistics.csv in laboratory units.
+    if (root && units.enabled())
+      units.write_statistics(prm.get(std::vector<std::string>{"Output"}, "Directory"));
+    return status;
   }
 } // namespace
 

@@ -14,7 +14,7 @@ namespace GelMPM
   {
     static const std::regex names(
       "(particles|grid|mode)(-[0-9]{5}(\\.[0-9]{4})?\\.p?vtu|\\.pvd)(\\.tmp)?|"
-      "(statistics|stability|events)\\.csv|parameters\\.prm|original\\.prm|"
+      "(statistics|statistics_units|stability|events)\\.csv(\\.tmp)?|parameters\\.prm|original\\.prm|"
       "checkpoint\\.bin(\\.tmp)?|surface_.+-[0-9]{5}\\.csv(\\.tmp)?");
     return names;
   }
