@@ -38,24 +38,27 @@ namespace GelMPM
       "Instability threshold",
       "0",
       dealii::Patterns::Double(0.),
-      "With 'Shape pieces' (2D): the first time (the initial state included) a piece's "
-      "<piece>_relative_amplitude, its relief's amplitude over its wavelength, reaches this "
-      "value, the relief has left the smooth shape: a row 'instability_crease_<piece>' or "
-      "'instability_wrinkle_<piece>' in events.csv (see 'Crease skewness'), once per piece. "
-      "Give a value above the piece's initial relative amplitude (row 0 of statistics.csv; a "
-      "seed or texture has one): an event at t = 0 says it is not. Measured "
-      "(doc/own_scenes.md, section 8): 0.01 is reached as the core-shell disk's grooves and the "
-      "skin's wrinkles appear; the creasing film's seeded top starts at 0.011 and reaches 0.05 "
-      "0.26 tau_d before its crease folds. 0: no such events.");
+      "With 'Shape pieces' (2D): when a piece's <piece>_relative_amplitude (its relief's "
+      "amplitude over its wavelength) first reaches this value, the relief has left the smooth "
+      "shape: a row 'instability_wrinkle_<piece>' or 'instability_crease_<piece>' in events.csv "
+      "(see 'Crease skewness'); a wrinkle whose relief turns crease-like later, while above this "
+      "value, adds a row 'instability_crease_<piece>'. At most these two rows per piece. The "
+      "initial state counts: a row at t = 0 says the piece starts with more relief than this "
+      "(a seed, a texture; row 0 of statistics.csv has its value), so give a larger one. "
+      "Measured (doc/own_scenes.md, section 8): 0.01 is reached as the first grooves of the "
+      "core-shell disk and the spontaneous creases of the film appear; the creasing film's "
+      "seeded top starts at 0.011 and reaches 0.05 0.26 tau_d before its crease folds. 0: no "
+      "such events.");
     prm.declare_entry(
       "Crease skewness",
-      "1",
+      "0.5",
       dealii::Patterns::Double(0.),
-      "With 'Instability threshold': the piece's instability is a crease if its "
-      "<piece>_skewness is at or below minus this value when the threshold is reached (its "
-      "relief is made of narrow dips into the body between broad crests), a wrinkle otherwise "
-      "(a sinusoidal relief has skewness 0). Measured at the threshold: wrinkles of a stiff "
-      "skin +0.04, the creasing film -2.4 (doc/own_scenes.md, section 8).");
+      "With 'Instability threshold': a piece's relief is a crease when its <piece>_skewness is "
+      "at or below minus this value (narrow dips into the body between broad crests), a wrinkle "
+      "otherwise (a sinusoidal relief has skewness 0). Measured (doc/own_scenes.md, section 8) "
+      "up to a relative amplitude of 0.02: a stiff skin's wrinkles -0.06 to +0.04, the film's "
+      "creases -0.74 at 0.02 and below -1.2 from 0.03; just after leaving the smooth shape the "
+      "creases' relief is still near symmetric (-0.08 at 0.01), hence the later crease row.");
   }
 
 
@@ -146,16 +149,22 @@ namespace GelMPM
     if (!writes_events())
       return events;
     const auto measured = shapes(particles);
-    instabilities_seen.resize(measured.size(), 0);
+    instabilities_seen.resize(measured.size(), no_instability);
     for (unsigned int k = 0; k < measured.size(); ++k)
-      if (instabilities_seen[k] == 0 && measured[k].relative_amplitude >= instability_threshold)
-        {
-          const bool crease = measured[k].skewness <= -crease_skewness;
-          events.emplace_back(std::string("instability_") + (crease ? "crease_" : "wrinkle_") +
-                                names[k],
+      {
+        // Judged only while the relief is above the threshold: below it the skewness of a
+        // relief the size of the points' scatter means nothing.
+        if (instabilities_seen[k] == crease_seen ||
+            measured[k].relative_amplitude < instability_threshold)
+          continue;
+        const unsigned int kind =
+          measured[k].skewness <= -crease_skewness ? crease_seen : wrinkle_seen;
+        if (kind > instabilities_seen[k])
+          events.emplace_back(std::string("instability_") +
+                                (kind == crease_seen ? "crease_" : "wrinkle_") + names[k],
                               0);
-          instabilities_seen[k] = 1;
-        }
+        instabilities_seen[k] = std::max(instabilities_seen[k], kind);
+      }
     return events;
   }
 

@@ -11,8 +11,9 @@
 //   along the surface (0.5%), skewness 0 (0.05), relative amplitude 0.0033 below the threshold
 //   0.005: no event; a = 0.006 (relative amplitude 0.01): one event 'instability_wrinkle_top', and
 //   none when asked again;
-// - narrow cusped dips 0.02 deep every 0.6 (a crease's relief): one event
-//   'instability_crease_top' (skewness -2.1, below -1).
+// - the wrinkle turned into narrow cusped dips 0.02 deep every 0.6 (a crease's relief; skewness
+//   -2.1, below -'Crease skewness' = -0.5): one more event 'instability_crease_top', then none;
+//   the same dips on a piece seen first then: one event 'instability_crease_top'.
 #include <gelmpm/core/input_error.h>
 #include <gelmpm/io/statistics_file.h>
 #include <gelmpm/particles/property_layout.h>
@@ -209,11 +210,16 @@ main(int argc, char **argv)
                  wrinkle[0].second == 0);
   ok &= report("  none when asked again", wrinkling.new_events(film.particles).empty());
 
+  film.shape(dips);
+  const auto turned = row(wrinkling);
+  ok &= report("the wrinkle turned into cusped dips: one event 'instability_crease_top'",
+               turned.size() == 1 && turned[0].first == "instability_crease_top");
+  ok &= report("  none when asked again", wrinkling.new_events(film.particles).empty());
+
   auto creasing = parse<2>("top", "0.005");
   creasing.set_grid_spacing(h);
-  film.shape(dips);
   const auto crease = row(creasing);
-  ok &= report("cusped dips: one event 'instability_crease_top'",
+  ok &= report("cusped dips at once: one event 'instability_crease_top'",
                crease.size() == 1 && crease[0].first == "instability_crease_top");
 
   const auto s = read_statistics("statistics.csv");
@@ -232,6 +238,8 @@ main(int argc, char **argv)
            std::abs(s.at("top_relative_amplitude")[1] - 0.002 / s.at("top_wavelength")[1]) < 1e-9 &&
              s.at("top_relative_amplitude")[1] < 0.005);
   ok &= report("cusped dips: skewness below -1", s.at("top_skewness")[3] < -1.);
+  ok &= report("  the same relief for both observers",
+               s.at("top_skewness")[4] == s.at("top_skewness")[3]);
 
   std::cout << (ok ? "shape fits checks passed" : "SHAPE FITS CHECKS FAILED") << std::endl;
   return ok ? 0 : 1;

@@ -32,7 +32,8 @@ namespace GelMPM
    * In 2D, with 'Instability threshold' > 0, the first time a piece's amplitude over wavelength
    * reaches it is the event 'instability_crease_<piece>' or 'instability_wrinkle_<piece>'
    * (new_events()): a crease where the relief is made of narrow dips between broad crests, its
-   * skewness at or below -'Crease skewness', a wrinkle otherwise.
+   * skewness at or below -'Crease skewness', a wrinkle otherwise; a wrinkle whose skewness later
+   * falls that low while above the threshold is then the event 'instability_crease_<piece>'.
    */
   template <int dim>
   class ShapeFits : public Observable<dim>
@@ -60,7 +61,10 @@ namespace GelMPM
     void
     set_grid_spacing(const double spacing);
 
-    /** In 2D with 'Instability threshold', the events since the last call, as (name, 0). */
+    /**
+     * In 2D with 'Instability threshold', the events since the last call, as (name, 0): at most
+     * a wrinkle and then a crease per piece.
+     */
     std::vector<std::pair<std::string, unsigned int>>
     new_events(const dealii::Particles::ParticleHandler<dim> &particles);
 
@@ -68,8 +72,8 @@ namespace GelMPM
     bool
     writes_events() const;
 
-    /** The pieces whose instability has been reported, for a checkpoint (the archive's fields,
-     * no class record). */
+    /** The instabilities reported per piece, for a checkpoint (the archive's fields, no class
+     * record). */
     template <class Archive>
     void
     serialize(Archive &ar, const unsigned int)
@@ -97,10 +101,11 @@ namespace GelMPM
     std::vector<unsigned int> pieces;
     std::vector<std::string>  names;
     double                    instability_threshold = 0.;
-    double                    crease_skewness       = 1.;
+    double                    crease_skewness       = 0.5;
     double                    h_u                   = 0.;
-    /** Per piece, 1 once its instability event has been written. */
-    std::vector<unsigned int> instabilities_seen;
+    /** Per piece, the last instability event written (a wrinkle may turn into creases). */
+    std::vector<unsigned int>     instabilities_seen;
+    static constexpr unsigned int no_instability = 0, wrinkle_seen = 1, crease_seen = 2;
   };
 } // namespace GelMPM
 
