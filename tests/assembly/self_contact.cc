@@ -6,7 +6,8 @@
 //   (1e-7 of their scale), and its value on a known configuration;
 // - the term is in the list only when the subsection switches it on, and it makes pairs of the
 //   facing sides at the setup (search distance 3 cells), which couple cells with no unknown in
-//   common (the tangent below writes their entries);
+//   common: the pattern holds more entries than without the term, and the next setup, with the
+//   same pairs, keeps it (the linear solver keeps its analysis);
 // - with the upper block's displacement unknowns at du_y = -0.3 (a rigid shift by partition of
 //   unity; its bottom 0.05 behind the lower block's top) both faces' points are active, by 0.05,
 //   and the pair term's y-residual summed over the upper block's unknowns is minus the reported
@@ -168,6 +169,11 @@ namespace
       dynamic_cast<const GelMPM::SelfContactAssembler<2> *>(system.assemblers().back());
     std::cout << "  " << term->n_pairs() << " pairs" << std::endl;
     ok &= report("pairs found at the setup", term->n_pairs() > 0);
+    ok &= report("their cells' entries in the pattern (more entries than without)",
+                 system.matrix().n_nonzero_elements() > plain.matrix().n_nonzero_elements());
+    ok &= report("the next setup keeps the pattern (the same pairs)",
+                 !system.setup(on.scene->particles));
+    system.set_boundary_values(0.5, 0.);
 
     // Exact shift: both faces flat, every active point by 0.05.
     const Vector<double> shifted = pressed_state(*on.scene, 0.);
