@@ -189,13 +189,11 @@ namespace GelMPM
     std::vector<dealii::types::global_dof_index> unknowns;
     if (!axisymmetric_)
       return unknowns;
-    for (unsigned int i = 0; i < u_space_.n_functions(); ++i)
-      {
-        const unsigned int dof = u_->dof_of_control_point(i);
-        if (dof != dealii::numbers::invalid_unsigned_int &&
-            u_space_.function_multi_index(i)[0] == 0)
+    for_each_u_dof_function(
+      [&](const unsigned int dof, const BSplineSpace<dim> &, const auto &index) {
+        if (index[0] == 0)
           unknowns.push_back(dim * dof);
-      }
+      });
     std::sort(unknowns.begin(), unknowns.end());
     return unknowns;
   }
@@ -348,34 +346,38 @@ namespace GelMPM
 
 
   template <int dim>
-  std::vector<double>
-  DiscreteSpaces<dim>::u_dof_greville_points() const
+  template <typename F>
+  void
+  DiscreteSpaces<dim>::for_each_u_dof_function(const F &f) const
   {
-    std::vector<double> points(n_u_dofs(), 0.);
-    if (refined())
-      {
-        for (unsigned int i = 0; i < u_hierarchy_->n_active_functions(); ++i)
-          {
-            const unsigned int dof = u_->dof_of_control_point(i);
-            if (dof == dealii::numbers::invalid_unsigned_int)
-              continue;
-            const auto &[level, function] = u_hierarchy_->active_function(i);
-            const auto &space             = u_hierarchy_->level_space(level);
-            const auto  index             = space.function_multi_index(function);
-            for (unsigned int d = 0; d < dim; ++d)
-              points[dim * dof + d] = space.basis_1d(d).greville(index[d]);
-          }
-        return points;
-      }
-    for (unsigned int i = 0; i < u_space_.n_functions(); ++i)
+    const unsigned int n = refined() ? u_hierarchy_->n_active_functions() : u_space_.n_functions();
+    for (unsigned int i = 0; i < n; ++i)
       {
         const unsigned int dof = u_->dof_of_control_point(i);
         if (dof == dealii::numbers::invalid_unsigned_int)
           continue;
-        const auto index = u_space_.function_multi_index(i);
-        for (unsigned int d = 0; d < dim; ++d)
-          points[dim * dof + d] = u_space_.basis_1d(d).greville(index[d]);
+        if (!refined())
+          {
+            f(dof, u_space_, u_space_.function_multi_index(i));
+            continue;
+          }
+        const auto &[level, function] = u_hierarchy_->active_function(i);
+        const auto &space             = u_hierarchy_->level_space(level);
+        f(dof, space, space.function_multi_index(function));
       }
+  }
+
+
+  template <int dim>
+  std::vector<double>
+  DiscreteSpaces<dim>::u_dof_greville_points() const
+  {
+    std::vector<double> points(n_u_dofs(), 0.);
+    for_each_u_dof_function(
+      [&](const unsigned int dof, const BSplineSpace<dim> &space, const auto &index) {
+        for (unsigned int d = 0; d < dim; ++d)
+          points[dim * dof + d] = space.basis_1d(d).greville(index[d]);
+      });
     return points;
   }
 

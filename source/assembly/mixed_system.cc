@@ -116,7 +116,15 @@ namespace GelMPM
   MixedSystem<dim>::unknowns_of_cell(const unsigned int                            u_cell,
                                      std::vector<dealii::types::global_dof_index> &dofs) const
   {
-    cache.unknowns_of_block(PointBlock{u_cell, spaces_.mu_cell_of(u_cell), 0, 0}, dofs);
+    // All pieces of the cell: a pair term couples whole cells.
+    const unsigned int n_u = spaces_.n_u_dofs();
+    dofs.clear();
+    for (const unsigned int i : spaces_.u().cell_dofs(u_cell))
+      for (unsigned int c = 0; c < dim; ++c)
+        dofs.push_back(dim * i + c);
+    for (const unsigned int j : spaces_.mu().cell_dofs(spaces_.mu_cell_of(u_cell)))
+      dofs.push_back(n_u + j);
+    std::sort(dofs.begin(), dofs.end());
   }
 
 
@@ -579,8 +587,8 @@ namespace GelMPM
                                    AssemblyScratch<dim>         &scratch,
                                    AssemblyCopy                 &copy) const
   {
-    const auto        &u_dofs  = spaces_.u().cell_dofs(block.u_cell);
-    const auto        &mu_dofs = spaces_.mu().cell_dofs(block.mu_cell);
+    const auto        &u_dofs  = cache.u_dofs(block);
+    const auto        &mu_dofs = cache.mu_dofs(block);
     const unsigned int n_u = u_dofs.size(), n_mu = mu_dofs.size();
     const unsigned int n          = dim * n_u + n_mu;
     const unsigned int n_u_global = spaces_.n_u_dofs();

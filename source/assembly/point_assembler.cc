@@ -8,8 +8,8 @@ namespace GelMPM
                                                   const DiscreteSpaces<dim>    &spaces,
                                                   const dealii::Vector<double> &solution)
   {
-    const auto        &u_dofs     = spaces.u().cell_dofs(block.u_cell);
-    const auto        &mu_dofs    = spaces.mu().cell_dofs(block.mu_cell);
+    const auto        &u_dofs     = spaces.u().cell_dofs(block.u_cell, block.u_piece);
+    const auto        &mu_dofs    = spaces.mu().cell_dofs(block.mu_cell, block.mu_piece);
     const unsigned int n_u_global = spaces.n_u_dofs();
     n_u                           = u_dofs.size();
     n_mu                          = mu_dofs.size();

@@ -224,10 +224,15 @@ namespace GelMPM
   {
     // Stable: within a cell the points keep the handler's order, so that sums over them (and
     // with them the results) do not depend on the sort.
+    // On a refined grid a cell's points are grouped further by the leaf (piece) they lie in.
+    std::vector<unsigned int> pieces(unsorted.size(), 0);
+    if (spaces.refined())
+      for (unsigned int i = 0; i < unsorted.size(); ++i)
+        pieces[i] = spaces.u().piece_containing(unsorted[i].x, cells[i]);
     std::vector<unsigned int> order(unsorted.size());
     std::iota(order.begin(), order.end(), 0u);
     std::stable_sort(order.begin(), order.end(), [&](const unsigned int a, const unsigned int b) {
-      return cells[a] < cells[b];
+      return std::make_pair(cells[a], pieces[a]) < std::make_pair(cells[b], pieces[b]);
     });
 
     points_.clear();
@@ -239,17 +244,14 @@ namespace GelMPM
     for (const unsigned int i : order)
       {
         const unsigned int cell = cells[i];
-        if (blocks_.empty() || blocks_.back().u_cell != cell)
-          blocks_.push_back(PointBlock{cell,
-                                       spaces.mu_cell_of(cell),
-                                       static_cast<unsigned int>(points_.size()),
-                                       0});
+        if (blocks_.empty() || blocks_.back().u_cell != cell || blocks_.back().u_piece != pieces[i])
+          blocks_.push_back(new_block(cell, pieces[i], points_.size()));
         PointRecord<dim> r = unsorted[i];
         r.block            = blocks_.size() - 1;
         r.u_offset         = n_u_shapes;
         r.mu_offset        = n_mu_shapes;
-        n_u_shapes += spaces.u().cell_dofs(cell).size();
-        n_mu_shapes += spaces.mu().cell_dofs(blocks_.back().mu_cell).size();
+        n_u_shapes += u_dofs(blocks_.back()).size();
+        n_mu_shapes += mu_dofs(blocks_.back()).size();
         points_.push_back(r);
         particles_.push_back(its[i]);
         blocks_.back().end = points_.size();
@@ -258,6 +260,31 @@ namespace GelMPM
     u_gradients.resize(n_u_shapes);
     mu_values.resize(n_mu_shapes);
     mu_gradients.resize(n_mu_shapes);
+  }
+
+
+  template <int dim>
+  PointBlock
+  PointCache<dim>::new_block(const unsigned int u_cell,
+                             const unsigned int u_piece,
+                             const unsigned int first) const
+  {
+    PointBlock block{u_cell, spaces.mu_cell_of(u_cell), first, first};
+    block.u_piece = u_piece;
+    if (spaces.refined())
+      {
+        // mu is one level coarser everywhere: the mu leaf that holds the u leaf's centre holds
+        // all of it.
+        const auto &hierarchy     = spaces.u_hierarchy();
+        const auto &[level, leaf] = hierarchy.leaf_cell(spaces.u().leaf_of_piece(u_cell, u_piece));
+        const auto        &space  = hierarchy.level_space(level);
+        const auto         index  = space.cell_multi_index(leaf);
+        dealii::Point<dim> centre;
+        for (unsigned int d = 0; d < dim; ++d)
+          centre[d] = space.basis_1d(d).x_min() + (index[d] + 0.5) * space.cell_size(d);
+        block.mu_piece = spaces.mu().piece_containing(centre, block.mu_cell);
+      }
+    return block;
   }
 
 
@@ -278,14 +305,21 @@ namespace GelMPM
             const PointBlock       &b = blocks_[r.block];
             for (const auto *space : {&spaces.u(), &spaces.mu()})
               {
-                const bool         is_u = (space == &spaces.u());
-                const unsigned int cell = is_u ? b.u_cell : b.mu_cell;
-                const unsigned int n    = space->cell_dofs(cell).size();
+                const bool         is_u  = (space == &spaces.u());
+                const unsigned int cell  = is_u ? b.u_cell : b.mu_cell;
+                const unsigned int piece = is_u ? b.u_piece : b.mu_piece;
+                const unsigned int n     = space->cell_dofs(cell, piece).size();
                 values.resize(n);
                 gradients.resize(n);
                 scratch_values.resize(space->space().functions_per_cell());
                 scratch_gradients.resize(space->space().functions_per_cell());
-                space->evaluate(r.x, cell, values, gradients, scratch_values, scratch_gradients);
+                space->evaluate(r.x,
+                                cell,
+                                piece,
+                                values,
+                                gradients,
+                                scratch_values,
+                                scratch_gradients);
                 const unsigned int offset = is_u ? r.u_offset : r.mu_offset;
                 std::copy(values.begin(),
                           values.end(),
@@ -307,10 +341,10 @@ namespace GelMPM
   {
     const unsigned int n_u = spaces.n_u_dofs();
     dofs.clear();
-    for (const unsigned int i : spaces.u().cell_dofs(block.u_cell))
+    for (const unsigned int i : u_dofs(block))
       for (unsigned int c = 0; c < dim; ++c)
         dofs.push_back(dim * i + c);
-    for (const unsigned int j : spaces.mu().cell_dofs(block.mu_cell))
+    for (const unsigned int j : mu_dofs(block))
       dofs.push_back(n_u + j);
     std::sort(dofs.begin(), dofs.end());
   }
@@ -324,8 +358,8 @@ namespace GelMPM
     Fields fields;
     auto &[du, delta_F, mu]  = fields;
     const PointBlock &b      = blocks_[r.block];
-    const auto       &u_dofs = spaces.u().cell_dofs(b.u_cell);
-    const auto       &m_dofs = spaces.mu().cell_dofs(b.mu_cell);
+    const auto       &u_dofs = this->u_dofs(b);
+    const auto       &m_dofs = mu_dofs(b);
     const auto        n_u    = spaces.n_u_dofs();
     delta_F                  = dealii::unit_symmetric_tensor<dim>();
     du                       = Tensor<1, dim>();

@@ -26,8 +26,8 @@ namespace GelMPM
     const std::function<double(const PointRecord<dim> &, unsigned int)> &value) const
   {
     const auto &space   = displacement ? spaces.u() : spaces.mu();
-    const auto  cell_of = [displacement](const PointBlock &b) {
-      return displacement ? b.u_cell : b.mu_cell;
+    const auto  dofs_of = [&](const PointBlock &b) -> const std::vector<unsigned int>  &{
+      return displacement ? cache.u_dofs(b) : cache.mu_dofs(b);
     };
     const unsigned int n = displacement ? spaces.n_u_dofs() / dim : spaces.n_mu_dofs();
     // On several ranks the pattern is that of every active cell, the same on all ranks, so
@@ -39,8 +39,7 @@ namespace GelMPM
     if (!sparsity)
       {
         dealii::DynamicSparsityPattern pattern(n, n);
-        const auto                     add_cell = [&](const unsigned int cell) {
-          const auto &dofs = space.cell_dofs(cell);
+        const auto                     add_dofs = [&](const std::vector<unsigned int> &dofs) {
           for (const auto i : dofs)
             pattern.add_entries(i, dofs.begin(), dofs.end(), true);
         };
@@ -48,11 +47,11 @@ namespace GelMPM
           {
             for (unsigned int c = 0; c < cache.classification().size(); ++c)
               if (cache.classification()[c])
-                add_cell(displacement ? c : spaces.mu_cell_of(c));
+                add_dofs(space.cell_dofs(displacement ? c : spaces.mu_cell_of(c)));
           }
         else
           for (const PointBlock &b : cache.blocks())
-            add_cell(cell_of(b));
+            add_dofs(dofs_of(b));
         sparsity = std::make_unique<dealii::SparsityPattern>();
         sparsity->copy_from(pattern);
       }
@@ -65,7 +64,7 @@ namespace GelMPM
     std::vector<double>        point_values(n_components);
     for (const PointBlock &b : cache.blocks())
       {
-        const auto        &dofs = space.cell_dofs(cell_of(b));
+        const auto        &dofs = dofs_of(b);
         const unsigned int m    = dofs.size();
         local_mass.reinit(m, m);
         local_rhs.reinit(n_components, m);
@@ -129,7 +128,7 @@ namespace GelMPM
     for (const auto &r : cache.points())
       if (r.kind == PointKind::volume)
         {
-          const auto &dofs = spaces.mu().cell_dofs(cache.blocks()[r.block].mu_cell);
+          const auto &dofs = cache.mu_dofs(cache.blocks()[r.block]);
           for (unsigned int i = 0; i < dofs.size(); ++i)
             for (unsigned int j = 0; j < dofs.size(); ++j)
               mass(dofs[i], dofs[j]) +=

@@ -216,6 +216,8 @@ namespace GelMPM
   {
     leaves_of_cell.assign(space_.n_cells(), {});
     leaf_matrices_of_cell.assign(space_.n_cells(), {});
+    leaf_dofs_of_cell.assign(space_.n_cells(), {});
+    leaf_rows_in_cell.assign(space_.n_cells(), {});
     dofs_of_cell.assign(space_.n_cells(), {});
     piece_of_leaf.assign(hierarchy->n_leaf_cells(), dealii::numbers::invalid_unsigned_int);
     for (unsigned int leaf = 0; leaf < hierarchy->n_leaf_cells(); ++leaf)
@@ -263,24 +265,38 @@ namespace GelMPM
                   }
               }
           }
-        auto &dofs     = dofs_of_cell[cell];
-        auto &matrices = leaf_matrices_of_cell[cell];
-        matrices.assign(leaves.size(), CellMatrix());
-        for (auto &matrix : matrices)
-          matrix.row_start.push_back(0);
-        for (auto &[dof, per_leaf] : rows)
+        // Per leaf, only the rows of the DoFs that are nonzero on it: the cell's DoFs are their
+        // union.
+        auto &dofs = dofs_of_cell[cell];
+        for (const auto &row : rows)
+          dofs.push_back(row.first);
+        leaf_dofs_of_cell[cell].assign(leaves.size(), {});
+        leaf_rows_in_cell[cell].assign(leaves.size(), {});
+        leaf_matrices_of_cell[cell].assign(leaves.size(), CellMatrix());
+        for (unsigned int piece = 0; piece < leaves.size(); ++piece)
           {
-            dofs.push_back(dof);
-            for (unsigned int piece = 0; piece < leaves.size(); ++piece)
+            auto &matrix = leaf_matrices_of_cell[cell][piece];
+            matrix.row_start.push_back(0);
+            unsigned int position = 0;
+            for (const auto &[dof, per_leaf] : rows)
               {
-                auto &matrix = matrices[piece];
+                bool nonzero = false;
+                if (piece >= per_leaf.size())
+                  continue;
                 for (const auto &[a, E] : per_leaf[piece])
                   if (E != 0.)
                     {
                       matrix.column.push_back(a);
                       matrix.weight.push_back(E);
+                      nonzero = true;
                     }
-                matrix.row_start.push_back(matrix.column.size());
+                if (nonzero)
+                  {
+                    matrix.row_start.push_back(matrix.column.size());
+                    leaf_dofs_of_cell[cell][piece].push_back(dof);
+                    leaf_rows_in_cell[cell][piece].push_back(position);
+                  }
+                ++position;
               }
           }
       }
@@ -632,20 +648,12 @@ namespace GelMPM
 
   template <int dim>
   void
-  ExtendedBSplineSpace<dim>::evaluate(const dealii::Point<dim>            &p,
-                                      const unsigned int                   cell,
-                                      std::vector<double>                 &values,
-                                      std::vector<dealii::Tensor<1, dim>> &gradients,
-                                      std::vector<double>                 &scratch_values,
-                                      std::vector<dealii::Tensor<1, dim>> &scratch_gradients) const
+  ExtendedBSplineSpace<dim>::apply(const CellMatrix                          &E,
+                                   const std::vector<double>                 &scratch_values,
+                                   const std::vector<dealii::Tensor<1, dim>> &scratch_gradients,
+                                   std::vector<double>                       &values,
+                                   std::vector<dealii::Tensor<1, dim>>       &gradients)
   {
-    if (hierarchy)
-      {
-        evaluate_on_leaf(p, cell, values, gradients, scratch_values, scratch_gradients);
-        return;
-      }
-    space_.evaluate(p, cell, scratch_values, scratch_gradients);
-    const auto &E = matrix_of_cell[cell];
     for (unsigned int r = 0; r + 1 < E.row_start.size(); ++r)
       {
         double                 v = 0.;
@@ -658,6 +666,104 @@ namespace GelMPM
         values[r]    = v;
         gradients[r] = g;
       }
+  }
+
+
+  template <int dim>
+  void
+  ExtendedBSplineSpace<dim>::evaluate(const dealii::Point<dim>            &p,
+                                      const unsigned int                   cell,
+                                      std::vector<double>                 &values,
+                                      std::vector<dealii::Tensor<1, dim>> &gradients,
+                                      std::vector<double>                 &scratch_values,
+                                      std::vector<dealii::Tensor<1, dim>> &scratch_gradients) const
+  {
+    if (!hierarchy)
+      {
+        space_.evaluate(p, cell, scratch_values, scratch_gradients);
+        apply(matrix_of_cell[cell], scratch_values, scratch_gradients, values, gradients);
+        return;
+      }
+    // The piece's values, spread over the cell's DoFs (zero for those not on the piece).
+    const unsigned int                               piece = piece_containing(p, cell);
+    const auto                                      &rows  = leaf_rows_in_cell[cell][piece];
+    thread_local std::vector<double>                 piece_values;
+    thread_local std::vector<dealii::Tensor<1, dim>> piece_gradients;
+    piece_values.resize(rows.size());
+    piece_gradients.resize(rows.size());
+    evaluate(p, cell, piece, piece_values, piece_gradients, scratch_values, scratch_gradients);
+    std::fill(values.begin(), values.end(), 0.);
+    std::fill(gradients.begin(), gradients.end(), dealii::Tensor<1, dim>());
+    for (unsigned int r = 0; r < rows.size(); ++r)
+      {
+        values[rows[r]]    = piece_values[r];
+        gradients[rows[r]] = piece_gradients[r];
+      }
+  }
+
+
+  template <int dim>
+  unsigned int
+  ExtendedBSplineSpace<dim>::n_pieces(const unsigned int cell) const
+  {
+    return hierarchy ? leaves_of_cell[cell].size() : 1;
+  }
+
+
+  template <int dim>
+  unsigned int
+  ExtendedBSplineSpace<dim>::piece_containing(const dealii::Point<dim> &p,
+                                              const unsigned int        cell) const
+  {
+    if (!hierarchy || leaves_of_cell[cell].size() == 1)
+      return 0;
+    // The leaf of the cell nearest to p: p clamped into the cell, a little inside.
+    const auto         index = space_.cell_multi_index(cell);
+    dealii::Point<dim> inside;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        const double h     = space_.cell_size(d);
+        const double lower = space_.basis_1d(d).x_min() + index[d] * h;
+        inside[d]          = std::clamp(p[d], lower + 1e-9 * h, lower + h - 1e-9 * h);
+      }
+    return piece_of_leaf[hierarchy->leaf_cell_containing(inside)];
+  }
+
+
+  template <int dim>
+  unsigned int
+  ExtendedBSplineSpace<dim>::leaf_of_piece(const unsigned int cell, const unsigned int piece) const
+  {
+    return leaves_of_cell[cell][piece];
+  }
+
+
+  template <int dim>
+  const std::vector<unsigned int> &
+  ExtendedBSplineSpace<dim>::cell_dofs(const unsigned int cell, const unsigned int piece) const
+  {
+    return hierarchy ? leaf_dofs_of_cell[cell][piece] : dofs_of_cell[cell];
+  }
+
+
+  template <int dim>
+  void
+  ExtendedBSplineSpace<dim>::evaluate(const dealii::Point<dim>            &p,
+                                      const unsigned int                   cell,
+                                      const unsigned int                   piece,
+                                      std::vector<double>                 &values,
+                                      std::vector<dealii::Tensor<1, dim>> &gradients,
+                                      std::vector<double>                 &scratch_values,
+                                      std::vector<dealii::Tensor<1, dim>> &scratch_gradients) const
+  {
+    if (!hierarchy)
+      {
+        evaluate(p, cell, values, gradients, scratch_values, scratch_gradients);
+        return;
+      }
+    const auto &[level, leaf_cell] = hierarchy->leaf_cell(leaves_of_cell[cell][piece]);
+    hierarchy->level_space(level).evaluate(p, leaf_cell, scratch_values, scratch_gradients);
+    apply(leaf_matrices_of_cell[cell][piece], scratch_values, scratch_gradients, values, gradients);
   }
 
 
@@ -669,49 +775,6 @@ namespace GelMPM
     if (hierarchy)
       return function_weights[k];
     return use_extension ? weights[k] : none;
-  }
-
-
-  template <int dim>
-  void
-  ExtendedBSplineSpace<dim>::evaluate_on_leaf(
-    const dealii::Point<dim>            &p,
-    const unsigned int                   cell,
-    std::vector<double>                 &values,
-    std::vector<dealii::Tensor<1, dim>> &gradients,
-    std::vector<double>                 &scratch_values,
-    std::vector<dealii::Tensor<1, dim>> &scratch_gradients) const
-  {
-    const auto  &leaves = leaves_of_cell[cell];
-    unsigned int piece  = 0;
-    if (leaves.size() > 1)
-      {
-        // The leaf of the cell nearest to p: p clamped into the cell, a little inside.
-        const auto         index = space_.cell_multi_index(cell);
-        dealii::Point<dim> inside;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            const double h     = space_.cell_size(d);
-            const double lower = space_.basis_1d(d).x_min() + index[d] * h;
-            inside[d]          = std::clamp(p[d], lower + 1e-9 * h, lower + h - 1e-9 * h);
-          }
-        piece = piece_of_leaf[hierarchy->leaf_cell_containing(inside)];
-      }
-    const auto &[level, leaf_cell] = hierarchy->leaf_cell(leaves[piece]);
-    hierarchy->level_space(level).evaluate(p, leaf_cell, scratch_values, scratch_gradients);
-    const auto &E = leaf_matrices_of_cell[cell][piece];
-    for (unsigned int r = 0; r + 1 < E.row_start.size(); ++r)
-      {
-        double                 v = 0.;
-        dealii::Tensor<1, dim> g;
-        for (unsigned int k = E.row_start[r]; k < E.row_start[r + 1]; ++k)
-          {
-            v += E.weight[k] * scratch_values[E.column[k]];
-            g += E.weight[k] * scratch_gradients[E.column[k]];
-          }
-        values[r]    = v;
-        gradients[r] = g;
-      }
   }
 
 

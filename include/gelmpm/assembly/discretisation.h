@@ -182,6 +182,14 @@ namespace GelMPM
     settings() const;
 
   private:
+    /**
+     * Calls @p f(dof, space, index) for every DoF of the u space: the B-spline space of the DoF's
+     * function (its level's on a refined grid) and the function's multi-index in it.
+     */
+    template <typename F>
+    void
+    for_each_u_dof_function(const F &f) const;
+
     /** The two hierarchies of a refined grid, from its one marking. */
     void
     build_hierarchies(const BackgroundGrid<dim> &grid);

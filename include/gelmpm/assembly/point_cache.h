@@ -80,11 +80,16 @@ namespace GelMPM
   };
 
 
-  /** The points of one displacement cell: one block of assembly. */
+  /**
+   * The points of one displacement cell (of one leaf of it on a refined grid: the piece of
+   * ExtendedBSplineSpace): one block of assembly.
+   */
   struct PointBlock
   {
     unsigned int u_cell, mu_cell;
     unsigned int first, end;
+    /** The pieces of u_cell and mu_cell the points lie in (0 on a uniform grid). */
+    unsigned int u_piece = 0, mu_piece = 0;
   };
 
 
@@ -218,6 +223,19 @@ namespace GelMPM
       return n_active_cells_;
     }
 
+    /** The u DoFs whose extended functions are nonzero at the points of @p block. */
+    const std::vector<unsigned int> &
+    u_dofs(const PointBlock &block) const
+    {
+      return spaces.u().cell_dofs(block.u_cell, block.u_piece);
+    }
+    /** The mu DoFs whose extended functions are nonzero at the points of @p block. */
+    const std::vector<unsigned int> &
+    mu_dofs(const PointBlock &block) const
+    {
+      return spaces.mu().cell_dofs(block.mu_cell, block.mu_piece);
+    }
+
     /** The unknowns (u interleaved, then mu), sorted, that the points of @p block couple. */
     void
     unknowns_of_block(const PointBlock                             &block,
@@ -266,6 +284,11 @@ namespace GelMPM
                  const std::vector<unsigned int>      &cells);
 
     /** The values and gradients of the extended shape functions at every point. */
+    /** The block of the points of piece @p u_piece of @p u_cell, from point @p first on. */
+    PointBlock
+    new_block(const unsigned int u_cell,
+              const unsigned int u_piece,
+              const unsigned int first) const;
     void
     evaluate_shape_functions();
 

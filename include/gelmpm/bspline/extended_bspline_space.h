@@ -143,6 +143,35 @@ namespace GelMPM
              std::vector<double>                 &scratch_values,
              std::vector<dealii::Tensor<1, dim>> &scratch_gradients) const;
 
+    /**
+     * The leaf cells of @p cell on a refined grid are its *pieces* (one piece, the cell itself,
+     * on a uniform grid): points in one piece share the functions that are nonzero on it, fewer
+     * than the whole cell's on a refined cell. Assembly and sparsity patterns go by pieces.
+     */
+    unsigned int
+    n_pieces(const unsigned int cell) const;
+    /** The piece of @p cell nearest to @p p (p clamped into the cell); 0 on a uniform grid. */
+    unsigned int
+    piece_containing(const dealii::Point<dim> &p, const unsigned int cell) const;
+    /** The leaf cell of the hierarchy that is piece @p piece of @p cell (refined grid only). */
+    unsigned int
+    leaf_of_piece(const unsigned int cell, const unsigned int piece) const;
+    /** The DoFs whose extended functions are nonzero on piece @p piece of @p cell (sorted). */
+    const std::vector<unsigned int> &
+    cell_dofs(const unsigned int cell, const unsigned int piece) const;
+    /**
+     * Values and gradients at @p p (in the closure of the piece) of the extended functions of
+     * cell_dofs(@p cell, @p piece); sizes as for evaluate() above with that list.
+     */
+    void
+    evaluate(const dealii::Point<dim>            &p,
+             const unsigned int                   cell,
+             const unsigned int                   piece,
+             std::vector<double>                 &values,
+             std::vector<dealii::Tensor<1, dim>> &gradients,
+             std::vector<double>                 &scratch_values,
+             std::vector<dealii::Tensor<1, dim>> &scratch_gradients) const;
+
     /** The weights (interior control point i, E_ik) of boundary control point @p k. */
     const std::vector<std::pair<unsigned int, double>> &
     extrapolation_weights(const unsigned int k) const;
@@ -190,14 +219,6 @@ namespace GelMPM
     number_hierarchical_dofs();
     void
     build_leaf_matrices();
-    /** evaluate() on the leaf cell of @p cell that holds @p p (refined grid). */
-    void
-    evaluate_on_leaf(const dealii::Point<dim>            &p,
-                     const unsigned int                   cell,
-                     std::vector<double>                 &values,
-                     std::vector<dealii::Tensor<1, dim>> &gradients,
-                     std::vector<double>                 &scratch_values,
-                     std::vector<dealii::Tensor<1, dim>> &scratch_gradients) const;
 
     const BSplineSpace<dim>                                  &space_;
     bool                                                      use_extension;
@@ -219,6 +240,13 @@ namespace GelMPM
       std::vector<unsigned int> column;
       std::vector<double>       weight;
     };
+    /** The product of the (q+1)^dim B-spline values and gradients with @p E, row by row. */
+    static void
+                            apply(const CellMatrix                          &E,
+                                  const std::vector<double>                 &scratch_values,
+                                  const std::vector<dealii::Tensor<1, dim>> &scratch_gradients,
+                                  std::vector<double>                       &values,
+                                  std::vector<dealii::Tensor<1, dim>>       &gradients);
     std::vector<CellMatrix> matrix_of_cell;
 
     /** The refinement, or nullptr on the uniform grid. */
@@ -227,9 +255,14 @@ namespace GelMPM
     std::vector<unsigned int>                                 function_dof;
     std::vector<ControlPointKind>                             function_kinds;
     std::vector<std::vector<std::pair<unsigned int, double>>> function_weights;
-    /** Per cell, its leaf cells and, per leaf, E in compressed rows (one row per cell DoF). */
-    std::vector<std::vector<unsigned int>> leaves_of_cell;
-    std::vector<std::vector<CellMatrix>>   leaf_matrices_of_cell;
+    /**
+     * Per cell, its leaf cells and, per leaf, its DoFs, E in compressed rows (one row per DoF of
+     * the leaf) and the positions of the leaf's DoFs in cell_dofs(cell).
+     */
+    std::vector<std::vector<unsigned int>>              leaves_of_cell;
+    std::vector<std::vector<std::vector<unsigned int>>> leaf_dofs_of_cell;
+    std::vector<std::vector<CellMatrix>>                leaf_matrices_of_cell;
+    std::vector<std::vector<std::vector<unsigned int>>> leaf_rows_in_cell;
     /** Per leaf cell, its position in leaves_of_cell of its level-0 ancestor. */
     std::vector<unsigned int> piece_of_leaf;
   };
