@@ -45,8 +45,9 @@ namespace GelMPM
       "value, adds a row 'instability_crease_<piece>'. At most these two rows per piece. The "
       "initial state counts: a row at t = 0 says the piece starts with more relief than this "
       "(a seed, a texture; row 0 of statistics.csv has its value), so give a larger one. "
-      "Measured (doc/own_scenes.md, section 8): 0.01 is reached as the first grooves of the "
-      "core-shell disk and the spontaneous creases of the film appear; the creasing film's "
+      "Measured (doc/own_scenes.md, 'The shape of a piece'): 0.01 is reached as the first "
+      "grooves of the core-shell disk and the spontaneous creases of the film appear, 0.001 as "
+      "a stiff skin's wrinkles do (they reach 0.0125 before the run stops); the creasing film's "
       "seeded top starts at 0.011 and reaches 0.05 0.26 tau_d before its crease folds. 0: no "
       "such events.");
     prm.declare_entry(
@@ -55,10 +56,11 @@ namespace GelMPM
       dealii::Patterns::Double(0.),
       "With 'Instability threshold': a piece's relief is a crease when its <piece>_skewness is "
       "at or below minus this value (narrow dips into the body between broad crests), a wrinkle "
-      "otherwise (a sinusoidal relief has skewness 0). Measured (doc/own_scenes.md, section 8) "
-      "up to a relative amplitude of 0.02: a stiff skin's wrinkles -0.06 to +0.04, the film's "
-      "creases -0.74 at 0.02 and below -1.2 from 0.03; just after leaving the smooth shape the "
-      "creases' relief is still near symmetric (-0.08 at 0.01), hence the later crease row.");
+      "otherwise (a sinusoidal relief has skewness 0). Measured (doc/own_scenes.md, 'The shape "
+      "of a piece'): a stiff skin's wrinkles -0.06 to +0.01 up to a relative amplitude of "
+      "0.0125, the film's creases -0.74 at 0.024 and -1.2 at 0.08 (seeded: -2.4); just after "
+      "leaving the smooth shape the creases' relief is still near symmetric (-0.08 at 0.017), "
+      "hence the later crease row.");
   }
 
 
