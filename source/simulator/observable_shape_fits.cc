@@ -11,6 +11,29 @@
 
 namespace GelMPM
 {
+  namespace
+  {
+    /**
+     * The current positions of the curve of @p polyline with the most points (a piece is
+     * usually one curve), and whether it is closed.
+     */
+    std::pair<std::vector<dealii::Point<2>>, bool>
+    longest_curve_of(const SurfaceGeometry::Polyline &polyline)
+    {
+      unsigned int longest = 0;
+      for (unsigned int c = 1; c < polyline.n_curves(); ++c)
+        if (polyline.curve_begin[c + 1] - polyline.curve_begin[c] >
+            polyline.curve_begin[longest + 1] - polyline.curve_begin[longest])
+          longest = c;
+      std::vector<dealii::Point<2>> curve;
+      for (unsigned int i = polyline.curve_begin[longest]; i < polyline.curve_begin[longest + 1];
+           ++i)
+        curve.push_back(polyline.points[i].x);
+      return {curve, polyline.n_curves() > 0 && polyline.closed[longest]};
+    }
+  } // namespace
+
+
   template <int dim>
   void
   ShapeFits<dim>::declare_parameters(dealii::ParameterHandler &prm)
@@ -236,50 +259,47 @@ namespace GelMPM
 
     std::vector<Shape> shapes(n_pieces);
     for (unsigned int k = 0; k < n_pieces; ++k)
-      {
-        if (positions[k].size() < dim + 1)
-          continue;
-        auto fit = ShapeFit::fit_sphere(positions[k]);
-        fit.orient(positions[k], normals[k]);
-        shapes[k].fit_curvature = fit.curvature();
-        shapes[k].fit_residual  = ShapeFit::rms_distance(fit, positions[k]);
-
-        auto smooth = ShapeFit::smooth_shape(positions[k]);
-        smooth.orient(positions[k], normals[k]);
-        std::vector<double> deviations;
-        for (const auto &x : positions[k])
-          deviations.push_back(smooth.distance(x));
-        const auto extent   = std::minmax_element(deviations.begin(), deviations.end());
-        shapes[k].amplitude = 0.5 * (*extent.second - *extent.first);
-        shapes[k].skewness  = ShapeFit::skewness(deviations);
-        if constexpr (dim == 2)
-          {
-            // Along the longest curve of the piece's polyline (a piece is usually one curve).
-            const auto   polyline = SurfaceGeometry::order_along_surface(points[k], 2. * h_u);
-            unsigned int longest  = 0;
-            for (unsigned int c = 1; c < polyline.n_curves(); ++c)
-              if (polyline.curve_begin[c + 1] - polyline.curve_begin[c] >
-                  polyline.curve_begin[longest + 1] - polyline.curve_begin[longest])
-                longest = c;
-            std::vector<dealii::Point<2>> curve;
-            std::vector<double>           along;
-            for (unsigned int i = polyline.curve_begin[longest];
-                 i < polyline.curve_begin[longest + 1];
-                 ++i)
-              {
-                curve.push_back(polyline.points[i].x);
-                along.push_back(smooth.distance(polyline.points[i].x));
-              }
-            const bool closed    = polyline.closed[longest];
-            const auto relief    = ShapeFit::undulation(curve, along, closed);
-            shapes[k].wavelength = relief.wavelength;
-            shapes[k].relative_amplitude =
-              relief.wavelength > 0. ? shapes[k].amplitude / relief.wavelength : 0.;
-            shapes[k].dip_crest_ratio =
-              ShapeFit::dip_crest_curvature_ratio(curve, closed, smooth.curvature());
-          }
-      }
+      if (positions[k].size() >= dim + 1)
+        shapes[k] = shape_of(positions[k], normals[k], points[k]);
     return shapes;
+  }
+
+
+  template <int dim>
+  typename ShapeFits<dim>::Shape
+  ShapeFits<dim>::shape_of(const std::vector<dealii::Point<dim>>            &positions,
+                           const std::vector<dealii::Tensor<1, dim>>        &normals,
+                           const std::vector<SurfaceGeometry::SurfacePoint> &points) const
+  {
+    Shape shape;
+    auto  fit = ShapeFit::fit_sphere(positions);
+    fit.orient(positions, normals);
+    shape.fit_curvature = fit.curvature();
+    shape.fit_residual  = ShapeFit::rms_distance(fit, positions);
+
+    auto smooth = ShapeFit::smooth_shape(positions);
+    smooth.orient(positions, normals);
+    std::vector<double> deviations;
+    for (const auto &x : positions)
+      deviations.push_back(smooth.distance(x));
+    const auto extent = std::minmax_element(deviations.begin(), deviations.end());
+    shape.amplitude   = 0.5 * (*extent.second - *extent.first);
+    shape.skewness    = ShapeFit::skewness(deviations);
+    if constexpr (dim == 2)
+      {
+        const auto [curve, closed] =
+          longest_curve_of(SurfaceGeometry::order_along_surface(points, 2. * h_u));
+        std::vector<double> along;
+        for (const auto &x : curve)
+          along.push_back(smooth.distance(x));
+        const auto relief = ShapeFit::undulation(curve, along, closed);
+        shape.wavelength  = relief.wavelength;
+        shape.relative_amplitude =
+          relief.wavelength > 0. ? shape.amplitude / relief.wavelength : 0.;
+        shape.dip_crest_ratio =
+          ShapeFit::dip_crest_curvature_ratio(curve, closed, smooth.curvature());
+      }
+    return shape;
   }
 
 

@@ -2,6 +2,7 @@
 #define gelmpm_simulator_observable_shape_fits_h
 
 #include <gelmpm/geometry/shape_fit.h>
+#include <gelmpm/geometry/surface_geometry.h>
 #include <gelmpm/simulator/observable.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -93,6 +94,15 @@ namespace GelMPM
       double relative_amplitude = 0.;
       double dip_crest_ratio    = 0.;
     };
+
+    /**
+     * The shape of one piece from its points' current @p positions and @p normals (N_n A_n), and
+     * in 2D its @p points for the order along the surface. At least dim + 1 points.
+     */
+    Shape
+    shape_of(const std::vector<dealii::Point<dim>>            &positions,
+             const std::vector<dealii::Tensor<1, dim>>        &normals,
+             const std::vector<SurfaceGeometry::SurfacePoint> &points) const;
 
     /** Per piece, its shape; gathers the pieces' points over the communicator. */
     std::vector<Shape>
