@@ -156,10 +156,6 @@ namespace GelMPM
             entry,
             "refines a 3D grid, which the refined path does not run yet",
             "remove 'Refinement boxes' (refined grids are 2D for now)");
-    require(!axisymmetric,
-            entry,
-            "refines an axisymmetric grid, which the refined path does not run yet",
-            "remove 'Refinement boxes' or use 'Coordinate system = Cartesian'");
     for (unsigned int d = 0; d < dim; ++d)
       require(n_cells[d] % 2 == 0,
               entry,
