@@ -127,7 +127,7 @@ namespace GelMPM
                                               const dealii::Vector<double> &solution) const
   {
     const PointRecord<dim> &r    = cache.points()[p];
-    const auto             &dofs = this->spaces.u().cell_dofs(cache.blocks()[r.block].u_cell);
+    const auto             &dofs = cache.u_dofs(cache.blocks()[r.block]);
     const double           *N    = cache.u_values_at(r);
     Point<dim>              x    = r.x + r.edge_offset;
     for (unsigned int a = 0; a < dofs.size(); ++a)
@@ -295,7 +295,7 @@ namespace GelMPM
         for (unsigned int m = 0; m < 3; ++m)
           {
             const auto &r = cache.points()[nodes[m]];
-            dofs[m]       = &this->spaces.u().cell_dofs(cache.blocks()[r.block].u_cell);
+            dofs[m]       = &cache.u_dofs(cache.blocks()[r.block]);
             N[m]          = cache.u_values_at(r);
             for (const unsigned int i : *dofs[m])
               for (unsigned int d = 0; d < dim; ++d)
