@@ -1,5 +1,5 @@
 // A locally refined grid against the finite-difference reference:
-// prm/constrained_swelling_refined.prm (paper §4.1 with the cell pairs of 0.9 <= y <= 1.3, across
+// prm/constrained_swelling_refined.prm (paper §4.1 with the cell pairs of 0.9 <= y <= 1.2, across
 // the top, halved once: truncated hierarchical B-splines, extended at both levels; steps growing
 // by 1.05), up to t = 0.0013 tau_d (12 steps), with the solvent balance. Asserted:
 // - Delta h within 1 % of the 1D reference at every step from 1e-3 tau_d on (measured +0.25 % at
