@@ -262,6 +262,21 @@ namespace GelMPM
   bool
   DiscreteSpaces<dim>::reinit(const std::vector<bool> &u_cell_has_material)
   {
+    if (refined())
+      {
+        // Without the points' leaves (the grid output before the first step): a leaf holds
+        // material when its base cell does.
+        std::vector<bool> leaf_has_material(u_hierarchy_->n_leaf_cells());
+        for (unsigned int leaf = 0; leaf < leaf_has_material.size(); ++leaf)
+          {
+            const auto &[level, cell] = u_hierarchy_->leaf_cell(leaf);
+            auto index                = u_hierarchy_->level_space(level).cell_multi_index(cell);
+            for (auto &i : index)
+              i >>= level;
+            leaf_has_material[leaf] = u_cell_has_material[u_space_.cell_index(index)];
+          }
+        return reinit(u_cell_has_material, leaf_has_material);
+      }
     if (u_ && mu_ && u_cell_has_material == u_cell_has_material_ &&
         built_tolerating_inexact_extrapolation == inexact_extrapolation_tolerated)
       return false;

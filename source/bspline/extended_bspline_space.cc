@@ -731,6 +731,26 @@ namespace GelMPM
 
 
   template <int dim>
+  bool
+  ExtendedBSplineSpace<dim>::refined() const
+  {
+    return hierarchy != nullptr;
+  }
+
+
+  template <int dim>
+  unsigned int
+  ExtendedBSplineSpace<dim>::finest_level(const unsigned int cell) const
+  {
+    unsigned int level = 0;
+    if (hierarchy)
+      for (const unsigned int leaf : leaves_of_cell[cell])
+        level = std::max(level, hierarchy->leaf_cell(leaf).level);
+    return level;
+  }
+
+
+  template <int dim>
   unsigned int
   ExtendedBSplineSpace<dim>::leaf_of_piece(const unsigned int cell, const unsigned int piece) const
   {

@@ -53,6 +53,7 @@ namespace GelMPM
     u_cell_kind.reinit(n_cells);
     mu_cell_kind.reinit(n_cells);
     n_volume_points.reinit(n_cells);
+    refinement_level.reinit(u.refined() ? n_cells : 0);
     vertex_values.reinit(dof_handler.n_dofs());
     vertex_values = std::numeric_limits<double>::quiet_NaN();
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -65,6 +66,8 @@ namespace GelMPM
         u_cell_kind(c)          = static_cast<double>(u.cell_kind(c));
         mu_cell_kind(c)         = static_cast<double>(mu.cell_kind(mu_c));
         n_volume_points(c)      = volume_points[c];
+        if (u.refined())
+          refinement_level(c) = u.finest_level(c);
         if (u.cell_kind(c) != CellKind::outer)
           evaluate_vertices(cell, u, mu, solution);
       }
@@ -149,6 +152,8 @@ namespace GelMPM
     data_out.add_data_vector(u_cell_kind, "u_cell_kind", DataOut<dim>::type_cell_data);
     data_out.add_data_vector(mu_cell_kind, "mu_cell_kind", DataOut<dim>::type_cell_data);
     data_out.add_data_vector(n_volume_points, "n_volume_points", DataOut<dim>::type_cell_data);
+    if (refinement_level.size() == n_volume_points.size())
+      data_out.add_data_vector(refinement_level, "refinement_level", DataOut<dim>::type_cell_data);
     data_out.build_patches();
 
     DataOutBase::VtkFlags flags;

@@ -69,7 +69,8 @@ namespace GelMPM
      *
      * The extended spaces are a function of the classification alone: when it is the one of the
      * last call (and the extrapolation rule the same), the spaces, their numbering of the
-     * unknowns included, are kept. Returns whether they were rebuilt.
+     * unknowns included, are kept. Returns whether they were rebuilt. On a refined grid a leaf
+     * cell is taken to hold material when its base cell does (the two-argument form is exact).
      */
     bool
     reinit(const std::vector<bool> &u_cell_has_material);

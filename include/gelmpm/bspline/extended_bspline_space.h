@@ -153,6 +153,12 @@ namespace GelMPM
     /** The piece of @p cell nearest to @p p (p clamped into the cell); 0 on a uniform grid. */
     unsigned int
     piece_containing(const dealii::Point<dim> &p, const unsigned int cell) const;
+    /** Whether the space is built over a refined grid (a hierarchy). */
+    bool
+    refined() const;
+    /** The finest level of the leaf cells of @p cell (0 on a uniform grid). */
+    unsigned int
+    finest_level(const unsigned int cell) const;
     /** The leaf cell of the hierarchy that is piece @p piece of @p cell (refined grid only). */
     unsigned int
     leaf_of_piece(const unsigned int cell, const unsigned int piece) const;

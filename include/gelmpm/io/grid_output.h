@@ -28,7 +28,8 @@ namespace GelMPM
    * - per cell: `u_cell_kind` and `mu_cell_kind`, the CellKind (0 interior, 1 boundary, 2 outer;
    *   paper §3.5) of the cell in the displacement space and of the chemical-potential cell that
    *   covers it (with subdivision one mu cell covers 2^dim cells); `n_volume_points`, the volume
-   *   points the cell held;
+   *   points the cell held; on a locally refined grid also `refinement_level`, the finest level
+   *   of the cell's leaf cells (0: not refined; the leaves themselves are not drawn);
    * - per vertex of each cell: `displacement_increment` (vector), the increment du of the step,
    *   and `mu_over_kT`, both evaluated from the extended B-spline fields (eq. (53)) of the cell.
    *   Outer cells (no material) have NaN at their vertices; ParaView shows NaN in its own colour
@@ -113,6 +114,8 @@ namespace GelMPM
     dealii::Vector<double> u_cell_kind;
     dealii::Vector<double> mu_cell_kind;
     dealii::Vector<double> n_volume_points;
+    /** Refined grids only (not kept in checkpoints, which refined grids do not write). */
+    dealii::Vector<double> refinement_level;
     dealii::Vector<double> vertex_values; // du and mu, FE_DGQ(1)^(dim+1) on dof_handler
   };
 } // namespace GelMPM
