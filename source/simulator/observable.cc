@@ -3,6 +3,7 @@
 #include <gelmpm/simulator/observable.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace GelMPM
 {
@@ -74,6 +75,81 @@ namespace GelMPM
     }
 
 
+    template <int dim>
+    SurfaceSample<dim>
+    surface_sample(const dealii::Particles::ParticleHandler<dim> &particles,
+                   const std::vector<unsigned int>               &pieces,
+                   const MPI_Comm                                 communicator)
+    {
+      using Layout = PropertyLayout<dim>;
+      // Per point: the piece's place in @p pieces, x, N_n A_n, and in 2D X_0, N_0 A_0 and mu.
+      const unsigned int  n_values = dim == 2 ? 1 + 4 * dim + 1 : 1 + 2 * dim;
+      std::vector<double> local;
+      for (const auto &particle : particles)
+        {
+          const auto props = particle.get_properties();
+          const int  piece = piece_of(props);
+          const auto it    = std::find(pieces.begin(), pieces.end(), piece);
+          if (piece < 0 || it == pieces.end())
+            continue;
+          local.push_back(it - pieces.begin());
+          const auto x = position_of(particle.get_location(), props);
+          for (unsigned int d = 0; d < dim; ++d)
+            local.push_back(x[d]);
+          for (unsigned int d = 0; d < dim; ++d)
+            local.push_back(props[Layout::normal_area_n + d]);
+          if (dim == 2)
+            {
+              for (unsigned int d = 0; d < dim; ++d)
+                local.push_back(props[Layout::position_0 + d]);
+              for (unsigned int d = 0; d < dim; ++d)
+                local.push_back(props[Layout::normal_area_0 + d]);
+              local.push_back(props[Layout::mu]);
+            }
+        }
+      const std::vector<double> all = gathered(communicator, std::move(local));
+
+      SurfaceSample<dim> sample;
+      sample.positions.resize(pieces.size());
+      sample.normal_areas.resize(pieces.size());
+      sample.points.resize(pieces.size());
+      for (std::size_t first = 0; first < all.size(); first += n_values)
+        {
+          const unsigned int     k = std::lround(all[first]);
+          dealii::Point<dim>     x;
+          dealii::Tensor<1, dim> normal_area;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              x[d]           = all[first + 1 + d];
+              normal_area[d] = all[first + 1 + dim + d];
+            }
+          sample.positions[k].push_back(x);
+          sample.normal_areas[k].push_back(normal_area);
+          if (dim == 2)
+            {
+              SurfaceGeometry::SurfacePoint point;
+              for (unsigned int d = 0; d < 2; ++d)
+                {
+                  point.x[d]        = x[d];
+                  point.X_0[d]      = all[first + 1 + 2 * dim + d];
+                  point.normal_0[d] = all[first + 1 + 3 * dim + d];
+                }
+              point.mu = all[first + 1 + 4 * dim];
+              sample.points[k].push_back(point);
+            }
+        }
+      return sample;
+    }
+
+
+    template SurfaceSample<2>
+    surface_sample(const dealii::Particles::ParticleHandler<2> &,
+                   const std::vector<unsigned int> &,
+                   const MPI_Comm);
+    template SurfaceSample<3>
+    surface_sample(const dealii::Particles::ParticleHandler<3> &,
+                   const std::vector<unsigned int> &,
+                   const MPI_Comm);
     template std::array<dealii::Point<2>, 4>
     means(const dealii::Particles::ParticleHandler<2> &,
           const std::array<int, 2> &,

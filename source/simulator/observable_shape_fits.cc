@@ -198,64 +198,14 @@ namespace GelMPM
   std::vector<typename ShapeFits<dim>::Shape>
   ShapeFits<dim>::shapes(const dealii::Particles::ParticleHandler<dim> &particles) const
   {
-    using Layout = PropertyLayout<dim>;
     AssertThrow(dim == 3 || h_u > 0.,
                 dealii::ExcMessage("Observables: set_grid_spacing() before the shape fits"));
-    // Per point of a watched piece, gathered from every rank (a fit needs all of the piece):
-    // the piece's place in 'Shape pieces', x, N_n A_n, and in 2D X_0 and N_0 A_0 (the order
-    // along the surface).
-    const unsigned int  n_values = 1 + 2 * dim + (dim == 2 ? 2 * dim : 0);
-    std::vector<double> local;
-    for (const auto &particle : particles)
-      {
-        const auto props = particle.get_properties();
-        const auto it    = std::find(pieces.begin(), pieces.end(), piece_of(props));
-        if (it == pieces.end())
-          continue;
-        local.push_back(it - pieces.begin());
-        const auto x = position_of(particle.get_location(), props);
-        for (unsigned int d = 0; d < dim; ++d)
-          local.push_back(x[d]);
-        for (unsigned int d = 0; d < dim; ++d)
-          local.push_back(props[Layout::normal_area_n + d]);
-        if (dim == 2)
-          {
-            for (unsigned int d = 0; d < dim; ++d)
-              local.push_back(props[Layout::position_0 + d]);
-            for (unsigned int d = 0; d < dim; ++d)
-              local.push_back(props[Layout::normal_area_0 + d]);
-          }
-      }
-    const std::vector<double> all = ObservedPieces::gathered(this->communicator, std::move(local));
-
-    const unsigned int                                      n_pieces = pieces.size();
-    std::vector<std::vector<dealii::Point<dim>>>            positions(n_pieces);
-    std::vector<std::vector<dealii::Tensor<1, dim>>>        normals(n_pieces);
-    std::vector<std::vector<SurfaceGeometry::SurfacePoint>> points(n_pieces);
-    for (std::size_t first = 0; first < all.size(); first += n_values)
-      {
-        const unsigned int     k = std::lround(all[first]);
-        dealii::Point<dim>     x;
-        dealii::Tensor<1, dim> normal;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            x[d]      = all[first + 1 + d];
-            normal[d] = all[first + 1 + dim + d];
-          }
-        positions[k].push_back(x);
-        normals[k].push_back(normal);
-        if (dim == 2)
-          {
-            SurfaceGeometry::SurfacePoint point;
-            for (unsigned int d = 0; d < 2; ++d)
-              {
-                point.x[d]        = x[d];
-                point.X_0[d]      = all[first + 1 + 2 * dim + d];
-                point.normal_0[d] = all[first + 1 + 3 * dim + d];
-              }
-            points[k].push_back(point);
-          }
-      }
+    // A fit needs all of the piece: gathered from every rank.
+    auto sample = ObservedPieces::surface_sample(particles, pieces, this->communicator);
+    const unsigned int n_pieces  = pieces.size();
+    const auto        &positions = sample.positions;
+    const auto        &normals   = sample.normal_areas;
+    auto              &points    = sample.points;
 
     std::vector<Shape> shapes(n_pieces);
     for (unsigned int k = 0; k < n_pieces; ++k)

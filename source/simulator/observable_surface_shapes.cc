@@ -150,65 +150,14 @@ namespace GelMPM
   SurfaceShapes<dim>::shapes(const dealii::Particles::ParticleHandler<dim> &particles,
                              std::vector<SurfaceGeometry::Polyline>        *polylines) const
   {
-    using Layout = PropertyLayout<dim>;
     AssertThrow(dim == 3 || h_u > 0.,
                 dealii::ExcMessage("Observables: set_grid_spacing() before the surface shapes"));
-    // Per point of a surface piece, gathered from every rank (a piece's polyline needs all of
-    // it): the piece's place in 'Surface pieces', x, N_n A_n, and in 2D X_0, N_0 A_0 and mu.
-    const unsigned int  n_values = dim == 2 ? 1 + 4 * dim + 1 : 1 + 2 * dim;
-    std::vector<double> local;
-    for (const auto &particle : particles)
-      {
-        const auto props = particle.get_properties();
-        const auto it    = std::find(surface_pieces.begin(), surface_pieces.end(), piece_of(props));
-        if (it == surface_pieces.end())
-          continue;
-        local.push_back(it - surface_pieces.begin());
-        const auto x = position_of(particle.get_location(), props);
-        for (unsigned int d = 0; d < dim; ++d)
-          local.push_back(x[d]);
-        for (unsigned int d = 0; d < dim; ++d)
-          local.push_back(props[Layout::normal_area_n + d]);
-        if (dim == 2)
-          {
-            for (unsigned int d = 0; d < dim; ++d)
-              local.push_back(props[Layout::position_0 + d]);
-            for (unsigned int d = 0; d < dim; ++d)
-              local.push_back(props[Layout::normal_area_0 + d]);
-            local.push_back(props[Layout::mu]);
-          }
-      }
-    const std::vector<double> all = ObservedPieces::gathered(this->communicator, std::move(local));
-
-    const unsigned int                                      n_pieces = surface_pieces.size();
-    std::vector<std::vector<dealii::Point<dim>>>            positions(n_pieces);
-    std::vector<std::vector<dealii::Tensor<1, dim>>>        normal_areas(n_pieces);
-    std::vector<std::vector<SurfaceGeometry::SurfacePoint>> points(n_pieces);
-    for (std::size_t first = 0; first < all.size(); first += n_values)
-      {
-        const unsigned int     k = std::lround(all[first]);
-        dealii::Point<dim>     x;
-        dealii::Tensor<1, dim> normal_area;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            x[d]           = all[first + 1 + d];
-            normal_area[d] = all[first + 1 + dim + d];
-          }
-        positions[k].push_back(x);
-        normal_areas[k].push_back(normal_area);
-        if (dim == 2)
-          {
-            SurfaceGeometry::SurfacePoint point;
-            for (unsigned int d = 0; d < 2; ++d)
-              {
-                point.x[d]        = x[d];
-                point.X_0[d]      = all[first + 1 + 2 * dim + d];
-                point.normal_0[d] = all[first + 1 + 3 * dim + d];
-              }
-            point.mu = all[first + 1 + 4 * dim];
-            points[k].push_back(point);
-          }
-      }
+    // A piece's polyline needs all of its points: gathered from every rank.
+    auto sample = ObservedPieces::surface_sample(particles, surface_pieces, this->communicator);
+    const unsigned int n_pieces     = surface_pieces.size();
+    const auto        &positions    = sample.positions;
+    const auto        &normal_areas = sample.normal_areas;
+    auto              &points       = sample.points;
 
     std::vector<Shape> shapes(n_pieces);
     if (polylines)

@@ -2,6 +2,7 @@
 #define gelmpm_simulator_observable_h
 
 #include <gelmpm/core/collective.h>
+#include <gelmpm/geometry/surface_geometry.h>
 #include <gelmpm/io/statistics_file.h>
 #include <gelmpm/scene/material_regions.h>
 
@@ -99,6 +100,27 @@ namespace GelMPM
     means(const dealii::Particles::ParticleHandler<dim> &particles,
           const std::array<int, 2>                      &pair,
           const MPI_Comm                                 communicator);
+
+    /** The surface points of some pieces, per piece: what a shape of a piece is measured from. */
+    template <int dim>
+    struct SurfaceSample
+    {
+      /** Current positions and N_n A_n of the piece's points. */
+      std::vector<std::vector<dealii::Point<dim>>>     positions;
+      std::vector<std::vector<dealii::Tensor<1, dim>>> normal_areas;
+      /** 2D only: the points as SurfaceGeometry orders them (x, X_0, N_0 A_0, mu). */
+      std::vector<std::vector<SurfaceGeometry::SurfacePoint>> points;
+    };
+
+    /**
+     * The surface points of the pieces numbered @p pieces, gathered from every rank of
+     * @p communicator (a piece's shape needs all of it), in the order of @p pieces.
+     */
+    template <int dim>
+    SurfaceSample<dim>
+    surface_sample(const dealii::Particles::ParticleHandler<dim> &particles,
+                   const std::vector<unsigned int>               &pieces,
+                   const MPI_Comm                                 communicator);
 
     /**
      * The values @p local of every rank of @p communicator, in the order of the ranks (a shape
