@@ -8,7 +8,8 @@
 //   scene's grid +0.55%, doc/own_scenes.md section 6: the formula's own error at 3.3% mismatch is
 //   about +0.45%, the peer's mesh limit);
 // - its points lie on the fitted circle: RMS distance below 1% of a cell (0.24% measured);
-// - the face bends without relief: relative amplitude below 0.01 (at most 0.0024 during the run), and with
+// - the face bends without relief: relative amplitude below 0.01 (at most 0.0024 during the run),
+// and with
 //   'Instability threshold = 0.01' no instability event.
 #include <gelmpm/material/flory_rehner_gel.h>
 #include <gelmpm/material/gel_references.h>
