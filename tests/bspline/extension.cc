@@ -17,9 +17,11 @@
 #include <random>
 #include <set>
 
+#include "blossom.h"
 #include "check_report.h"
 
 using namespace dealii;
+using blossom_coefficients::blossom;
 using namespace GelMPM;
 
 namespace
@@ -101,21 +103,6 @@ namespace
               << std::endl;
   }
 
-  /** Blossom of x^a (degree q) at the knots t_1..t_q: e_a(t) / binom(q, a). */
-  double
-  blossom(const unsigned int a, const std::vector<double> &t)
-  {
-    // Elementary symmetric polynomials by the usual recursion.
-    std::vector<double> e(t.size() + 1, 0.);
-    e[0] = 1.;
-    for (const double x : t)
-      for (unsigned int k = t.size(); k >= 1; --k)
-        e[k] += e[k - 1] * x;
-    double binomial = 1.;
-    for (unsigned int k = 0; k < a; ++k)
-      binomial = binomial * (t.size() - k) / (k + 1);
-    return e[a] / binomial;
-  }
 
   /**
    * Reproduce x^a y^b (a, b <= q) on the body given by inside(): set every DoF to the exact

@@ -38,7 +38,10 @@
 #include <stdexcept>
 #include <string>
 
+#include "blossom.h"
+
 using namespace dealii;
+using blossom_coefficients::blossom;
 using namespace GelMPM;
 
 namespace
@@ -226,20 +229,6 @@ namespace
               << (ok ? "yes" : "NO") << std::endl;
   }
 
-  /** Blossom of x^a (degree q) at the knots t: e_a(t) / binom(q, a). */
-  double
-  blossom(const unsigned int a, const std::vector<double> &t)
-  {
-    std::vector<double> e(t.size() + 1, 0.);
-    e[0] = 1.;
-    for (const double x : t)
-      for (unsigned int k = t.size(); k >= 1; --k)
-        e[k] += e[k - 1] * x;
-    double binomial = 1.;
-    for (unsigned int k = 0; k < a; ++k)
-      binomial = binomial * (t.size() - k) / (k + 1);
-    return e[a] / binomial;
-  }
 
   void
   check_reproduction_on_cut_cells(const unsigned int q, const unsigned int levels)
