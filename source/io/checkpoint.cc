@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -98,18 +99,44 @@ namespace GelMPM
   {
     std::string result;
     for (const auto &[path, value] : parameter_entries(parameters))
-      if (path.rfind("Checkpoint/", 0) != 0 && path != "Output/Directory" &&
-          path != "Time stepping/End time")
+      if (path.rfind("Checkpoint/", 0) != 0 && path != "Output/Directory")
         result += path + " = " + value + "\n";
     return result;
   }
 
 
-  std::string
-  parameter_difference(const std::string &checkpoint, const std::string &scene)
+  bool
+  adjustable_on_resume(const std::string &path)
   {
-    // checkpoint_parameters() writes one "path = value" per line.
-    const auto split = [](const std::string &text) {
+    // How the steps ahead are chosen and when output is written: none of them enters the state
+    // (the points, the fields, the step control's memory), which a resumed run takes as it was.
+    // 'Initial step' only sets the first step, 'End at equilibrium' has judged the steps up to
+    // the checkpoint, 'Characteristic length' is the unit of every time: they stay fixed.
+    static const std::set<std::string> adjustable = {"Time stepping/End time",
+                                                     "Time stepping/Tolerance",
+                                                     "Time stepping/Tolerance until",
+                                                     "Time stepping/Error norm",
+                                                     "Time stepping/Displacement tolerance",
+                                                     "Time stepping/Step caps",
+                                                     "Time stepping/Stop at times",
+                                                     "Time stepping/Growth factor",
+                                                     "Time stepping/Growth below iterations",
+                                                     "Time stepping/Cut factor",
+                                                     "Time stepping/Minimum step",
+                                                     "Time stepping/Maximum steps",
+                                                     "Time stepping/Largest increment",
+                                                     "Output/Interval steps",
+                                                     "Output/Interval time"};
+    return adjustable.count(path) > 0;
+  }
+
+
+  namespace
+  {
+    /** The entries of a checkpoint_parameters() text, which has one "path = value" per line. */
+    std::map<std::string, std::string>
+    split_parameters(const std::string &text)
+    {
       std::map<std::string, std::string> values;
       std::istringstream                 in(text);
       for (std::string line; std::getline(in, line);)
@@ -119,10 +146,33 @@ namespace GelMPM
             equals == std::string::npos ? std::string() : line.substr(equals + 3);
         }
       return values;
-    };
-    const auto old_values = split(checkpoint), new_values = split(scene);
+    }
+  } // namespace
+
+
+  std::vector<std::string>
+  adjusted_parameters(const std::string &checkpoint, const std::string &scene)
+  {
+    std::vector<std::string> changes;
+    const auto old_values = split_parameters(checkpoint), new_values = split_parameters(scene);
+    for (const auto &[path, value] : new_values)
+      {
+        const auto it = old_values.find(path);
+        if (adjustable_on_resume(path) && it != old_values.end() && it->second != value)
+          changes.push_back("'" + path + "' is '" + value + "' (was '" + it->second + "')");
+      }
+    return changes;
+  }
+
+
+  std::string
+  parameter_difference(const std::string &checkpoint, const std::string &scene)
+  {
+    const auto old_values = split_parameters(checkpoint), new_values = split_parameters(scene);
     for (const auto &[path, value] : old_values)
       {
+        if (adjustable_on_resume(path))
+          continue;
         const auto it = new_values.find(path);
         if (it == new_values.end())
           return "'" + path + "' is '" + value + "' in the checkpoint and absent from the scene";
@@ -131,7 +181,7 @@ namespace GelMPM
                  "' in the scene";
       }
     for (const auto &[path, value] : new_values)
-      if (old_values.count(path) == 0)
+      if (old_values.count(path) == 0 && !adjustable_on_resume(path))
         return "'" + path + "' is '" + value + "' in the scene and absent from the checkpoint";
     return "";
   }

@@ -242,10 +242,13 @@ namespace GelMPM
     // From the first accepted step on the run accepts inexact extrapolations.
     if (loop->step() > 0)
       scene.spaces->tolerate_inexact_extrapolation();
+    const auto changes = adjusted_parameters(resume_from->header().parameters, parameters);
     resume_from.reset();
     checkpoint_step = loop->step();
     log << "  resumed from the checkpoint at step " << checkpoint_step
         << ", t/tau_d = " << loop->time() << std::endl;
+    for (const auto &change : changes)
+      log << "  changed since the checkpoint: " << change << std::endl;
   }
 
 

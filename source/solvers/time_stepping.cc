@@ -110,6 +110,8 @@ namespace GelMPM
       "'Error-controlled steps'). It does not act where a 'Step caps' interval applies (steps "
       "set by hand, e.g. over a loading ramp); combine it with 'Growth factor' = 2. "
       "At least 1000 times 'Newton/Tolerance' (each step's solution is uncertain by about that). "
+      "A run continued with --resume may change it (and the other entries of this section "
+      "that choose the steps ahead; doc/output.md), e.g. when it crawls; the log says so. "
       "Material point scenes only; the "
       "body-fitted peer ignores it. 0: off.");
     prm.declare_entry("Error norm",

@@ -13,6 +13,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace GelMPM
 {
@@ -74,18 +75,35 @@ namespace GelMPM
   checkpoint_path(const std::string &directory);
 
   /**
-   * The parameters a checkpoint must have been written for: @p parameters (the scene's
-   * parameters as used, deal.II's ShortPRM format) without those that do not change the
-   * computation up to the checkpoint: the section Checkpoint, 'Output/Directory' (a result may be
-   * moved) and 'Time stepping/End time' (a finished run may be continued further).
+   * The parameters a checkpoint is written for: @p parameters (the scene's parameters as used,
+   * deal.II's ShortPRM format) without those that do not change the computation at all: the
+   * section Checkpoint and 'Output/Directory' (a result may be moved).
    */
   std::string
   checkpoint_parameters(const std::string &parameters);
 
   /**
-   * The first entry in which the parameter texts @p checkpoint and @p scene (both
-   * checkpoint_parameters()) differ, as "'Section/Entry' is 'a' in the checkpoint and 'b' in the
-   * scene"; empty if they agree.
+   * Whether the entry @p path ("Section/Entry") may differ between a checkpoint and the scene
+   * that resumes it: it chooses the steps ahead or the output times ('End time', 'Tolerance' and
+   * the rest of the step control in "Time stepping" except 'Characteristic length', 'Initial step'
+   * and 'End at equilibrium'; 'Output/Interval steps' and 'Interval time'), but neither the
+   * physics, the discretisation nor the state the checkpoint holds.
+   */
+  bool
+  adjustable_on_resume(const std::string &path);
+
+  /**
+   * The entries adjustable_on_resume() whose values differ between the parameter texts
+   * @p checkpoint and @p scene (both checkpoint_parameters()), each as "'Section/Entry' is 'b'
+   * (was 'a')", for the log of the resumed run.
+   */
+  std::vector<std::string>
+  adjusted_parameters(const std::string &checkpoint, const std::string &scene);
+
+  /**
+   * The first entry, not adjustable_on_resume(), in which the parameter texts @p checkpoint and
+   * @p scene (both checkpoint_parameters()) differ, as "'Section/Entry' is 'a' in the checkpoint
+   * and 'b' in the scene"; empty if they agree.
    */
   std::string
   parameter_difference(const std::string &checkpoint, const std::string &scene);
