@@ -167,6 +167,19 @@ namespace GelMPM
                                const Tensor<2, dim>   &delta_F,
                                const double            mu) const
   {
+    if (point.seal >= 0)
+      return point.seal == 1;
+    return touches_impermeable(point, du, delta_F, mu);
+  }
+
+
+  template <int dim>
+  bool
+  ContactAssembler<dim>::touches_impermeable(const PointRecord<dim> &point,
+                                             const Tensor<1, dim>   &du,
+                                             const Tensor<2, dim>   &delta_F,
+                                             const double            mu) const
+  {
     if (!any_impermeable || !applies(point))
       return false;
     for (unsigned int k = 0; k < n_rigid_obstacles(); ++k)

@@ -232,6 +232,35 @@ namespace GelMPM
 
 
   template <int dim>
+  unsigned int
+  MixedSystem<dim>::freeze_switches(const dealii::Vector<double> &solution)
+  {
+    unsigned int changed = 0;
+    if (terms.contact() != nullptr)
+      for (auto &r : cache.points())
+        {
+          if (r.kind == PointKind::volume || r.piece < 0 ||
+              !boundary_conditions.piece(r.piece).chemical_potential_prescribed())
+            continue;
+          const auto [du, delta_F, mu] = cache.fields_at(r, solution);
+          const signed char seal       = terms.contact()->touches_impermeable(r, du, delta_F, mu);
+          changed += r.seal >= 0 && r.seal != seal;
+          r.seal = seal;
+        }
+    return dealii::Utilities::MPI::sum(changed, communicator);
+  }
+
+
+  template <int dim>
+  void
+  MixedSystem<dim>::release_switches()
+  {
+    for (auto &r : cache.points())
+      r.seal = -1;
+  }
+
+
+  template <int dim>
   void
   MixedSystem<dim>::set_boundary_values(const double t_over_tau_d, const double step_start)
   {

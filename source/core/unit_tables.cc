@@ -107,6 +107,7 @@ namespace GelMPM
         {"Newton/Log failures", Q::none},
         {"Newton/Maximum iterations", Q::none},
         {"Newton/Maximum reuses", Q::none},
+        {"Newton/Freeze switches after", Q::none},
         {"Newton/Reuse contraction", Q::none},
         {"Newton/Reuse step ratio", Q::none},
         {"Newton/Smallest damping", Q::none},

@@ -441,6 +441,10 @@ namespace GelMPM
               << " on the step ratio, " << fresh.reuses << " on the reuse count, "
               << fresh.discarded << " after a discarded update";
       }
+    if (loop && loop->switch_updates().first > 0)
+      pcout << ", " << loop->switch_updates().first
+            << " updates of the contact seals held in Newton (" << loop->switch_updates().second
+            << " steps taken with a seal still flipping at the contact edge)";
     if (loop && Collective::is_parallel(scene.communicator))
       pcout << ", " << dealii::Utilities::MPI::n_mpi_processes(scene.communicator)
             << " ranks, partitioned anew " << model->repartitions() << " times";

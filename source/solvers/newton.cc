@@ -90,6 +90,16 @@ namespace GelMPM
                       "With 'Reuse contraction' > 0: the solves one factorisation serves at "
                       "most, over iterations and steps, before a fresh tangent is factorised; "
                       "0: no limit.");
+    prm.declare_entry(
+      "Freeze switches after",
+      "4",
+      dealii::Patterns::Integer(0),
+      "Iterations after which the switches that make the residual jump (an impermeable "
+      "obstacle sealing the bath condition where it touches) are held at the iterate's values "
+      "instead of following it, and updated only at a converged state until they settle: "
+      "semi-smooth Newton can otherwise cycle without end at a point on the contact edge. The "
+      "converged state is the same (its switches are its own); 0: always follow the iterate "
+      "(doc/method.md, 'Newton').");
     prm.leave_subsection();
   }
 
@@ -111,6 +121,7 @@ namespace GelMPM
     reuse_contraction        = prm.get_double("Reuse contraction");
     reuse_step_ratio         = prm.get_double("Reuse step ratio");
     maximum_reuses           = prm.get_integer("Maximum reuses");
+    freeze_switches_after    = prm.get_integer("Freeze switches after");
     prm.leave_subsection();
     require(reuse_step_ratio == 0. || reuse_step_ratio >= 1.,
             "Newton/Reuse step ratio",
@@ -198,6 +209,17 @@ namespace GelMPM
   {
     NewtonReport report;
     const bool   reuse = settings.reuse_contraction > 0.;
+    // The next attempt starts with the switches following its iterate, however this one ends.
+    struct Release
+    {
+      NewtonSystem &system;
+      ~Release()
+      {
+        system.release_switches();
+      }
+    } release{system};
+    bool         frozen = false;
+    unsigned int limit  = settings.maximum_iterations;
     // Assemble at x; false (with the reason in report.failure) if x is not physical.
     const auto assemble_at = [&](const dealii::Vector<double> &x, const bool with_matrix) {
       try
@@ -213,6 +235,20 @@ namespace GelMPM
       report.tangent_at_solution = with_matrix;
       report.residual_u          = system.residual_norm_u() / scale_u;
       report.residual_mu         = system.residual_norm_mu() / scale_mu;
+      return true;
+    };
+    // At a converged state with the switches held: hold them at its values; whether any
+    // changed (and the iteration must go on). After the last update allowed the state is
+    // taken.
+    const auto switches_changed_at = [&](const dealii::Vector<double> &x) {
+      if (report.switch_updates == NewtonSettings::maximum_switch_updates)
+        {
+          report.switches_unsettled = system.freeze_switches(x) > 0;
+          return false;
+        }
+      if (system.freeze_switches(x) == 0)
+        return false;
+      ++report.switch_updates;
       return true;
     };
     const auto merit = [&]() {
@@ -248,11 +284,26 @@ namespace GelMPM
         if (k >= minimum_iterations && report.residual_u <= settings.tolerance &&
             report.residual_mu <= settings.tolerance)
           {
-            report.converged = true;
-            report.failure.clear();
-            return report;
+            if (!frozen || !switches_changed_at(solution))
+              {
+                report.converged = true;
+                report.failure.clear();
+                return report;
+              }
+            // The residual jumped with the switches; the modified Newton iteration decides as
+            // after any update whether the kept factorisation still serves.
+            if (!assemble_at(solution, !reuse))
+              return report;
+            fresh     = !reuse;
+            why_fresh = &report.fresh_tangents.without_reuse;
+            limit     = k + settings.maximum_iterations;
           }
-        if (k == settings.maximum_iterations)
+        if (!frozen && settings.freeze_switches_after > 0 && k == settings.freeze_switches_after)
+          {
+            system.freeze_switches(solution);
+            frozen = true;
+          }
+        if (k == limit)
           {
             report.failure = "no convergence in " + std::to_string(k) + " Newton iterations";
             return report;

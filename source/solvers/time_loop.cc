@@ -248,6 +248,8 @@ namespace GelMPM
         n_newton_iterations += report.iterations;
         n_factorizations += report.factorizations;
         fresh_tangents_ += report.fresh_tangents;
+        n_switch_updates += report.switch_updates;
+        n_unsettled_switches += report.converged && report.switches_unsettled;
         if (report.converged && increment_bound_applies(step_dt))
           {
             const double moved = model.largest_motion_in_cells(solution);
@@ -550,6 +552,13 @@ namespace GelMPM
   TimeLoop::fresh_tangents() const
   {
     return fresh_tangents_;
+  }
+
+
+  std::pair<unsigned long, unsigned long>
+  TimeLoop::switch_updates() const
+  {
+    return {n_switch_updates, n_unsettled_switches};
   }
 
 

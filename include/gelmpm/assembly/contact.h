@@ -94,7 +94,17 @@ namespace GelMPM
     /**
      * Whether an impermeable obstacle (Obstacle::permeable false) is in active contact with the
      * surface point @p point with the fields @p du, @p delta_F and @p mu at it (the Newton
-     * iterate's active set): its chemical-potential condition is then off.
+     * iterate's active set).
+     */
+    bool
+    touches_impermeable(const PointRecord<dim>       &point,
+                        const dealii::Tensor<1, dim> &du,
+                        const dealii::Tensor<2, dim> &delta_F,
+                        const double                  mu) const;
+
+    /**
+     * Whether the chemical-potential condition at @p point is off: the seal held for Newton's
+     * iterations (PointRecord::seal), or else touches_impermeable().
      */
     bool
     seals(const PointRecord<dim>       &point,

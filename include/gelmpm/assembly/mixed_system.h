@@ -129,6 +129,15 @@ namespace GelMPM
     unsigned int
     n_u_dofs() const override;
 
+    /** Hold each surface point's seal by an impermeable obstacle (ContactAssembler::seals())
+     * at its value at @p solution (PointRecord::seal); how many changed, over all ranks. */
+    unsigned int
+    freeze_switches(const dealii::Vector<double> &solution) override;
+
+    /** Let the seals follow the iterate again. */
+    void
+    release_switches() override;
+
     /** The classification (cells with volume points) the sparsity pattern was built for. */
     const std::vector<bool> &
     classification_of_pattern() const;

@@ -70,6 +70,9 @@ namespace GelMPM
     // F_p,33 = lambda_0 r_n / R_0 of F_n F_0. Zero in Cartesian scenes.
     double radius = 0.;
     double hoop   = 0.;
+    // An impermeable obstacle's seal of the bath condition held over Newton iterations
+    // (MixedSystem::freeze_switches()): 1 sealed, 0 open; -1 that of the iterate.
+    signed char seal = -1;
 
     /** Whether the point belongs to an axisymmetric scene (its measure includes 2 pi r_n). */
     bool

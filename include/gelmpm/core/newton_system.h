@@ -36,6 +36,28 @@ namespace GelMPM
     virtual unsigned int
     n_u_dofs() const = 0;
 
+    /**
+     * Hold the switches of the residual that jump with the unknowns (an impermeable obstacle
+     * that seals the bath condition where it touches) at their values at the state @p solution
+     * until release_switches(), so that the residual is continuous in the unknowns meanwhile.
+     * Returns how many differ from the values the last assembly used (the iterate's own switches
+     * before the first freeze: none then). Semi-smooth Newton can cycle across such a jump (a
+     * point at a contact edge sealed at one iterate and open at the next); with the switches
+     * held it converges, and solve_newton() freezes them again at the converged state until
+     * none changes. The default: a system without such switches.
+     */
+    virtual unsigned int
+    freeze_switches(const dealii::Vector<double> &solution)
+    {
+      (void)solution;
+      return 0;
+    }
+
+    /** Let the switches follow the iterate again (after freeze_switches()). */
+    virtual void
+    release_switches()
+    {}
+
     /** The tangent assembled last. */
     const dealii::TrilinosWrappers::SparseMatrix &
     matrix() const

@@ -67,6 +67,11 @@ namespace GelMPM
     double reuse_step_ratio = 0.;
     /** With reuse: the solves one factorisation serves at most (0: no limit). */
     unsigned int maximum_reuses = 0;
+    /** Iterations after which the discontinuous switches are held (NewtonSystem::
+     * freeze_switches()); 0: never. */
+    unsigned int freeze_switches_after = 4;
+    /** How often the held switches are updated to a converged state before it is taken. */
+    static constexpr unsigned int maximum_switch_updates = 4;
 
     /** The smallest 'Tolerance' accepted: below it the scaled residuals stop on round-off. */
     static constexpr double smallest_tolerance = 1e-14;
@@ -123,6 +128,11 @@ namespace GelMPM
     /** Why each fresh tangent was factorised (modified Newton; the counts sum to
      * 'factorizations' unless the last factorisation failed). */
     FreshTangents fresh_tangents;
+    /** How often the held switches were updated to a converged state (NewtonSystem::
+     * freeze_switches()), and whether the last one still changed some (a point at the edge of
+     * a contact whose switch flips with each solution; the state is taken). */
+    unsigned int switch_updates     = 0;
+    bool         switches_unsettled = false;
     /** Whether the system's matrix() is the tangent at the returned state. */
     bool tangent_at_solution = false;
     /**
@@ -181,6 +191,13 @@ namespace GelMPM
    * solver's last call failed (LinearSolver::last_call_failed()): then one iteration, whose solve
    * must succeed, is taken, so that cutting the step after a failing solve cannot end in a step
    * accepted without any solve.
+   *
+   * Switches that make the residual jump (NewtonSystem::freeze_switches(): an impermeable
+   * obstacle's seal) follow the iterate for the first 'Freeze switches after' iterations; then
+   * they are held at the iterate's values, and at a converged state updated to that state's: if
+   * any changed, the iteration goes on from there with 'Maximum iterations' more, at most
+   * maximum_switch_updates times, after which the state is taken (NewtonReport::
+   * switches_unsettled). A converged state is thus one whose switches are its own, as before.
    *
    * @p system is any discretisation of the mixed u–mu step (NewtonSystem): the material point
    * system MixedSystem and the body-fitted FemMixedSystem.

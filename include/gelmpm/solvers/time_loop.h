@@ -11,7 +11,9 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/vector.h>
 
+#include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace GelMPM
@@ -326,6 +328,10 @@ namespace GelMPM
     /** Steps accepted although their error estimate exceeds its tolerance whatever the step. */
     unsigned long
     uncontrolled_errors() const;
+    /** Updates of held switches (NewtonReport::switch_updates, summed), and the steps taken
+     * with a switch that still flipped (NewtonReport::switches_unsettled). */
+    std::pair<unsigned long, unsigned long>
+    switch_updates() const;
 
     /** Count a factorisation made outside Newton (the stability analysis's). */
     void
@@ -333,16 +339,40 @@ namespace GelMPM
 
     /**
      * Boost serialization of the state the next step reads: the step control, the last step
-     * (which scales the predictor) and the output schedule.
+     * (which scales the predictor) and the output schedule. Read back, the schedule follows the
+     * 'Output/Interval time' of the resumed run, which may differ from the checkpoint's
+     * (follow_output_interval()).
      */
     template <class Archive>
     void
     serialize(Archive &ar, const unsigned int)
     {
       ar &control_ &last_dt &next_output_time;
+      if constexpr (Archive::is_loading::value)
+        follow_output_interval();
     }
 
   private:
+    /**
+     * The next output time read from a checkpoint, made the next multiple of this run's
+     * 'Output/Interval time' after the time unless it is that already (up to round-off), as it
+     * is when the interval did not change: the resumed run then writes what the uninterrupted
+     * one would have.
+     */
+    void
+    follow_output_interval()
+    {
+      if (!(output_interval_time > 0.))
+        return;
+      const double time        = control_.time() * (1. + relative_time_tolerance);
+      const double multiple    = next_output_time / output_interval_time;
+      const bool   on_schedule = next_output_time > time &&
+                               next_output_time <= time + output_interval_time * (1. + 1e-9) &&
+                               std::abs(multiple - std::round(multiple)) <= 1e-9 * multiple;
+      if (!on_schedule)
+        next_output_time = (std::floor(time / output_interval_time) + 1.) * output_interval_time;
+    }
+
     enum class StepOutcome
     {
       accepted,
@@ -412,6 +442,8 @@ namespace GelMPM
     unsigned long n_factorizations    = 0;
     FreshTangents fresh_tangents_;
     unsigned long n_uncontrolled_errors = 0;
+    unsigned long n_switch_updates      = 0;
+    unsigned long n_unsettled_switches  = 0;
     /** Whether the log has said that the model bounds the steps (bound_step()). */
     bool step_bound_said = false;
   };
