@@ -104,14 +104,13 @@ namespace GelMPM
     prm.enter_subsection("Linear solver");
     const std::string solver = prm.get("Solver");
     prm.leave_subsection();
-    // 'automatic' may choose the Krylov solver, whose geometric multigrid knows uniform grids only.
-    require(solver == "MUMPS" || solver == "KLU",
+    // 'automatic' keeps MUMPS there (LinearSolver::allow_krylov()).
+    require(solver != "Krylov",
             "Linear solver/Solver",
-            "is '" + solver +
-              "' with 'Background grid/Refinement boxes', but the refined grid "
-              "runs with a direct solver only (the Krylov solver's geometric multigrid does not "
-              "know the levels yet)",
-            "set 'Solver = MUMPS' (or KLU)" + fix);
+            "is 'Krylov' with 'Background grid/Refinement boxes', but the refined grid "
+            "runs with a direct solver only (the Krylov solver's geometric multigrid does not "
+            "know the levels yet)",
+            "set 'Solver = automatic' or 'MUMPS' (or KLU)" + fix);
     prm.enter_subsection("Checkpoint");
     const bool checkpoints =
       prm.get_integer("Interval steps") > 0 || prm.get_double("Interval minutes") > 0.;

@@ -261,7 +261,14 @@ namespace GelMPM
   bool
   LinearSolver::may_iterate() const
   {
-    return iterative() || !decided;
+    return iterative() || (!decided && krylov_allowed);
+  }
+
+
+  void
+  LinearSolver::allow_krylov(const bool allowed)
+  {
+    krylov_allowed = allowed;
   }
 
 
@@ -292,11 +299,13 @@ namespace GelMPM
         precision = SymmetricFactorization::Precision::single_precision;
         choice    = "MUMPS in single precision: " + why.str() + "; half of it fits";
       }
-    else if (available > 0. && estimate > limit)
+    else if (available > 0. && estimate > limit && krylov_allowed)
       {
         solver_type = "Krylov";
         choice      = "Krylov: " + why.str();
       }
+    else if (available > 0. && estimate > limit)
+      choice = "MUMPS, the only solver of a refined grid: " + why.str();
     else
       choice = "MUMPS: " + why.str();
   }

@@ -28,7 +28,6 @@ main(int argc, char **argv)
                             "Time stepping/End time=10",
                             "Background grid/Refinement boxes=0.1875, -0.1875 : 1.125, 1.0625",
                             "Background grid/Refinement levels=1",
-                            "Linear solver/Solver=MUMPS",
                             "Output/Write particles=false"});
   std::cout << std::boolalpha << "run completed: " << (run.status == 0) << std::endl;
 
