@@ -111,14 +111,6 @@ namespace GelMPM
             "runs with a direct solver only (the Krylov solver's geometric multigrid does not "
             "know the levels yet)",
             "set 'Solver = automatic' or 'MUMPS' (or KLU)" + fix);
-    prm.enter_subsection("Checkpoint");
-    const bool checkpoints =
-      prm.get_integer("Interval steps") > 0 || prm.get_double("Interval minutes") > 0.;
-    prm.leave_subsection();
-    require(!checkpoints,
-            "Checkpoint/Interval steps",
-            not_yet + "from a checkpoint yet",
-            "set 'Interval steps' and 'Interval minutes' to 0" + fix);
     prm.enter_subsection("Stability");
     const bool stability = prm.get_bool("Inertia") || prm.get_integer("Schur eigenvalues") > 0 ||
                            prm.get_bool("Inf-sup constant") ||
