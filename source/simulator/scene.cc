@@ -92,10 +92,8 @@ namespace GelMPM
   {
     if (!grid.refined())
       return;
-    const std::string not_yet = "is used with 'Background grid/Refinement boxes', but the refined "
-                                "grid does not run ";
-    const std::string fix     = " (refined grids run 2D scenes on one rank with the direct "
-                                "solver for now), or remove 'Background grid/Refinement boxes'";
+    const std::string fix = " (refined grids run 2D scenes on one rank with the direct "
+                            "solver for now), or remove 'Background grid/Refinement boxes'";
     require(dealii::Utilities::MPI::n_mpi_processes(communicator) == 1,
             "Background grid/Refinement boxes",
             "refines the grid of a run on several MPI ranks, which the refined grid does not "
@@ -111,16 +109,6 @@ namespace GelMPM
             "runs with a direct solver only (the Krylov solver's geometric multigrid does not "
             "know the levels yet)",
             "set 'Solver = automatic' or 'MUMPS' (or KLU)" + fix);
-    prm.enter_subsection("Stability");
-    const bool stability = prm.get_bool("Inertia") || prm.get_integer("Schur eigenvalues") > 0 ||
-                           prm.get_bool("Inf-sup constant") ||
-                           prm.get("Onset criterion") == "drained";
-    prm.leave_subsection();
-    require(!stability,
-            "Stability/Inertia",
-            not_yet + "the stability analysis yet (Inertia, Schur eigenvalues, Inf-sup "
-                      "constant, Onset criterion = drained)",
-            "switch the stability analysis off" + fix);
   }
 
 
