@@ -53,6 +53,46 @@ namespace GelMPM
           insert(child, child_volume, "");
         }
     }
+
+
+    /**
+     * The surface elements @p elements of the uniform grid's spacing, those in a cell refined
+     * l times split into 2^l along their tangent (2D), so that the surface points per cell edge
+     * are the scene's at every level, as the volume points are. The children's lengths are the
+     * parent's divided by a power of two (their sum the parent's bit for bit), their normal the
+     * parent's; on a curved boundary they lie on the parent's chord, within l^2 kappa / 8 of
+     * the curve (l the parent's length, kappa the curvature). 3D grids are not refined.
+     */
+    template <int dim, typename Element>
+    std::vector<Element>
+    split_surface_elements(const std::vector<Element> &elements, const BackgroundGrid<dim> &grid)
+    {
+      if (!grid.refined() || dim != 2)
+        return elements;
+      std::vector<Element> split;
+      split.reserve(elements.size());
+      for (const auto &e : elements)
+        {
+          const unsigned int parts = 1u << grid.refinement_level(e.centre);
+          if (parts == 1)
+            {
+              split.push_back(e);
+              continue;
+            }
+          const double           length = e.normal_area.norm();
+          dealii::Tensor<1, dim> tangent;
+          tangent[0] = -e.normal_area[1] / length;
+          tangent[1] = e.normal_area[0] / length;
+          for (unsigned int k = 0; k < parts; ++k)
+            {
+              Element child     = e;
+              child.normal_area = e.normal_area / static_cast<double>(parts);
+              child.centre      = e.centre + ((k + 0.5) / parts - 0.5) * length * tangent;
+              split.push_back(child);
+            }
+        }
+      return split;
+    }
   } // namespace
 
 
@@ -455,7 +495,7 @@ namespace GelMPM
         return grid.axisymmetric && e.centre[0] <= on_axis_tolerance * h_min;
       };
       std::vector<unsigned int> count(boundary_conditions.n_pieces(), 0);
-      for (const auto &e : elements)
+      for (const auto &e : split_surface_elements(elements, grid))
         {
           require(!grid.axisymmetric || e.centre[0] >= -relative_position_tolerance * h_min,
                   geometry.entry(),

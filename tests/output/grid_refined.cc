@@ -5,11 +5,14 @@
 // cells whose centres lie in the box and 0 on the other 3,080; the refined cells with material
 // (8 x 4 of them) hold 4 x 36 = 144 volume points each (the points of a refined cell are split),
 // the other 8 x 36 cells with material 36. The same scene without 'Refinement boxes' writes no
-// refinement_level field (a uniform run does no work for it).
+// refinement_level field (a uniform run does no work for it). The surface points are split as
+// the volume points: the top y = 1 (in the box) holds 8 cells x 6 x 2 = 96 of them, each of
+// length 0.2/96, where the uniform grid holds 48 (particles-00000.vtu of each run).
 #include <deal.II/base/mpi.h>
 
 #include <cmath>
 #include <iostream>
+#include <utility>
 
 #include "../scene_run.h"
 #include "../vtu_reader.h"
@@ -46,6 +49,22 @@ namespace
       }
     return c;
   }
+
+  /** The surface points on the top y = 1 at t = 0 and the sum of their lengths. */
+  std::pair<unsigned int, double>
+  top_points(const std::string &file_name)
+  {
+    const auto   file = GelMPMTests::read_vtu(file_name);
+    unsigned int n    = 0;
+    double       sum  = 0.;
+    for (std::size_t i = 0; i < file.points.size(); ++i)
+      if (std::lround(file.field("kind")(i)) != 0 && std::abs(file.points[i][1] - 1.) < 1e-9)
+        {
+          ++n;
+          sum += file.field("measure")(i);
+        }
+    return {n, sum};
+  }
 } // namespace
 
 
@@ -55,7 +74,7 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const std::string scene = std::string(SOURCE_DIR) + "/../../prm/constrained_swelling_refined.prm";
   const std::vector<std::string> one_step = {"Output/Write grid=true",
-                                             "Output/Write particles=false",
+                                             "Output/Write particles=true",
                                              "Time stepping/End time=8.75e-5",
                                              "Time stepping/Stop at times="};
   const auto                     refined  = GelMPMTests::run_scene(scene, "refined", one_step);
@@ -77,5 +96,15 @@ main(int argc, char **argv)
               << ", " << r.other << ")" << std::endl;
   const Counts u = count("uniform/grid-00000.vtu");
   std::cout << "no refinement_level on the uniform grid: " << !u.has_level << std::endl;
+  const auto [n_refined, length_refined] = top_points("refined/particles-00000.vtu");
+  const auto [n_uniform, length_uniform] = top_points("uniform/particles-00000.vtu");
+  std::cout << "surface points on the top: 96 on the refined grid, 48 on the uniform one: "
+            << (n_refined == 96 && n_uniform == 48) << std::endl;
+  std::cout << "their lengths sum to the top's 0.2 on both (to 1e-6, the .vtu stores floats): "
+            << (std::abs(length_refined - 0.2) < 1e-6 && std::abs(length_uniform - 0.2) < 1e-6)
+            << std::endl;
+  if (n_refined != 96 || n_uniform != 48 || std::abs(length_refined - 0.2) >= 1e-6)
+    std::cout << "  (" << n_refined << ", " << n_uniform << "; " << length_refined << ", "
+              << length_uniform << ")" << std::endl;
   return 0;
 }
