@@ -43,7 +43,11 @@ def read_particles(file_name):
         name = name or ("points" if "points" not in arrays else "unnamed")
         blocks = struct.unpack("<I", base64.b64decode(data[:8])[:4])[0]
         header_length = 4 * ((4 * (3 + blocks) + 2) // 3)
-        raw = zlib.decompress(base64.b64decode(data[header_length:]))
+        compressed, raw = base64.b64decode(data[header_length:]), b""
+        while compressed:  # one zlib stream per block
+            stream = zlib.decompressobj()
+            raw += stream.decompress(compressed)
+            compressed = stream.unused_data
         code = {"Float32": "f", "Float64": "d", "Int32": "i", "UInt8": "B"}[kind]
         values = struct.unpack("<%d%s" % (len(raw) // struct.calcsize(code), code), raw)
         n = int(components or 1)
