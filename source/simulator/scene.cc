@@ -398,6 +398,11 @@ namespace GelMPM
       {
         spaces->reinit(has_material);
       }
+    catch (const InputError &)
+      {
+        // Already names its entry and fix (a refinement box too shallow for the extension).
+        throw;
+      }
     catch (const std::runtime_error &e)
       {
         throw InputError("Background grid/Cells",
