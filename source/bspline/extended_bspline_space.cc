@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -485,10 +486,20 @@ namespace GelMPM
           limit = std::min(max_radius, static_cast<int>(std::ceil(r * std::sqrt(dim))) + 1);
       }
     if (!found && level == 0)
-      throw std::runtime_error(
-        "extended B-splines: no block of (q+1)^dim interior control points for a boundary "
-        "control point; the body is thinner than q+1 interior cells somewhere. Refine the "
-        "background grid or lower the degree.");
+      {
+        std::ostringstream where;
+        where << "(";
+        for (unsigned int d = 0; d < dim; ++d)
+          where << (d > 0 ? ", " : "") << space.basis_1d(d).greville(kk[d]);
+        where << ")";
+        throw std::runtime_error(
+          "extended B-splines: no block of (q+1)^dim interior control points for the boundary "
+          "control point at " +
+          where.str() +
+          "; the body is thinner than q+1 interior cells there, or it ends within a cell at "
+          "the grid's edge (a plane of symmetry that cuts cells: let the body end on a grid "
+          "line there, or let the grid reach q+1 cells beyond it)");
+      }
     if (!found)
       throw std::runtime_error(
         "extended B-splines: a boundary function of refinement level " + std::to_string(level) +

@@ -407,7 +407,10 @@ namespace GelMPM
       {
         throw InputError("Background grid/Cells",
                          "cannot carry the body's initial configuration: " + std::string(e.what()),
-                         "refine the grid or enlarge it ('Background grid/Upper corner')");
+                         "refine the grid ('Background grid/Cells') or lower "
+                         "'Discretisation/Displacement degree'; where the body ends at the "
+                         "grid's side, place the grid so that it ends on a grid line there "
+                         "('Lower corner', 'Upper corner')");
       }
   }
 
