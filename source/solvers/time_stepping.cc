@@ -140,7 +140,10 @@ namespace GelMPM
                       "",
                       Patterns::List(Patterns::Double(0.)),
                       "Times (tau_d) the stepping lands on exactly, e.g. for profiles compared "
-                      "with a reference; output is written at each of them.");
+                      "with a reference; output is written at each of them. With 'Tolerance', "
+                      "put one on each kink of a piecewise loading (min(t/T, 1) at T): a step "
+                      "across a kink is retaken until it ends before it (doc/own_scenes.md, "
+                      "section 12).");
     prm.leave_subsection();
   }
 
