@@ -99,14 +99,22 @@ def default_contact(shape):
     return "penalty"
 
 
-def run(args, shape, n, depth, c):
+def refinement_box(args, a, n):
+    """The box refined round the contact (--levels): from the axis to --box-width a, and from
+    --box-depth a below the layer's top to the top of the grid."""
+    top = args.size * (n + 2) / n
+    return "0, %.12g : %.12g, %.12g" % (args.size - args.box_depth * a, args.box_width * a, top)
+
+
+def run(args, shape, n, depth, c, levels=0):
     a, _, _ = limits(shape, depth, 1., 0.)
     t_load = 1e-4 * a * a / c
     size = args.size
-    directory = os.path.join(args.output, "%s%s_s%g_n%d_d%g%s%s" % (
+    directory = os.path.join(args.output, "%s%s_s%g_n%d_d%g%s%s%s" % (
         shape, "" if shape != "sphere" or RADIUS == 1. else "_R%g" % RADIUS, size, n, depth,
         "_permeable" if args.permeable else "",
-        "" if args.contact == default_contact(shape) else "_" + args.contact))
+        "" if args.contact == default_contact(shape) else "_" + args.contact,
+        "" if levels == 0 else "_L%d_w%g_d%g" % (levels, args.box_width, args.box_depth)))
     os.makedirs(directory, exist_ok=True)
     sets = ["Output/Directory=" + directory, "Output/Write particles=false",
             "Background grid/Cells=%d, %d" % (n, n + 2),
@@ -121,6 +129,10 @@ def run(args, shape, n, depth, c):
             "Time stepping/Stop at times=%.12g" % t_load,
             "Time stepping/End time=%g" % args.end,
             "Contact/indenter/Permeable=%s" % ("true" if args.permeable else "false")]
+    if levels > 0:
+        # The refined grid takes the direct solver (doc/architecture.md, "Local refinement").
+        sets += ["Background grid/Refinement boxes=" + refinement_box(args, a, n),
+                 "Background grid/Refinement levels=%d" % levels, "Linear solver/Solver=MUMPS"]
     if shape == "flat":
         sets += ["Contact/indenter/Shape=flat punch", "Contact/indenter/Radius=%g" % PUNCH_RADIUS]
     if args.contact == "nitsche":
@@ -146,7 +158,31 @@ def run(args, shape, n, depth, c):
     relaxation = force_relaxation(list(t), list(F), load_end=t_load)
     return dict(t=t, F=F, t_load=t_load, F0=relaxation["F0"], Finf=relaxation["Finf"],
                 g=relaxation["g"], t_after=relaxation["t"], F_after=relaxation["F"], a=a,
-                wall=data["wall_time"][-1], radius=data["indenter_contact_radius"][i0])
+                wall=data["wall_time"][-1], radius=data["indenter_contact_radius"][i0],
+                unknowns=int(np.nanmax(data["n_dofs_u"] + data["n_dofs_mu"])), levels=levels)
+
+
+TAUS = [0.001, 0.01, 0.03, 0.1, 0.3, 1, 3, 10, 100]
+
+
+def print_relaxation_table(results, c):
+    """g at the tabulated tau (linear in log tau between the rows), one row per run, and the
+    largest difference of g over tau in [0.01, 10] between consecutive runs."""
+    print("| a/h | levels | " + " | ".join("%g" % tau for tau in TAUS) + " |")
+    print("|---|---|" + "---|" * len(TAUS))
+    rows = []
+    for r in results:
+        tau = c * np.array(r["t_after"]) / r["a"] ** 2
+        keep = tau > 0
+        g = np.interp(np.log(TAUS), np.log(tau[keep]), np.array(r["g"])[keep],
+                      left=np.nan, right=np.nan)
+        dense = np.logspace(-2, 1, 61)
+        rows.append(np.interp(np.log(dense), np.log(tau[keep]), np.array(r["g"])[keep]))
+        print("| %.1f | %d | " % (r["a"] / r["h"], r["levels"]) +
+              " | ".join("%.3f" % v for v in g) + " |")
+    for k in range(1, len(rows)):
+        print("largest |g difference| over tau in [0.01, 10], run %d against %d: %.4f"
+              % (k + 1, k, float(np.max(np.abs(rows[k] - rows[k - 1])))))
 
 
 def main():
@@ -167,6 +203,13 @@ def main():
     parser.add_argument("--permeable", action="store_true",
                         help="a permeable indenter (the bath reaches the contact); default: "
                         "impermeable, as the published relaxation functions assume")
+    parser.add_argument("--levels", default="0",
+                        help="comma-separated refinement levels of a box round the contact "
+                        "(0: the uniform grid; each level halves h there)")
+    parser.add_argument("--box-width", type=float, default=3.5,
+                        help="the refined box reaches from the axis to this many contact radii a")
+    parser.add_argument("--box-depth", type=float, default=2.5,
+                        help="and from this many a below the layer's top to the grid's top")
     parser.add_argument("--plot", default="")
     parser.add_argument("--reuse", action="store_true",
                         help="take the results of runs already completed in --output")
@@ -181,26 +224,30 @@ def main():
           % (ls, G_s, nu, c, 2 * (1 - nu)))
     results = []
     print("layer radius and thickness %g" % args.size)
-    print("| h | delta | F(0+) | /closed form | F(end) | /closed form | F(0+)/F(end) | contact "
-          "radius at 0+ / a | wall |")
-    print("|---|---|---|---|---|---|---|---|---|")
+    print("| h (finest) | a/h | levels | unknowns (most) | delta | F(0+) | /closed form | F(end) | "
+          "/closed form | F(0+)/F(end) | contact radius at 0+ / a | wall |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
     for depth in [float(d) for d in args.depths.split(",")]:
         for n in [int(k) for k in args.cells.split(",")]:
-            r = run(args, args.shape, n, depth, c)
-            if r is None:
-                continue
-            a, F0, Finf = limits(args.shape, depth, G_s, nu)
-            r.update(n=n, depth=depth)
-            results.append(r)
-            print("| %.4f | %g | %.6g | %.4f | %.6g | %.4f | %.4f | %.3f | %.0f s |"
-                  % (args.size / n, depth, r["F0"], r["F0"] / F0, r["Finf"], r["Finf"] / Finf,
-                     r["F0"] / r["Finf"], r["radius"] / a, r["wall"]), flush=True)
+            for levels in [int(k) for k in args.levels.split(",")]:
+                r = run(args, args.shape, n, depth, c, levels)
+                if r is None:
+                    continue
+                a, F0, Finf = limits(args.shape, depth, G_s, nu)
+                h = args.size / n / 2 ** levels
+                r.update(n=n, depth=depth, h=h)
+                results.append(r)
+                print("| %.5f | %.1f | %d | %d | %g | %.6g | %.4f | %.6g | %.4f | %.4f | %.3f | %.0f s |"
+                      % (h, a / h, levels, r["unknowns"], depth, r["F0"], r["F0"] / F0, r["Finf"],
+                         r["Finf"] / Finf, r["F0"] / r["Finf"], r["radius"] / a, r["wall"]),
+                      flush=True)
+    print_relaxation_table(results, c)
     with open(os.path.join(args.output, "indentation.csv"), "w") as out:
-        out.write("n,depth,t_over_tau_d,tau,force,g\n")
+        out.write("n,levels,depth,t_over_tau_d,tau,force,g\n")
         for r in results:
             for dt, F, g in zip(r["t_after"], r["F_after"], r["g"]):
-                out.write("%d,%g,%.10g,%.10g,%.10g,%.10g\n" % (
-                    r["n"], r["depth"], r["t_load"] + dt, c * dt / r["a"] ** 2, F, g))
+                out.write("%d,%d,%g,%.10g,%.10g,%.10g,%.10g\n" % (
+                    r["n"], r["levels"], r["depth"], r["t_load"] + dt, c * dt / r["a"] ** 2, F, g))
     if args.plot:
         import matplotlib
         matplotlib.use("Agg")
@@ -210,8 +257,9 @@ def main():
             tau = c * np.array(r["t_after"]) / r["a"] ** 2
             g = np.array(r["g"])
             ax.semilogx(np.maximum(tau, 1e-5), g, marker=".",
-                        label="MPM h = %.4f, delta = %g%s" % (
-                            args.size / r["n"], r["depth"],
+                        label="MPM h = %.4f%s, delta = %g%s" % (
+                            r["h"], " (%d levels at the contact)" % r["levels"] if r["levels"] else "",
+                            r["depth"],
                             ", R = %g (a/h = %.1f)" % (RADIUS, r["a"] * r["n"] / args.size)
                             if RADIUS != 1. else ""))
         tau = np.logspace(-5, 2, 200)
