@@ -203,18 +203,22 @@ namespace GelMPM
 
   template <int dim>
   double
-  FloryRehnerGel<dim>::largest_swelling_chemical_potential() const
+  FloryRehnerGel<dim>::largest_swelling_chemical_potential(const bool axisymmetric) const
   {
-    // Plane strain: mu of P_11 = 0 at in-plane stretch a, J = lambda_0^3 a^2, tends to
-    // N nu / lambda_0^3 for large a; isotropic: eq. (22), which tends to 0.
-    const auto mu_at = [&](const double a) {
-      if (dim == 3)
-        return mu_0_from_lambda_0(a, chi_, N_nu_);
-      const double J = std::pow(lambda_0_, 3) * a * a;
-      return N_nu_ * (a * a - 1.) / J + std::log1p(-1. / J) + 1. / J + chi_ / (J * J);
+    const bool plane_strain = (dim == 2 && !axisymmetric);
+    // mu(s) from the stress itself in plane strain, so that it cannot drift from the law the
+    // solver assembles; isotropic swelling is eq. (22), the same law at F = s I in 3D.
+    const auto mu_at = [&](const double s) {
+      if (!plane_strain)
+        return mu_0_from_lambda_0(s, chi_, N_nu_);
+      Tensor<2, dim> F;
+      for (unsigned int d = 0; d < dim; ++d)
+        F[d][d] = s;
+      return -stress(F, 0.)[0][0] / stress_mu_derivative(F)[0][0];
     };
-    const double dry     = (dim == 3) ? 1. : std::pow(lambda_0_, -1.5);
-    double       largest = (dim == 3) ? 0. : N_nu_ / std::pow(lambda_0_, 3);
+    // The dry state, J = 1, and the limit of mu(s) for s -> infinity.
+    const double dry     = plane_strain ? 1. / std::sqrt(lambda_0_) : 1.;
+    double       largest = plane_strain ? N_nu_ / lambda_0_ : 0.;
     for (unsigned int k = 0; k <= 4000; ++k)
       largest = std::max(largest, mu_at(dry * (1. + std::pow(10., -6. + 10. * k / 4000.))));
     return largest;

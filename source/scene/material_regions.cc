@@ -333,11 +333,11 @@ namespace GelMPM
 
   template <int dim>
   double
-  MaterialRegions<dim>::largest_swelling_chemical_potential() const
+  MaterialRegions<dim>::largest_swelling_chemical_potential(const bool axisymmetric) const
   {
-    double mu = gels[0].largest_swelling_chemical_potential();
+    double mu = gels[0].largest_swelling_chemical_potential(axisymmetric);
     for (const auto &gel : gels)
-      mu = std::min(mu, gel.largest_swelling_chemical_potential());
+      mu = std::min(mu, gel.largest_swelling_chemical_potential(axisymmetric));
     return mu;
   }
 

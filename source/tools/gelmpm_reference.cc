@@ -230,27 +230,34 @@ namespace
                     const SwellingKinematics kinematics,
                     const std::string       &suffix)
   {
-    const auto        initial = gel.free_swelling(mu_0, kinematics);
-    const auto        bath    = gel.free_swelling(mu_b, kinematics);
-    const std::string name    = kinematics_name(kinematics);
-    const std::string what    = kinematics == SwellingKinematics::three_dimensional
-                                  ? "P = 0 at F = lambda I: eq. (22)"
-                                  : "P_11 = P_22 = 0 at F = diag(lambda; lambda; lambda_0)";
+    const auto  initial = gel.free_swelling(mu_0, kinematics);
+    std::string what    = kinematics == SwellingKinematics::three_dimensional
+                            ? "P = 0 at F = lambda I: eq. (22)"
+                            : "P_11 = P_22 = 0 at F = diag(lambda; lambda; lambda_0)";
+    // The 3D rows of a plane-strain scene: its bath may lie between the largest mu of 3D swelling
+    // and the larger one of plane strain (1.7e-3 and 5.7e-3 for Table 1).
+    std::optional<SwollenState> bath;
+    const double                largest = gel.gel().largest_swelling_chemical_potential();
+    if (kinematics == SwellingKinematics::plane_strain || mu_b <= largest)
+      bath = gel.free_swelling(mu_b, kinematics);
+    else
+      what += "; none at mu_b > " + number(largest, 4) + ", where it swells without bound";
+    const std::string name = kinematics_name(kinematics);
     rows.push_back({"lambda_free_" + suffix,
                     "free swelling " + name + ": lambda from dry",
                     initial.stretch_from_dry,
-                    bath.stretch_from_dry,
+                    bath ? std::optional<double>(bath->stretch_from_dry) : std::nullopt,
                     what});
     rows.push_back({"stretch_free_" + suffix,
                     "free swelling " + name + ": lambda / lambda_0",
                     initial.stretch_from_initial,
-                    bath.stretch_from_initial,
+                    bath ? std::optional<double>(bath->stretch_from_initial) : std::nullopt,
                     "the size from the initial state"});
     rows.push_back(
       {"J_free_" + suffix,
        "free swelling " + name + ": J",
        initial.J,
-       bath.J,
+       bath ? std::optional<double>(bath->J) : std::nullopt,
        kinematics == SwellingKinematics::three_dimensional ? "lambda^3" : "lambda_0 lambda^2"});
   }
 
@@ -509,7 +516,7 @@ namespace
 
     const double mu_0    = material.mu_0();
     const Bath   bath    = bath_of(pieces, options.bath, end_time, lower, upper, mu_0);
-    const double largest = regions.largest_swelling_chemical_potential();
+    const double largest = regions.largest_swelling_chemical_potential(axisymmetric);
     require(bath.mu <= largest,
             options.bath ? "--bath" : "Boundary conditions",
             "gives the bath mu_b = " + number(bath.mu) + ", above " + number(largest) +

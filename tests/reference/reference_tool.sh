@@ -8,11 +8,16 @@
 # - prm/creasing_film.prm (2D): the plane-strain J at mu = 0 is 9.432 (doc/own_scenes.md section 7,
 #   5e-4), the film's s = 2.72722 (tests/material/flory_rehner, 1e-5), s = 2.4 at mu = -0.0066
 #   (5e-5);
+# - prm/creasing_film.prm with --bath 0.005, between N nu/lambda_0^3 = 0.0034796 and the plane-strain
+#   limit N nu/lambda_0 = 0.0057019 (tests/material/swelling_limit): accepted, the plane-strain
+#   J = 29.961853 (a bisection of the closed form, 1e-5) and no 3D row at the bath (above the 3D
+#   limit 0.001697);
 # - prm/bilayer_actuator.prm with --thicknesses 0.1,0.1: the bath -0.04 from the scene and
 #   Timoshenko's curvature 0.19589 (doc/own_scenes.md section 6, 5e-6);
 # - bad input exits with status 2 and a message naming the option or entry, nothing written:
-#   one thickness, thicknesses for a scene of one gel, a bath above the largest swelling mu, pieces
-#   that prescribe two baths, an option of gelmpm.
+#   one thickness, thicknesses for a scene of one gel, a bath above the largest swelling mu (3D,
+#   plane strain, and 0.003 in the axisymmetric prm/swelling_sphere.prm, whose gel swells in 3D),
+#   pieces that prescribe two baths, an option of gelmpm.
 # Arguments: the build directory, the source directory.
 set -u
 tool="$1/gelmpm-reference"
@@ -62,6 +67,10 @@ near "film: J of plane-strain free swelling" "$(value "${film}" Material J_free_
 near "film: s at mu_b = 0" "$(value "${film}" Material s_film 0)" 2.72722 1e-5
 near "film: mu at s = 2.4" "$(value "${film}" Material mu_at_s_crease '*')" -0.0066 5e-5
 
+warm=$("${tool}" --csv --bath 0.005 "${prm}/creasing_film.prm")
+near "film: plane-strain J at mu_b = 0.005" "$(value "${warm}" Material J_free_plane_strain 0.005)" 29.961853 1e-5
+near "film: no 3D state at mu_b = 0.005" "$(value "${warm}" Material J_free_3d 0.005 | wc -c)" 0 0.5
+
 bilayer=$("${tool}" --csv --thicknesses 0.1,0.1 "${prm}/bilayer_actuator.prm")
 near "bilayer: the bath from the scene" \
   "$(awk -F, '$1 == "bilayer" && $2 == "bilayer_curvature" { print $3; exit }' <<< "${bilayer}")" -0.04 1e-12
@@ -72,6 +81,10 @@ fails "thicknesses of one gel" "'--thicknesses' gives two layers, but the scene 
   --thicknesses 0.1,0.1 "${prm}/creasing_film.prm"
 fails "bath above the largest mu" "'--bath' gives the bath mu_b = 0.5" --bath 0.5 \
   "${prm}/free_swelling_cube.prm"
+fails "plane-strain bath above N nu/lambda_0" "'--bath' gives the bath mu_b = 0.006, above 0.005701898" \
+  --bath 0.006 "${prm}/creasing_film.prm"
+fails "axisymmetric bath above the 3D limit" "'--bath' gives the bath mu_b = 0.003, above 0.00169652" \
+  --bath 0.003 "${prm}/swelling_sphere.prm"
 fails "two baths" "piece 'bottom' prescribes -0.05: the scene has no one bath" "${prm}/bilayer_actuator.prm" \
   --set "Boundary conditions/bottom/Chemical potential value/Function expression=-0.05"
 fails "gelmpm option" "'--check' is an option of gelmpm" --check "${prm}/creasing_film.prm"

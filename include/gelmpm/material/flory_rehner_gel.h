@@ -161,12 +161,21 @@ namespace GelMPM
                 const bool                    with_tangent = true) const;
 
     /**
-     * The largest mu/(k_BT) at which the gel has a stress-free swollen state (plane strain with
-     * F33 = lambda_0 in 2D, isotropic in 3D): in a bath above it the gel absorbs solvent without
-     * bound.
+     * The largest mu/(k_BT) at which the gel has a stress-free swollen state: in a bath above it
+     * the gel absorbs solvent without bound. The supremum over the stretch s from the dry state
+     * of mu(s) = -P_11(F, 0) / (dP_11/dmu) at F = s I, the bath in which that state is free of
+     * stress:
+     * - plane strain (2D, F_33 = lambda_0, J = lambda_0 s^2): mu(s) = N nu (s^2 - 1)/J + ln(1 -
+     *   1/J) + 1/J + chi/J^2, which rises to N nu/lambda_0 (not N nu/lambda_0^3: s^2/J =
+     *   1/lambda_0), unattained; 5.702e-3 for Table 1;
+     * - isotropic (3D, and with @p axisymmetric the 2D gel of an axisymmetric scene, whose body
+     *   of revolution swells in 3D): eq. (22), which tends to 0 from above and so has an interior
+     *   maximum; 1.697e-3 for Table 1's chi and N nu, whatever lambda_0.
+     * tests/material/swelling_limit checks both against a walk of the law in closed form: a
+     * stress-free state at 0.999 times the limit, none at 1.001 times it.
      */
     double
-    largest_swelling_chemical_potential() const;
+    largest_swelling_chemical_potential(const bool axisymmetric = false) const;
 
     /** Eq. (22): mu_0/(k_BT) of the stress-free isotropic swelling lambda_0. */
     static double

@@ -105,10 +105,11 @@ namespace GelMPM
 
     /**
      * The smallest over the gels of FloryRehnerGel::largest_swelling_chemical_potential(): the
-     * largest bath in which every region has a swollen equilibrium.
+     * largest bath in which every region has a swollen equilibrium (@p axisymmetric: in a 2D
+     * axisymmetric scene, whose gels swell in 3D).
      */
     double
-    largest_swelling_chemical_potential() const;
+    largest_swelling_chemical_potential(const bool axisymmetric = false) const;
 
   private:
     struct Region
