@@ -45,6 +45,7 @@ namespace
     bool                  help = false;
     bool                  csv  = false;
     std::optional<double> bath;
+    std::optional<double> ramp;
     std::vector<double>   thicknesses;
     GelMPM::CommandLine   command_line;
   };
@@ -54,7 +55,7 @@ namespace
   usage()
   {
     return "Usage: " + tool +
-           " [--set \"Section/Entry=value\"]... [--csv] [--bath mu] [--thicknesses h_1,h_2] "
+           " [--set \"Section/Entry=value\"]... [--csv] [--bath mu] [--ramp T] [--thicknesses h_1,h_2] "
            "scene.prm\n\n"
            "Prints, for each gel of the scene ('Material' and its regions), the closed-form\n"
            "references of the Flory-Rehner law at the scene's initial chemical potential mu_0\n"
@@ -65,6 +66,9 @@ namespace
            "  --set \"Section/Entry=value\"  override an entry of the scene file, as for gelmpm\n"
            "  --bath mu        the bath's mu/k_BT (default: the prescribed chemical potential of\n"
            "                   the scene's boundary pieces at 'Time stepping/End time')\n"
+           "  --ramp T         also print a bath ramped in stretch over T tau_d, ready to paste:\n"
+           "                   the free-swelling stretch of 'Material' linear in time from mu_0's\n"
+           "                   to mu_b's (doc/own_scenes.md section 11; T about L^2/c)\n"
            "  --thicknesses h_1,h_2\n"
            "                   the initial thicknesses of the two layers of a bilayer, 'Material'\n"
            "                   first, then its region (for Timoshenko's curvature)\n"
@@ -128,6 +132,14 @@ namespace
           options.csv = true;
         else if (argument == "--bath")
           options.bath = parse_number(value(), "--bath");
+        else if (argument == "--ramp")
+          {
+            options.ramp = parse_number(value(), "--ramp");
+            require(*options.ramp > 0.,
+                    "--ramp",
+                    "is not positive, but takes the ramp's duration",
+                    "give the ramp's duration in tau_d, e.g. --ramp 100");
+          }
         else if (argument == "--thicknesses")
           options.thicknesses = parse_thicknesses(value());
         else if (argument == "--check" || argument == "--resume" ||
@@ -138,6 +150,10 @@ namespace
         else
           rest.push_back(argv[i]);
       }
+    require(!(options.csv && options.ramp),
+            "--ramp",
+            "prints a bath expression, which has no place in --csv",
+            "give --ramp without --csv");
     options.command_line = CommandLine::parse(rest.size(), rest.data());
     options.help         = options.command_line.help;
     return options;
@@ -482,6 +498,37 @@ namespace
   }
 
 
+  /**
+   * The bath mu_b(t) whose free-swelling stretch from dry S(t) = l0 + (leq - l0) min(t/T, 1) goes
+   * linearly from the initial state to the bath's: mu = N nu (S^2 - 1)/J + ln(1 - 1/J) + 1/J +
+   * chi/J^2 (J = S^3, or lambda_0 S^2 in plane strain: P_11 = 0), clamped at mu_b against the
+   * rounding of leq. As 'Function constants' and 'Function expression' of a piece.
+   */
+  void
+  print_ramp(std::ostream            &out,
+             const GelReferences     &gel,
+             const double             mu_0,
+             const double             mu_b,
+             const SwellingKinematics kinematics,
+             const double             duration)
+  {
+    const auto       &law = gel.gel();
+    const std::string S   = "(l0 + (leq - l0) * min(t / T, 1))";
+    const std::string J =
+      kinematics == SwellingKinematics::plane_strain ? "(l0 * " + S + "^2)" : "(" + S + "^3)";
+    out << "\nBath ramped in stretch over T = " << number(duration)
+        << " tau_d (doc/own_scenes.md section 11), 'Material' " << kinematics_name(kinematics)
+        << ": for the 'Chemical potential value' of the pieces\n"
+        << "    set Function constants  = l0=" << number(law.lambda_0(), 12)
+        << ", leq=" << number(gel.free_swelling(mu_b, kinematics).stretch_from_dry, 12)
+        << ", nv=" << number(law.N_nu(), 12) << ", chi=" << number(law.chi(), 12)
+        << ", mub=" << number(mu_b, 12) << ", T=" << number(duration, 12) << "\n"
+        << "    set Function expression = " << (mu_b >= mu_0 ? "min" : "max") << "(nv * (" << S
+        << "^2 - 1) / " << J << " + log(1 - 1 / " << J << ") + 1 / " << J << " + chi / " << J
+        << "^2, mub)\n";
+  }
+
+
   template <int dim>
   int
   run(const Options &options, const SceneStructure &structure)
@@ -614,6 +661,8 @@ namespace
                      "Timoshenko's curvature)\n";
           }
       }
+    if (options.ramp)
+      print_ramp(out, gels[0], mu_0, bath.mu, kinematics, *options.ramp);
     return 0;
   }
 } // namespace

@@ -12,6 +12,9 @@
 #   limit N nu/lambda_0 = 0.0057019 (tests/material/swelling_limit): accepted, the plane-strain
 #   J = 29.961853 (a bisection of the closed form, 1e-5) and no 3D row at the bath (above the 3D
 #   limit 0.001697);
+# - --ramp 50 on prm/creasing_film.prm: the printed bath, evaluated by awk, is mu_0 = -0.14597453
+#   at t = 0 (1e-8) and the bath 0 from t = T on (1e-12), and gelmpm --check takes it as the top
+#   piece's 'Chemical potential value';
 # - prm/bilayer_actuator.prm with --thicknesses 0.1,0.1: the bath -0.04 from the scene and
 #   Timoshenko's curvature 0.19589 (doc/own_scenes.md section 6, 5e-6);
 # - bad input exits with status 2 and a message naming the option or entry, nothing written:
@@ -71,6 +74,26 @@ warm=$("${tool}" --csv --bath 0.005 "${prm}/creasing_film.prm")
 near "film: plane-strain J at mu_b = 0.005" "$(value "${warm}" Material J_free_plane_strain 0.005)" 29.961853 1e-5
 near "film: no 3D state at mu_b = 0.005" "$(value "${warm}" Material J_free_3d 0.005 | wc -c)" 0 0.5
 
+ramp=$("${tool}" --ramp 50 "${prm}/creasing_film.prm")
+constants=$(sed -n 's/^ *set Function constants  = //p' <<< "${ramp}")
+expression=$(sed -n 's/^ *set Function expression = //p' <<< "${ramp}")
+# bath <t>: the printed expression at time t.
+bath() {
+  awk "function min(a, b) { return a < b ? a : b } function max(a, b) { return a > b ? a : b }
+       BEGIN { ${constants//,/;}; t = $1; printf \"%.12g\", ${expression} }"
+}
+near "ramp: mu_0 at t = 0" "$(bath 0)" -0.14597453 1e-8
+near "ramp: the bath at t = T" "$(bath 50)" 0 1e-12
+near "ramp: the bath at t = 2 T" "$(bath 100)" 0 1e-12
+piece="Boundary conditions/top/Chemical potential value/Function"
+if "$1/gelmpm" --check "${prm}/creasing_film.prm" --set "${piece} constants=${constants}" \
+  --set "${piece} expression=${expression}" > /dev/null 2>&1; then
+  echo "ok   ramp: gelmpm --check takes the printed bath"
+else
+  echo "FAIL ramp: gelmpm --check refuses the printed bath"
+  failures=$((failures + 1))
+fi
+
 bilayer=$("${tool}" --csv --thicknesses 0.1,0.1 "${prm}/bilayer_actuator.prm")
 near "bilayer: the bath from the scene" \
   "$(awk -F, '$1 == "bilayer" && $2 == "bilayer_curvature" { print $3; exit }' <<< "${bilayer}")" -0.04 1e-12
@@ -85,6 +108,7 @@ fails "plane-strain bath above N nu/lambda_0" "'--bath' gives the bath mu_b = 0.
   --bath 0.006 "${prm}/creasing_film.prm"
 fails "axisymmetric bath above the 3D limit" "'--bath' gives the bath mu_b = 0.003, above 0.00169652" \
   --bath 0.003 "${prm}/swelling_sphere.prm"
+fails "ramp with csv" "'--ramp' prints a bath expression" --ramp 50 --csv "${prm}/creasing_film.prm"
 fails "two baths" "piece 'bottom' prescribes -0.05: the scene has no one bath" "${prm}/bilayer_actuator.prm" \
   --set "Boundary conditions/bottom/Chemical potential value/Function expression=-0.05"
 fails "gelmpm option" "'--check' is an option of gelmpm" --check "${prm}/creasing_film.prm"
