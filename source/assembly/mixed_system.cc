@@ -233,7 +233,7 @@ namespace GelMPM
 
   template <int dim>
   unsigned int
-  MixedSystem<dim>::freeze_switches(const dealii::Vector<double> &solution)
+  MixedSystem<dim>::freeze_switches(const dealii::Vector<double> &solution, const bool hold)
   {
     unsigned int changed = 0;
     if (terms.contact() != nullptr)
@@ -245,7 +245,8 @@ namespace GelMPM
           const auto [du, delta_F, mu] = cache.fields_at(r, solution);
           const signed char seal       = terms.contact()->touches_impermeable(r, du, delta_F, mu);
           changed += r.seal >= 0 && r.seal != seal;
-          r.seal = seal;
+          if (hold)
+            r.seal = seal;
         }
     return dealii::Utilities::MPI::sum(changed, communicator);
   }

@@ -209,15 +209,10 @@ namespace GelMPM
   {
     NewtonReport report;
     const bool   reuse = settings.reuse_contraction > 0.;
-    // The next attempt starts with the switches following its iterate, however this one ends.
-    struct Release
-    {
-      NewtonSystem &system;
-      ~Release()
-      {
-        system.release_switches();
-      }
-    } release{system};
+    // Every attempt starts with the switches following its iterate. They stay held after it,
+    // so that what is measured on the state (the pieces' inflow) uses the switches it was
+    // solved with.
+    system.release_switches();
     bool         frozen = false;
     unsigned int limit  = settings.maximum_iterations;
     // Assemble at x; false (with the reason in report.failure) if x is not physical.
@@ -243,7 +238,7 @@ namespace GelMPM
     const auto switches_changed_at = [&](const dealii::Vector<double> &x) {
       if (report.switch_updates == NewtonSettings::maximum_switch_updates)
         {
-          report.switches_unsettled = system.freeze_switches(x) > 0;
+          report.switches_unsettled = system.freeze_switches(x, false) > 0;
           return false;
         }
       if (system.freeze_switches(x) == 0)

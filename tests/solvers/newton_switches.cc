@@ -5,9 +5,11 @@
 //   where s = 1; s = 1 gives x = 0.5, where s = 0), the point on a contact edge whose seal flips
 //   with each solution. Following the iterate, Newton alternates between 1 and 0.5 and fails;
 //   with the switch held it converges on its branch, updates the switch the allowed number of
-//   times and takes the state, saying that the switch is unsettled.
+//   times and takes the state, saying that the switch is unsettled; the switch stays held at
+//   the value the state was solved with (what the observables of the state then see).
 // - c = 0.5, a = 0.25: one consistent root, x = 0.5 with s = 1; held or followed, Newton finds
-//   it, and holding it there needs no update.
+//   it, and holding it there needs no update. A second solve on the same system, with a wrong
+//   switch left held, starts by releasing it and finds the root again.
 #include <gelmpm/solvers/linear_solver.h>
 #include <gelmpm/solvers/newton.h>
 
@@ -50,12 +52,12 @@ namespace
     }
 
     unsigned int
-    freeze_switches(const dealii::Vector<double> &x) override
+    freeze_switches(const dealii::Vector<double> &x, const bool hold) override
     {
       const int  s       = live(x) ? 1 : 0;
       const bool changed = held >= 0 && held != s;
-      held               = s;
-      ++freezes;
+      if (hold)
+        held = s;
       return changed ? 1 : 0;
     }
 
@@ -65,16 +67,14 @@ namespace
       held = -1;
     }
 
-    /** The root of the branch of the switch it was solved with is reached: R = 0 with it. */
+    /** The root of the branch of the held switch is reached: R = 0 with it. */
     bool
     on_held_branch(const double x) const
     {
-      return std::abs(x - 1. + (solved_with == 1 ? c : 0.)) < 1e-12;
+      return held >= 0 && std::abs(x - 1. + (held == 1 ? c : 0.)) < 1e-12;
     }
 
-    int          held        = -1;
-    int          solved_with = -1;
-    unsigned int freezes     = 0;
+    int held = -1;
 
   private:
     bool
@@ -90,12 +90,11 @@ namespace
   {
     GelMPM::NewtonReport report;
     double               x;
-    bool                 released;
     bool                 on_held_branch;
   };
 
   Outcome
-  solve(const double c, const double a, const unsigned int freeze_after)
+  solve(SwitchSystem &system, const unsigned int freeze_after)
   {
     dealii::ParameterHandler prm;
     GelMPM::LinearSolver::declare_parameters(prm);
@@ -106,18 +105,6 @@ namespace
     settings.tolerance             = 1e-13;
     settings.reuse_contraction     = 0.;
     settings.freeze_switches_after = freeze_after;
-    // The switch the state was solved with is the one held before the last check, which
-    // freezes it anew at the state (and solve_newton() releases it after).
-    struct Recording : SwitchSystem
-    {
-      using SwitchSystem::SwitchSystem;
-      unsigned int
-      freeze_switches(const dealii::Vector<double> &x) override
-      {
-        solved_with = held;
-        return SwitchSystem::freeze_switches(x);
-      }
-    } system(c, a);
     dealii::Vector<double> solution(1);
     dealii::TimerOutput    timer(std::cout,
                               dealii::TimerOutput::never,
@@ -127,7 +114,6 @@ namespace
       GelMPM::solve_newton(system, solution, 1., settings, linear_solver, 1., 1., timer);
     linear_solver.new_pattern();
     outcome.x              = solution(0);
-    outcome.released       = system.held == -1;
     outcome.on_held_branch = system.on_held_branch(outcome.x);
     return outcome;
   }
@@ -139,31 +125,37 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::cout << std::boolalpha;
 
-  const auto followed = solve(0.5, 0.75, 0);
+  SwitchSystem no_root(0.5, 0.75);
+  const auto   followed = solve(no_root, 0);
   std::cout << "no consistent root, switch following the iterate: fails after 15 iterations: "
             << (!followed.report.converged && followed.report.iterations == 15) << std::endl;
 
-  const auto held = solve(0.5, 0.75, 4);
+  const auto held = solve(no_root, 4);
   std::cout << "held after 4 iterations: converged: " << held.report.converged << std::endl;
   std::cout << "  after " << held.report.switch_updates << " updates of the switch (the most "
             << "allowed: "
             << (held.report.switch_updates == GelMPM::NewtonSettings::maximum_switch_updates)
             << "), said unsettled: " << held.report.switches_unsettled << std::endl;
-  std::cout << "  the state a root of its held branch: " << held.on_held_branch
-            << ", x = 1 or 0.5: "
-            << (std::abs(held.x - 1.) < 1e-12 || std::abs(held.x - 0.5) < 1e-12) << std::endl;
-  std::cout << "  released at the end: " << held.released << std::endl;
+  std::cout << "  x = 1 or 0.5: "
+            << (std::abs(held.x - 1.) < 1e-12 || std::abs(held.x - 0.5) < 1e-12)
+            << ", a root of the branch of the switch still held: " << held.on_held_branch
+            << std::endl;
 
-  const auto consistent_followed = solve(0.5, 0.25, 0);
-  const auto consistent_held     = solve(0.5, 0.25, 1);
+  SwitchSystem one_root(0.5, 0.25);
+  const auto   consistent_followed = solve(one_root, 0);
   std::cout << "one consistent root: followed finds x = 0.5: "
             << (consistent_followed.report.converged &&
                 std::abs(consistent_followed.x - 0.5) < 1e-12)
             << std::endl;
+  const auto consistent_held = solve(one_root, 1);
   std::cout << "  held after 1 iteration finds x = 0.5: "
             << (consistent_held.report.converged && std::abs(consistent_held.x - 0.5) < 1e-12)
             << ", with no update: " << (consistent_held.report.switch_updates == 0)
             << ", settled: " << !consistent_held.report.switches_unsettled
-            << ", released: " << consistent_held.released << std::endl;
+            << ", held at s = 1: " << (one_root.held == 1) << std::endl;
+  one_root.held    = 0;
+  const auto again = solve(one_root, 0);
+  std::cout << "  a wrong switch left held is released by the next solve, which finds x = 0.5: "
+            << (again.report.converged && std::abs(again.x - 0.5) < 1e-12) << std::endl;
   return 0;
 }

@@ -130,9 +130,10 @@ namespace GelMPM
     n_u_dofs() const override;
 
     /** Hold each surface point's seal by an impermeable obstacle (ContactAssembler::seals())
-     * at its value at @p solution (PointRecord::seal); how many changed, over all ranks. */
+     * at its value at @p solution (PointRecord::seal; with @p hold false only counted); how
+     * many changed, over all ranks. */
     unsigned int
-    freeze_switches(const dealii::Vector<double> &solution) override;
+    freeze_switches(const dealii::Vector<double> &solution, const bool hold = true) override;
 
     /** Let the seals follow the iterate again. */
     void

@@ -41,15 +41,17 @@ namespace GelMPM
      * that seals the bath condition where it touches) at their values at the state @p solution
      * until release_switches(), so that the residual is continuous in the unknowns meanwhile.
      * Returns how many differ from the values the last assembly used (the iterate's own switches
-     * before the first freeze: none then). Semi-smooth Newton can cycle across such a jump (a
+     * before the first freeze: none then); with @p hold false it only counts them and keeps the
+     * switches as they are. Semi-smooth Newton can cycle across such a jump (a
      * point at a contact edge sealed at one iterate and open at the next); with the switches
      * held it converges, and solve_newton() freezes them again at the converged state until
      * none changes. The default: a system without such switches.
      */
     virtual unsigned int
-    freeze_switches(const dealii::Vector<double> &solution)
+    freeze_switches(const dealii::Vector<double> &solution, const bool hold = true)
     {
       (void)solution;
+      (void)hold;
       return 0;
     }
 

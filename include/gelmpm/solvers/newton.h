@@ -196,8 +196,10 @@ namespace GelMPM
    * obstacle's seal) follow the iterate for the first 'Freeze switches after' iterations; then
    * they are held at the iterate's values, and at a converged state updated to that state's: if
    * any changed, the iteration goes on from there with 'Maximum iterations' more, at most
-   * maximum_switch_updates times, after which the state is taken (NewtonReport::
-   * switches_unsettled). A converged state is thus one whose switches are its own, as before.
+   * maximum_switch_updates times, after which the state is taken with the switches it was
+   * solved with (NewtonReport::switches_unsettled). A converged state is thus one whose switches
+   * are its own, as before. The switches are released when the next solve starts: what is
+   * measured on the state meanwhile (the inflow of the pieces) uses those it was solved with.
    *
    * @p system is any discretisation of the mixed u–mu step (NewtonSystem): the material point
    * system MixedSystem and the body-fitted FemMixedSystem.
