@@ -462,7 +462,7 @@ namespace GelMPM
     std::vector<double> times;
     for (unsigned int k = 0; k <= 8; ++k)
       times.push_back(end_time * k / 8.);
-    const double largest_mu = regions.largest_swelling_chemical_potential();
+    const double largest_mu = regions.largest_swelling_chemical_potential(grid.axisymmetric);
     for (unsigned int i = 0; i < boundary_conditions.n_pieces(); ++i)
       boundary_conditions.piece(i).check_values(samples[i], times, largest_mu);
     check_obstacles(times);
