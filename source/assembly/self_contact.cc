@@ -64,6 +64,23 @@ namespace GelMPM
      * whatever the round-off of xi (both put the same force on that end; the deepest is taken).
      */
     constexpr double end_tolerance = 1e-9;
+
+    /**
+     * The cell size that 'Search distance', 'Minimum arc length' and 'Largest depth' count in:
+     * the background grid's ('Background grid/Cells'), on a refined grid that of its unrefined
+     * cells. The distances concern the motion within a step (bounded in those cells, 'Time
+     * stepping/Largest increment') and the spacing of surface points (at most one such cell
+     * apart at every level), neither of which refinement shortens.
+     */
+    template <int dim>
+    double
+    grid_cell_size(const DiscreteSpaces<dim> &spaces)
+    {
+      double h = spaces.u_space().cell_size(0);
+      for (unsigned int d = 1; d < dim; ++d)
+        h = std::min(h, spaces.u_space().cell_size(d));
+      return h;
+    }
   } // namespace
 
 
@@ -142,7 +159,7 @@ namespace GelMPM
   SelfContactAssembler<dim>::find_pairs(const PointCache<dim> &cache) const
   {
     using Layout                                 = PropertyLayout<dim>;
-    const double                               h = this->spaces.h_u();
+    const double                               h = grid_cell_size(this->spaces);
     std::vector<SurfaceGeometry::SurfacePoint> surface;
     const auto                                &points = cache.points();
     for (unsigned int p = 0; p < points.size(); ++p)
@@ -161,7 +178,8 @@ namespace GelMPM
         s.index = p;
         surface.push_back(s);
       }
-    // As the observables order a piece: surface points are at most h apart.
+    // As the observables order a piece: surface points are at most h apart (a cell of the
+    // unrefined grid; refined cells hold more of them).
     const auto line = SurfaceGeometry::order_along_surface(std::move(surface), 2. * h);
 
     // The segments (i, i + 1) of every curve, the closing one of a closed curve, and the curve of
@@ -229,15 +247,19 @@ namespace GelMPM
     std::vector<std::pair<unsigned int, unsigned int>> &pairs) const
   {
     pairs_ = find_pairs(cache);
+    // The pattern couples the unknowns of a block (a leaf) with each other only: two points of
+    // different blocks need their cells coupled, also when both blocks are leaves of one cell of
+    // a refined grid (the pair (c, c) then couples all of the cell's pieces).
     for (const auto &pair : pairs_)
       {
-        const unsigned int cells[3] = {cache.blocks()[cache.points()[pair.point].block].u_cell,
-                                       cache.blocks()[cache.points()[pair.a].block].u_cell,
-                                       cache.blocks()[cache.points()[pair.b].block].u_cell};
+        const unsigned int blocks[3] = {cache.points()[pair.point].block,
+                                        cache.points()[pair.a].block,
+                                        cache.points()[pair.b].block};
         for (unsigned int k = 0; k < 3; ++k)
           for (unsigned int l = k + 1; l < 3; ++l)
-            if (cells[k] != cells[l])
-              pairs.emplace_back(cells[k], cells[l]);
+            if (blocks[k] != blocks[l])
+              pairs.emplace_back(cache.blocks()[blocks[k]].u_cell,
+                                 cache.blocks()[blocks[l]].u_cell);
       }
   }
 

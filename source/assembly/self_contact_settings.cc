@@ -33,23 +33,27 @@ namespace GelMPM
                       "The boundary pieces whose surface points touch each other (any with the "
                       "other), a comma-separated list of pieces with a free displacement; empty: "
                       "every piece whose displacement is free.");
-    prm.declare_entry("Search distance",
-                      "1",
-                      Patterns::Double(0.),
-                      "In cells h_u: a surface point and a segment of the surface closer than this "
-                      "at the start of a step are a pair of the step (the pairs, and the sparsity "
-                      "pattern with them, are fixed over the step). A motion of more than this "
-                      "within one step passes unseen.");
+    prm.declare_entry(
+      "Search distance",
+      "1",
+      Patterns::Double(0.),
+      "In cells of the background grid as given ('Background grid/Cells'; on a refined grid "
+      "its unrefined cells, at every level, as 'Time stepping/Largest increment'): a surface "
+      "point and a segment of the surface closer than this at the start of a step are a pair "
+      "of the step (the pairs, and the sparsity pattern with them, are fixed over the step). A "
+      "motion of more than this within one step passes unseen.");
     prm.declare_entry("Minimum arc length",
                       "3",
                       Patterns::Double(0.),
-                      "In cells h_u: a point never touches a segment whose ends lie closer than "
+                      "In cells of the background grid as given (as 'Search distance'): a point "
+                      "never touches a segment whose ends lie closer than "
                       "this to it along the surface in the initial configuration (its own "
                       "segments and their neighbours; on a closed curve the shorter way round).");
     prm.declare_entry("Largest depth",
                       "0.25",
                       Patterns::Double(0.),
-                      "In cells h_u: at the start of a step a point up to this far behind a "
+                      "In cells of the background grid as given (as 'Search distance'): at the "
+                      "start of a step a point up to this far behind a "
                       "segment is still its pair (a penetration the penalty left); farther "
                       "behind it is taken for the other face of a thin body.");
     prm.leave_subsection();

@@ -138,7 +138,15 @@ namespace GelMPM
   double
   MaterialPointModel<dim>::largest_motion_in_cells(const dealii::Vector<double> &solution) const
   {
-    return scene.system->largest_displacement_increment(solution) / scene.spaces->h_u();
+    // In cells of the background grid as the scene gives it ('Background grid/Cells'), also on
+    // a refined grid: refinement resolves the fields more finely, it does not shorten the steps
+    // a body may take (in finest cells the self-contact blocks' step of 2.5 cells was 5.04 and
+    // cut).
+    const auto &grid = scene.spaces->u_space();
+    double      cell = grid.cell_size(0);
+    for (unsigned int d = 1; d < dim; ++d)
+      cell = std::min(cell, grid.cell_size(d));
+    return scene.system->largest_displacement_increment(solution) / cell;
   }
 
 

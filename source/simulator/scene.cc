@@ -73,11 +73,6 @@ namespace GelMPM
             "run on one rank, or set 'Method = none'");
     if (contact.self_contact.enabled())
       self_contact_pieces(contact.self_contact, boundary_conditions);
-    require(!contact.self_contact.enabled() || !grid.refined(),
-            "Contact/Self contact/Method",
-            "is penalty on a grid with 'Background grid/Refinement boxes', but the pairs couple "
-            "the unknowns of uniform cells only for now",
-            "remove 'Refinement boxes', or set 'Method = none'");
     obstacles = parse_obstacles<dim>(prm, obstacle_names);
     for (auto &obstacle : obstacles)
       obstacle.check_inside_grid(grid.lower, grid.upper);

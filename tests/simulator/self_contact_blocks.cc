@@ -14,6 +14,8 @@
 //   width W a / lambda_0 (axisymmetric: the area between 0.85 and 1 of pi (W a / lambda_0)^2; the
 //   faces' end points touch or not by a hair); penetration below 1e-4 h; events.csv has one
 //   'self_contact' row, at the end of the first step;
+// - the same in plane strain on a grid refined once round the contact (a refinement box over
+//   both facing sides), with the scene's settings;
 // - without it (Method = none), the upper block passes into the lower one: the top's reaction
 //   stays below 1e-6 of the closed form.
 #include <deal.II/base/mpi.h>
@@ -70,15 +72,19 @@ namespace
    * undrained closed form of the obstacle block with the top's current area @p area.
    */
   void
-  check_blocks(const std::string &name,
-               const std::string &scene_file,
-               const double       expected,
-               const double       area,
-               const double       smallest_share)
+  check_blocks(const std::string              &name,
+               const std::string              &scene_file,
+               const double                    expected,
+               const double                    area,
+               const double                    smallest_share,
+               const std::vector<std::string> &overrides = {})
   {
     std::string directory = "self_contact_blocks_" + name;
     std::replace(directory.begin(), directory.end(), ' ', '_');
-    const auto run = GelMPMTests::run_scene<2>(scene_file, directory, {"Newton/Tolerance=1e-10"});
+    std::replace(directory.begin(), directory.end(), ',', '_');
+    std::vector<std::string> settings = {"Newton/Tolerance=1e-10"};
+    settings.insert(settings.end(), overrides.begin(), overrides.end());
+    const auto run = GelMPMTests::run_scene<2>(scene_file, directory, settings);
     std::cout << name << ": run completed: " << (run.status == 0) << std::endl;
     const auto &top   = run.statistics.at("top_force_y");
     const auto &force = run.statistics.at("self_contact_force");
@@ -131,6 +137,15 @@ main(int argc, char **argv)
                  G * (b * b - a * a) / b * W / (lambda_0 * lambda_0),
                  W * a / lambda_0,
                  0.9);
+    // The same on a grid refined once round the contact and both blocks' facing sides, with the
+    // scene's settings: the search distance (3 cells) and the step's motion (2.5 cells, 'Largest
+    // increment' 5) count in cells of the grid as given, not of the finest level.
+    check_blocks("plane strain, refined",
+                 std::string(SOURCE_DIR) + "/self_contact_blocks_scene.prm",
+                 G * (b * b - a * a) / b * W / (lambda_0 * lambda_0),
+                 W * a / lambda_0,
+                 0.9,
+                 {"Background grid/Refinement boxes=0, 0.25 : 0.75, 1"});
   }
   {
     const double a = std::sqrt(J_0 / b);

@@ -31,12 +31,13 @@ namespace GelMPM
     double penalty = 1000.;
     /** The pieces whose surface points touch each other (empty: every free piece). */
     std::vector<std::string> pieces;
-    /** A point and a segment closer than this (times h_u) at the start of a step are a pair. */
+    /** A point and a segment closer than this (in cells of the grid as given, 'Background
+     * grid/Cells', also on a refined grid) at the start of a step are a pair. */
     double search_distance = 1.;
     /** Along the surface (initial configuration), a point and the ends of a segment closer than
-     * this (times h_u) never touch: its own segments and their neighbours. */
+     * this (in the same cells) never touch: its own segments and their neighbours. */
     double minimum_arc_length = 3.;
-    /** At the start of a step, a point up to this far (times h_u) behind a segment is still its
+    /** At the start of a step, a point up to this far (in the same cells) behind a segment is its
      * pair (a penetration the penalty left); farther it is the other face of a thin body. */
     double largest_depth = 0.25;
 
