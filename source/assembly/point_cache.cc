@@ -95,7 +95,7 @@ namespace GelMPM
     std::vector<double> holder(u_space.n_cells(), 0.);
     const double        this_rank = dealii::Utilities::MPI::this_mpi_process(communicator);
     std::string         failure;
-    // Refined grids (one rank): the leaf cells with volume points decide the unknowns too.
+    // Refined grids: the leaf cells with volume points decide the unknowns too.
     std::vector<bool> leaf_has_material;
     if (spaces.refined())
       leaf_has_material.assign(spaces.u_hierarchy().n_leaf_cells(), false);
@@ -125,6 +125,14 @@ namespace GelMPM
     // The volume points of a cell are all on the rank that owns the cell: the sum over the ranks
     // is that rank + 1, and tells every rank the classification and who holds each active cell.
     Collective::sum_in_place(communicator, holder);
+    if (!leaf_has_material.empty() && Collective::is_parallel(communicator))
+      {
+        // A leaf's points lie on the rank that owns its cell: every rank needs all leaves.
+        std::vector<double> leaf_count(leaf_has_material.begin(), leaf_has_material.end());
+        Collective::sum_in_place(communicator, leaf_count);
+        for (unsigned int l = 0; l < leaf_count.size(); ++l)
+          leaf_has_material[l] = leaf_count[l] > 0.;
+      }
     std::vector<bool> has_material(u_space.n_cells(), false);
     cell_holder_.assign(u_space.n_cells(), dealii::numbers::invalid_unsigned_int);
     for (unsigned int c = 0; c < holder.size(); ++c)

@@ -87,13 +87,6 @@ namespace GelMPM
   {
     if (!grid.refined())
       return;
-    const std::string fix = " (refined grids run 2D scenes on one rank with the direct "
-                            "solver for now), or remove 'Background grid/Refinement boxes'";
-    require(dealii::Utilities::MPI::n_mpi_processes(communicator) == 1,
-            "Background grid/Refinement boxes",
-            "refines the grid of a run on several MPI ranks, which the refined grid does not "
-            "run yet",
-            "run on one rank, or remove 'Refinement boxes'");
     prm.enter_subsection("Linear solver");
     const std::string solver = prm.get("Solver");
     prm.leave_subsection();
@@ -103,7 +96,8 @@ namespace GelMPM
             "is 'Krylov' with 'Background grid/Refinement boxes', but the refined grid "
             "runs with a direct solver only (the Krylov solver's geometric multigrid does not "
             "know the levels yet)",
-            "set 'Solver = automatic' or 'MUMPS' (or KLU)" + fix);
+            "set 'Solver = automatic' or 'MUMPS' (or KLU), or remove 'Background "
+            "grid/Refinement boxes'");
   }
 
 
