@@ -487,9 +487,16 @@ namespace GelMPM
         for (unsigned int j = 0; j < n; ++j)
           {
             const int column = static_cast<int>(copy.dofs[j]);
-            while (columns[k] < column)
+            while (k < length && columns[k] < column)
               ++k;
-            Assert(k < length && columns[k] == column, dealii::ExcInternalError());
+            // Checked in every build: a coupling the pattern lacks would otherwise be added
+            // to a neighbouring entry without a word.
+            if (k == length || columns[k] != column)
+              throw std::logic_error("MixedSystem: the tangent's entry (" +
+                                     std::to_string(copy.dofs[i]) + ", " +
+                                     std::to_string(copy.dofs[j]) +
+                                     ") lies outside its sparsity pattern (an internal error: "
+                                     "a term couples unknowns the pattern does not)");
             values[k] += copy.matrix(i, j);
           }
       }
