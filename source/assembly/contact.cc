@@ -126,7 +126,7 @@ namespace GelMPM
   double
   ContactAssembler<dim>::penalty(const PointRecord<dim> &point) const
   {
-    return contact.penalty * point.gel->shear_modulus() / this->spaces.h_u();
+    return contact.penalty * point.gel->shear_modulus() / this->spaces.h_u(point.level);
   }
 
 

@@ -433,6 +433,26 @@ namespace GelMPM
 
   template <int dim>
   double
+  DiscreteSpaces<dim>::h_u(const unsigned int level) const
+  {
+    if (refined())
+      return smallest_cell_size(u_hierarchy_->level_space(level));
+    return smallest_cell_size(u_space_);
+  }
+
+
+  template <int dim>
+  double
+  DiscreteSpaces<dim>::h_mu(const unsigned int level) const
+  {
+    if (refined())
+      return smallest_cell_size(mu_hierarchy_->level_space(level));
+    return smallest_cell_size(mu_space_);
+  }
+
+
+  template <int dim>
+  double
   DiscreteSpaces<dim>::h_mu() const
   {
     if (refined())

@@ -595,7 +595,7 @@ namespace GelMPM
                              point.projector,
                              point.projector * (point.u_n + s.du_at_point - point.u_bar),
                              this->nitsche.displacement_penalty * point.gel->shear_modulus() /
-                               this->spaces.h_u(),
+                               this->spaces.h_u(point.level),
                              this->nitsche.symmetry,
                              with_matrix,
                              s,

@@ -143,6 +143,19 @@ namespace GelMPM
         for (const auto row : dofs)
           pattern.add_entries(row, dofs.begin(), dofs.end(), true);
       }
+    // On a refined grid every piece of an active cell: a surface point can move into a piece
+    // without volume points, and so form a block, while the classification (which decides when
+    // the pattern is rebuilt) stays. Measured: the refined swelling sphere added entries outside
+    // the pattern of its block-only version.
+    if (spaces_.refined())
+      for (unsigned int c = 0; c < cache.classification().size(); ++c)
+        if (cache.classification()[c])
+          for (unsigned int p = 0; p < spaces_.u().n_pieces(c); ++p)
+            {
+              cache.unknowns_of_block(cache.block_for(c, p), dofs);
+              for (const auto row : dofs)
+                pattern.add_entries(row, dofs.begin(), dofs.end(), true);
+            }
     for (const auto &[a, b] : couplings)
       {
         unknowns_of_cell(a, dofs);

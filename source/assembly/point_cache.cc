@@ -256,6 +256,7 @@ namespace GelMPM
           blocks_.push_back(new_block(cell, pieces[i], points_.size()));
         PointRecord<dim> r = unsorted[i];
         r.block            = blocks_.size() - 1;
+        r.level            = blocks_.back().level;
         r.u_offset         = n_u_shapes;
         r.mu_offset        = n_mu_shapes;
         n_u_shapes += u_dofs(blocks_.back()).size();
@@ -285,6 +286,7 @@ namespace GelMPM
         // all of it.
         const auto &hierarchy     = spaces.u_hierarchy();
         const auto &[level, leaf] = hierarchy.leaf_cell(spaces.u().leaf_of_piece(u_cell, u_piece));
+        block.level               = level;
         const auto        &space  = hierarchy.level_space(level);
         const auto         index  = space.cell_multi_index(leaf);
         dealii::Point<dim> centre;

@@ -125,7 +125,7 @@ namespace GelMPM
   double
   SelfContactAssembler<dim>::penalty(const PointRecord<dim> &r) const
   {
-    return settings.penalty * r.gel->shear_modulus() / this->spaces.h_u();
+    return settings.penalty * r.gel->shear_modulus() / this->spaces.h_u(r.level);
   }
 
 

@@ -161,14 +161,23 @@ namespace GelMPM
     n_dofs() const;
 
     /**
-     * Smallest cell size of the displacement grid (h_u of the Nitsche penalty): on a refined grid
-     * that of the finest level, everywhere.
+     * Smallest cell size of the displacement grid: on a refined grid that of the finest level.
      */
     double
     h_u() const;
     /** Smallest cell size of the chemical-potential grid (h_mu); the finest level's if refined. */
     double
     h_mu() const;
+    /**
+     * The smallest cell size of the displacement grid's level @p level (0: the grid as the scene
+     * gives it; the only level of a uniform grid), h_u of the penalties at a point whose leaf
+     * has that level (PointRecord::level).
+     */
+    double
+    h_u(const unsigned int level) const;
+    /** The same for the chemical-potential grid (h_mu of its Nitsche penalty). */
+    double
+    h_mu(const unsigned int level) const;
 
     /**
      * The cell with material in which a surface point at @p p is evaluated: the cell containing p

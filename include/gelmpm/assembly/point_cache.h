@@ -70,6 +70,9 @@ namespace GelMPM
     // F_p,33 = lambda_0 r_n / R_0 of F_n F_0. Zero in Cartesian scenes.
     double radius = 0.;
     double hoop   = 0.;
+    // The refinement level of the leaf the point lies in (0 on a uniform grid): the h of its
+    // penalties (DiscreteSpaces::h_u(level)).
+    unsigned int level = 0;
     // An impermeable obstacle's seal of the bath condition held over Newton iterations
     // (MixedSystem::freeze_switches()): 1 sealed, 0 open; -1 that of the iterate.
     signed char seal = -1;
@@ -93,6 +96,8 @@ namespace GelMPM
     unsigned int first, end;
     /** The pieces of u_cell and mu_cell the points lie in (0 on a uniform grid). */
     unsigned int u_piece = 0, mu_piece = 0;
+    /** The refinement level of the u leaf (0 on a uniform grid). */
+    unsigned int level = 0;
   };
 
 
@@ -239,6 +244,16 @@ namespace GelMPM
       return spaces.mu().cell_dofs(block.mu_cell, block.mu_piece);
     }
 
+    /**
+     * The block that points in piece @p u_piece of @p u_cell would form (their unknowns through
+     * u_dofs() and mu_dofs()), whether or not any point is there now.
+     */
+    PointBlock
+    block_for(const unsigned int u_cell, const unsigned int u_piece) const
+    {
+      return new_block(u_cell, u_piece, 0);
+    }
+
     /** The unknowns (u interleaved, then mu), sorted, that the points of @p block couple. */
     void
     unknowns_of_block(const PointBlock                             &block,
@@ -286,12 +301,13 @@ namespace GelMPM
                  const std::vector<particle_iterator> &its,
                  const std::vector<unsigned int>      &cells);
 
-    /** The values and gradients of the extended shape functions at every point. */
     /** The block of the points of piece @p u_piece of @p u_cell, from point @p first on. */
     PointBlock
     new_block(const unsigned int u_cell,
               const unsigned int u_piece,
               const unsigned int first) const;
+
+    /** The values and gradients of the extended shape functions at every point. */
     void
     evaluate_shape_functions();
 
