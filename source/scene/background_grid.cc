@@ -53,8 +53,11 @@ namespace GelMPM
                       "potential's grid with subdivision) that overlaps a box is halved, "
                       "'Refinement levels' times; the displacement grid is halved with it, so that "
                       "mu stays one level coarser than u (truncated hierarchical B-splines, "
-                      "doc/architecture.md). Volume points are as many per cell at every level. "
-                      "2D, one rank, direct solver only. Empty: the uniform grid.");
+                      "doc/architecture.md). Volume and surface points are as many per cell at "
+                      "every level, and the penalties take each leaf's h. 2D, with a direct "
+                      "solver ('automatic' keeps MUMPS), on one or several ranks. A box that "
+                      "meets the body's boundary must reach about 2(q+1) cells of its finest "
+                      "level into the body (the extension). Empty: the uniform grid.");
     prm.declare_entry("Refinement levels",
                       "1",
                       Patterns::Integer(1, 4),

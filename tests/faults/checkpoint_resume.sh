@@ -19,6 +19,8 @@ run_until() {
   local pid=$!
   for _ in $(seq 600); do
     [[ $(cat results/statistics.csv 2>/dev/null | wc -l) -ge $rows ]] && break
+    # A run that has ended (it reached the end time first) gives no more rows.
+    kill -0 $pid 2>/dev/null || break
     sleep 0.05
   done
   sleep "0.$((RANDOM % 4))"
