@@ -14,7 +14,7 @@
 //   width W a / lambda_0 (axisymmetric: the area between 0.85 and 1 of pi (W a / lambda_0)^2; the
 //   faces' end points touch or not by a hair); penetration below 1e-4 h; events.csv has one
 //   'self_contact' row, at the end of the first step;
-// - the same in plane strain on a grid refined once round the contact (a refinement box over
+// - the same in plane strain and axisymmetric on a grid refined once round the contact (a box over
 //   both facing sides), with the scene's settings;
 // - without it (Method = none), the upper block passes into the lower one: the top's reaction
 //   stays below 1e-6 of the closed form.
@@ -154,6 +154,12 @@ main(int argc, char **argv)
                  G * (b * b - a * a) / b * M_PI * W * W / (lambda_0 * lambda_0),
                  M_PI * std::pow(W * a / lambda_0, 2),
                  0.85);
+    check_blocks("axisymmetric, refined",
+                 std::string(SOURCE_DIR) + "/self_contact_blocks_axisymmetric_scene.prm",
+                 G * (b * b - a * a) / b * M_PI * W * W / (lambda_0 * lambda_0),
+                 M_PI * std::pow(W * a / lambda_0, 2),
+                 0.85,
+                 {"Background grid/Refinement boxes=0, 0.25 : 0.75, 1"});
   }
   {
     const std::string scene = std::string(SOURCE_DIR) + "/self_contact_blocks_scene.prm";
