@@ -425,9 +425,7 @@ namespace GelMPM
   double
   DiscreteSpaces<dim>::h_u() const
   {
-    if (refined())
-      return smallest_cell_size(u_hierarchy_->level_space(u_hierarchy_->n_levels() - 1));
-    return smallest_cell_size(u_space_);
+    return h_u(refined() ? u_hierarchy_->n_levels() - 1 : 0);
   }
 
 
@@ -455,9 +453,7 @@ namespace GelMPM
   double
   DiscreteSpaces<dim>::h_mu() const
   {
-    if (refined())
-      return smallest_cell_size(mu_hierarchy_->level_space(mu_hierarchy_->n_levels() - 1));
-    return smallest_cell_size(mu_space_);
+    return h_mu(refined() ? mu_hierarchy_->n_levels() - 1 : 0);
   }
 
 

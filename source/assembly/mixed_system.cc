@@ -249,7 +249,8 @@ namespace GelMPM
   MixedSystem<dim>::freeze_switches(const dealii::Vector<double> &solution, const bool hold)
   {
     unsigned int changed = 0;
-    if (terms.contact() != nullptr)
+    // Only an impermeable obstacle switches a condition; otherwise nothing to evaluate.
+    if (terms.contact() != nullptr && terms.contact()->seals_anywhere())
       for (auto &r : cache.points())
         {
           if (r.kind == PointKind::volume || r.piece < 0 ||

@@ -65,22 +65,6 @@ namespace GelMPM
      */
     constexpr double end_tolerance = 1e-9;
 
-    /**
-     * The cell size that 'Search distance', 'Minimum arc length' and 'Largest depth' count in:
-     * the background grid's ('Background grid/Cells'), on a refined grid that of its unrefined
-     * cells. The distances concern the motion within a step (bounded in those cells, 'Time
-     * stepping/Largest increment') and the spacing of surface points (at most one such cell
-     * apart at every level), neither of which refinement shortens.
-     */
-    template <int dim>
-    double
-    grid_cell_size(const DiscreteSpaces<dim> &spaces)
-    {
-      double h = spaces.u_space().cell_size(0);
-      for (unsigned int d = 1; d < dim; ++d)
-        h = std::min(h, spaces.u_space().cell_size(d));
-      return h;
-    }
   } // namespace
 
 
@@ -158,8 +142,10 @@ namespace GelMPM
   std::vector<typename SelfContactAssembler<dim>::Pair>
   SelfContactAssembler<dim>::find_pairs(const PointCache<dim> &cache) const
   {
-    using Layout                                 = PropertyLayout<dim>;
-    const double                               h = grid_cell_size(this->spaces);
+    using Layout = PropertyLayout<dim>;
+    // In cells of 'Background grid/Cells' at every level: the motion within a step and
+    // the spacing of surface points, which refinement does not shorten.
+    const double                               h = this->spaces.h_u(0);
     std::vector<SurfaceGeometry::SurfacePoint> surface;
     const auto                                &points = cache.points();
     for (unsigned int p = 0; p < points.size(); ++p)

@@ -142,11 +142,7 @@ namespace GelMPM
     // a refined grid: refinement resolves the fields more finely, it does not shorten the steps
     // a body may take (in finest cells the self-contact blocks' step of 2.5 cells was 5.04 and
     // cut).
-    const auto &grid = scene.spaces->u_space();
-    double      cell = grid.cell_size(0);
-    for (unsigned int d = 1; d < dim; ++d)
-      cell = std::min(cell, grid.cell_size(d));
-    return scene.system->largest_displacement_increment(solution) / cell;
+    return scene.system->largest_displacement_increment(solution) / scene.spaces->h_u(0);
   }
 
 

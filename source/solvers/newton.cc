@@ -99,7 +99,7 @@ namespace GelMPM
       "instead of following it, and updated only at a converged state until they settle: "
       "semi-smooth Newton can otherwise cycle without end at a point on the contact edge. The "
       "converged state is the same (its switches are its own); 0: always follow the iterate "
-      "(doc/method.md, 'Newton').");
+      "(doc/method.md, 'Contact with planes of symmetry and rigid obstacles', 'Permeability').");
     prm.leave_subsection();
   }
 

@@ -102,6 +102,13 @@ namespace GelMPM
                         const dealii::Tensor<2, dim> &delta_F,
                         const double                  mu) const;
 
+    /** Whether some rigid obstacle is impermeable (seals the points it touches). */
+    bool
+    seals_anywhere() const
+    {
+      return any_impermeable;
+    }
+
     /**
      * Whether the chemical-potential condition at @p point is off: the seal held for Newton's
      * iterations (PointRecord::seal), or else touches_impermeable().
