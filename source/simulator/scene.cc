@@ -6,6 +6,7 @@
 #include <gelmpm/particles/property_layout.h>
 #include <gelmpm/simulator/rigid_motion.h>
 #include <gelmpm/simulator/scene.h>
+#include <gelmpm/simulator/symmetry_planes.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/distributed/tria.h>
@@ -394,13 +395,40 @@ namespace GelMPM
       }
     catch (const std::runtime_error &e)
       {
-        throw InputError("Background grid/Cells",
-                         "cannot carry the body's initial configuration: " + std::string(e.what()),
-                         "refine the grid ('Background grid/Cells') or lower "
-                         "'Discretisation/Displacement degree'; where the body ends at the "
-                         "grid's side, place the grid so that it ends on a grid line there "
-                         "('Lower corner', 'Upper corner')");
+        throw_unresolved_body(e.what());
       }
+  }
+
+
+  template <int dim>
+  void
+  Scene<dim>::throw_unresolved_body(const std::string &reason) const
+  {
+    // The planes of symmetry first: there the extension's own advice (let the body end on the
+    // grid's side, enlarge the grid) misleads, as the body already ends on the side, and the
+    // fix is exact: the plane on a grid line with q + 1 cells beyond it.
+    const unsigned int q = discretisation.displacement_degree;
+    const auto         near =
+      planes_near_grid_side(roller_planes(particles, boundary_conditions, communicator), grid, q);
+    if (!near.empty())
+      throw InputError("Background grid",
+                       "cannot carry the body where it meets its plane(s) of symmetry " +
+                         plane_list(near, grid) +
+                         ": the cut cells where the body's surface meets a plane are extrapolated "
+                         "from control points within " +
+                         std::to_string(q) +
+                         " cells of the grid's side, where the extended B-splines' "
+                         "extrapolation is not exact",
+                       "let the grid reach " + std::to_string(q + 1) +
+                         " cells beyond each such plane, the plane on a grid line, with the same "
+                         "cell size: " +
+                         grid_entries_for_planes(near, grid, q + 1, discretisation.subdivision));
+    throw InputError("Background grid/Cells",
+                     "cannot carry the body's initial configuration: " + reason,
+                     "refine the grid ('Background grid/Cells') or lower "
+                     "'Discretisation/Displacement degree'; where the body ends at the "
+                     "grid's side, place the grid so that it ends on a grid line there "
+                     "('Lower corner', 'Upper corner')");
   }
 
 

@@ -4,6 +4,7 @@
 #include <gelmpm/io/piece_table.h>
 #include <gelmpm/particles/property_layout.h>
 #include <gelmpm/simulator/simulator.h>
+#include <gelmpm/simulator/symmetry_planes.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/multithread_info.h>
@@ -146,7 +147,13 @@ namespace GelMPM
     const bool        axisymmetric = scene.grid.axisymmetric;
     const std::string table =
       piece_table(scene.particles, structure.boundary_pieces, axisymmetric, scene.communicator) +
-      region_table(scene.particles, scene.regions, axisymmetric, scene.communicator);
+      region_table(scene.particles, scene.regions, axisymmetric, scene.communicator) +
+      symmetry_plane_notes(roller_planes(scene.particles,
+                                         scene.boundary_conditions,
+                                         scene.communicator),
+                           scene.grid,
+                           scene.discretisation.displacement_degree,
+                           scene.discretisation.subdivision);
     pcout << table;
   }
 

@@ -185,6 +185,14 @@ namespace GelMPM
     std::unique_ptr<MixedSystem<dim>>           system;
 
   private:
+    /**
+     * Throw the InputError of a grid on which the extended bases cannot be built (@p reason, the
+     * extension's words): naming the planes of symmetry too close to the grid's side and the
+     * exact 'Background grid' entries that fix them where that is the cause.
+     */
+    void
+    throw_unresolved_body(const std::string &reason) const;
+
     /** Throw InputError ('Material points/Points per cell') below 3 points per direction. */
     void
     check_points_per_cell() const;
