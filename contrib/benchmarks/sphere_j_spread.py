@@ -18,8 +18,10 @@ point to point, which no smooth displacement field shows.
 minus 1 in the outermost layer R_0 > R - h and below it: when the point-to-point part of the
 spread is made and whether it relaxes.
 
-The sphere is centred at the origin of the meridian plane (x the radius, y the axis); the grid is
-read from the run's parameters.prm (uniform grids only). Needs nothing beyond Python: it decodes
+The sphere is centred at the origin of the meridian plane (x the radius, y the axis), or in 3D
+(an eighth of a ball on its planes of symmetry, prm/free_swelling_sphere_3d.prm) at the origin,
+the fit then a 3D affine map; the grid is read from the run's parameters.prm (uniform grids
+only). Needs nothing beyond Python: it decodes
 deal.II's zlib-compressed binary .vtu itself (no VTK).
 """
 import argparse
@@ -55,6 +57,15 @@ def read_particles(file_name):
     return arrays
 
 
+def dimension_of(directory):
+    """2 or 3: the run's 'Dimension', from its parameters.prm."""
+    for line in open(os.path.join(directory, "parameters.prm")):
+        words = line.split()
+        if words[:2] == ["set", "Dimension"]:
+            return int(line.partition("=")[2])
+    return 2
+
+
 def grid_of(directory):
     """(lower corner, cell size) of the run's background grid, from its parameters.prm."""
     entries, section = {}, []
@@ -72,15 +83,57 @@ def grid_of(directory):
     return lower, (upper[0] - lower[0]) / cells[0]
 
 
-def points_of(file_name):
+def points_of(file_name, dim=2):
     """The material points of a particles file: dicts of x, X_0, J and whether a volume point."""
     arrays = read_particles(file_name)
     points = []
     for x, u, J, kind in zip(arrays["points"], arrays["displacement"], arrays["J"],
                              arrays["kind"]):
-        points.append({"x": x[:2], "X": (x[0] - u[0], x[1] - u[1]), "J": J,
+        points.append({"x": tuple(x[:dim]), "X": tuple(x[d] - u[d] for d in range(dim)), "J": J,
                        "volume": round(kind) == 0})
     return points
+
+
+def solve(M, n, m):
+    """Gauss–Jordan elimination with partial pivoting of the n x (n + m) system @p M in place."""
+    for c in range(n):
+        pivot = max(range(c, n), key=lambda r: abs(M[r][c]))
+        M[c], M[pivot] = M[pivot], M[c]
+        for r in range(n):
+            if r != c:
+                f = M[r][c] / M[c][c]
+                M[r] = [M[r][k] - f * M[c][k] for k in range(n + m)]
+    return [[M[r][n + k] / M[r][r] for k in range(m)] for r in range(n)]
+
+
+def fitted_J_3d(volume, radius):
+    """3D: J of the affine map X_0 -> x fitted to the volume points within @p radius of each
+    point; None with fewer than ten."""
+    key = lambda X: tuple(math.floor(c / radius) for c in X)
+    buckets = {}
+    for p in volume:
+        buckets.setdefault(key(p["X"]), []).append(p)
+    result = []
+    for p in volume:
+        i, j, k = key(p["X"])
+        near = [q for a in (i - 1, i, i + 1) for b in (j - 1, j, j + 1) for c in (k - 1, k, k + 1)
+                for q in buckets.get((a, b, c), []) if math.dist(q["X"], p["X"]) <= radius]
+        if len(near) < 10:
+            result.append(None)
+            continue
+        M = [[0.] * 7 for _ in range(4)]
+        for q in near:
+            v = (1.,) + tuple(q["X"][d] - p["X"][d] for d in range(3))
+            for a in range(4):
+                for b in range(4):
+                    M[a][b] += v[a] * v[b]
+                for d in range(3):
+                    M[a][4 + d] += v[a] * q["x"][d]
+        B = solve(M, 4, 3)[1:]  # B[e][d] = dx_d / dX_e
+        result.append(B[0][0] * (B[1][1] * B[2][2] - B[2][1] * B[1][2]) -
+                      B[1][0] * (B[0][1] * B[2][2] - B[2][1] * B[0][2]) +
+                      B[2][0] * (B[0][1] * B[1][2] - B[1][1] * B[0][2]))
+    return result
 
 
 def fitted_J(volume, radius, lambda_0):
@@ -99,7 +152,7 @@ def fitted_J(volume, radius, lambda_0):
         if len(near) < 6:
             result.append(None)
             continue
-        # Normal equations of x = c + B (X - X_p), solved by Gaussian elimination.
+        # Normal equations of x = c + B (X - X_p).
         M = [[0.] * 5 for _ in range(3)]
         for q in near:
             v = (1., q["X"][0] - p["X"][0], q["X"][1] - p["X"][1])
@@ -108,16 +161,8 @@ def fitted_J(volume, radius, lambda_0):
                     M[a][b] += v[a] * v[b]
                 M[a][3] += v[a] * q["x"][0]
                 M[a][4] += v[a] * q["x"][1]
-        for c in range(3):
-            pivot = max(range(c, 3), key=lambda r: abs(M[r][c]))
-            M[c], M[pivot] = M[pivot], M[c]
-            for r in range(3):
-                if r != c:
-                    f = M[r][c] / M[c][c]
-                    M[r] = [M[r][k] - f * M[c][k] for k in range(5)]
-        dx_dX = M[1][3] / M[1][1], M[2][3] / M[2][2]
-        dy_dX = M[1][4] / M[1][1], M[2][4] / M[2][2]
-        in_plane = dx_dX[0] * dy_dX[1] - dx_dX[1] * dy_dX[0]
+        B = solve(M, 3, 2)  # B[1 + e][d] = dx_d / dX_e
+        in_plane = B[1][0] * B[2][1] - B[2][0] * B[1][1]
         result.append(in_plane * lambda_0 ** 3 * p["x"][0] / p["X"][0])
     return result
 
@@ -143,18 +188,20 @@ def particle_files(directory):
 
 def row(directory, args):
     (lower, h), files = grid_of(directory), particle_files(directory)
-    points = points_of(os.path.join(directory, files[-1][1]))
+    dim = dimension_of(directory)
+    points = points_of(os.path.join(directory, files[-1][1]), dim)
     volume = [p for p in points if p["volume"]]
     surface = [p["J"] for p in points if not p["volume"]]
     current_radius = max(math.hypot(*p["x"]) for p in points)
 
     def cut(p):
-        i = math.floor((p["x"][0] - lower[0]) / h)
-        j = math.floor((p["x"][1] - lower[1]) / h)
-        corners = [(lower[0] + (i + a) * h, lower[1] + (j + b) * h) for a in (0, 1) for b in (0, 1)]
+        index = [math.floor((p["x"][d] - lower[d]) / h) for d in range(dim)]
+        corners = [[lower[d] + (index[d] + (c >> d & 1)) * h for d in range(dim)]
+                   for c in range(2 ** dim)]
         return max(math.hypot(*c) for c in corners) > current_radius
 
-    fits = fitted_J(volume, 1.7 * h / args.points_per_cell, args.lambda_0)
+    fits = (fitted_J(volume, 1.7 * h / args.points_per_cell, args.lambda_0) if dim == 2 else
+            fitted_J_3d(volume, 1.7 * h / args.points_per_cell))
     local = [p["J"] / f - 1 for p, f in zip(volume, fits) if f]
     deep = [p["J"] for p in volume if args.radius - math.hypot(*p["X"]) > 2 * h]
     return "| %s | %s | %s | %s | %s | %s | %s |" % (
