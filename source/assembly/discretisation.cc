@@ -249,7 +249,8 @@ namespace GelMPM
                          std::string("refines a region that the extended B-splines cannot "
                                      "extrapolate into (") +
                            e.what() + ")",
-                         "let a box that reaches the body's boundary extend at least 2(q+1) "
+                         "let a box (or 'Refinement region') that reaches the body's boundary "
+                         "extend at least 2(q+1) "
                          "cells of its finest level into the body (also as it deforms; the "
                          "chemical potential's cells are twice as large), or set "
                          "'Discretisation/Extended B-splines = false'");

@@ -10,6 +10,7 @@
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/tria.h>
 
+#include <array>
 #include <cmath>
 #include <sstream>
 #include <unistd.h>
@@ -56,18 +57,84 @@ namespace GelMPM
 
 
     /**
+     * A unit tangent of the facet with unit normal @p n in 3D: the coordinate axis most nearly
+     * in the facet, projected onto it (the first such axis on a tie), so that the children of
+     * a box face's element lie along the face's own axes.
+     */
+    inline dealii::Tensor<1, 3>
+    facet_tangent(const dealii::Tensor<1, 3> &n)
+    {
+      unsigned int axis = 0;
+      for (unsigned int d = 1; d < 3; ++d)
+        if (std::abs(n[d]) < std::abs(n[axis]))
+          axis = d;
+      dealii::Tensor<1, 3> t;
+      t[axis] = 1.;
+      t -= (t * n) * n;
+      return t / t.norm();
+    }
+
+
+    /**
+     * The children of the surface element @p e in a cell refined into @p parts per direction,
+     * appended to @p split, each with the parent's normal and N_0 A_0 divided by parts^(dim-1):
+     * - 2D: parts along the tangent, on the parent's chord;
+     * - 3D: parts x parts over the facet, taken as the square of the parent's area (side
+     *   sqrt(A_0)) in its tangent plane, centred on the parent, with sides along
+     *   facet_tangent() and n x that tangent.
+     * The division by a power of two is exact, so the children's N_0 A_0 sum to the parent's
+     * to round-off (bit for bit for two children). On a curved boundary they lie in the parent's
+     * chord or tangent plane, within s^2 kappa / 8 of the surface (s the parent's side, kappa the
+     * curvature).
+     */
+    template <int dim, typename Element>
+    void
+    split_surface_element(const Element &e, const unsigned int parts, std::vector<Element> &split)
+    {
+      const double                                area = e.normal_area.norm();
+      std::array<dealii::Tensor<1, dim>, dim - 1> tangents;
+      double                                      side = area;
+      if constexpr (dim == 2)
+        {
+          tangents[0][0] = -e.normal_area[1] / area;
+          tangents[0][1] = e.normal_area[0] / area;
+        }
+      else
+        {
+          const dealii::Tensor<1, 3> n = e.normal_area / area;
+          tangents[0]                  = facet_tangent(n);
+          tangents[1]                  = dealii::cross_product_3d(n, tangents[0]);
+          side                         = std::sqrt(area);
+        }
+      unsigned int n_children = 1;
+      for (unsigned int d = 0; d + 1 < dim; ++d)
+        n_children *= parts;
+      for (unsigned int k = 0; k < n_children; ++k)
+        {
+          Element      child = e;
+          unsigned int rest  = k;
+          child.normal_area  = e.normal_area / static_cast<double>(n_children);
+          for (unsigned int d = 0; d + 1 < dim; ++d)
+            {
+              child.centre += ((rest % parts + 0.5) / parts - 0.5) * side * tangents[d];
+              rest /= parts;
+            }
+          split.push_back(child);
+        }
+    }
+
+
+    /**
      * The surface elements @p elements of the uniform grid's spacing, those in a cell refined
-     * l times split into 2^l along their tangent (2D), so that the surface points per cell edge
-     * are the scene's at every level, as the volume points are. The children's lengths are the
-     * parent's divided by a power of two (their sum the parent's bit for bit), their normal the
-     * parent's; on a curved boundary they lie on the parent's chord, within l^2 kappa / 8 of
-     * the curve (l the parent's length, kappa the curvature). 3D grids are not refined.
+     * l times split into 2^l per direction of the boundary (split_surface_element()), so that
+     * the surface points per cell edge are the scene's at every level, as the volume points
+     * are.
      */
     template <int dim, typename Element>
     std::vector<Element>
     split_surface_elements(const std::vector<Element> &elements, const BackgroundGrid<dim> &grid)
     {
-      if (!grid.refined() || dim != 2)
+      if (!grid.refined())
         return elements;
       std::vector<Element> split;
       split.reserve(elements.size());
@@ -75,21 +142,9 @@ namespace GelMPM
         {
           const unsigned int parts = 1u << grid.refinement_level(e.centre);
           if (parts == 1)
-            {
-              split.push_back(e);
-              continue;
-            }
-          const double           length = e.normal_area.norm();
-          dealii::Tensor<1, dim> tangent;
-          tangent[0] = -e.normal_area[1] / length;
-          tangent[1] = e.normal_area[0] / length;
-          for (unsigned int k = 0; k < parts; ++k)
-            {
-              Element child     = e;
-              child.normal_area = e.normal_area / static_cast<double>(parts);
-              child.centre      = e.centre + ((k + 0.5) / parts - 0.5) * length * tangent;
-              split.push_back(child);
-            }
+            split.push_back(e);
+          else
+            split_surface_element<dim>(e, parts, split);
         }
       return split;
     }

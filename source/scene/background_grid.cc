@@ -1,8 +1,10 @@
 #include <gelmpm/core/available_memory.h>
+#include <gelmpm/core/format_point.h>
 #include <gelmpm/core/input_error.h>
 #include <gelmpm/core/parameters.h>
 #include <gelmpm/core/round_off.h>
 #include <gelmpm/scene/background_grid.h>
+#include <gelmpm/scene/expression.h>
 
 #include <deal.II/base/utilities.h>
 #include <deal.II/grid/grid_generator.h>
@@ -54,14 +56,28 @@ namespace GelMPM
                       "'Refinement levels' times; the displacement grid is halved with it, so that "
                       "mu stays one level coarser than u (truncated hierarchical B-splines, "
                       "doc/architecture.md). Volume and surface points are as many per cell at "
-                      "every level, and the penalties take each leaf's h. 2D, with a direct "
+                      "every level, and the penalties take each leaf's h. 2D and 3D, with a direct "
                       "solver ('automatic' keeps MUMPS), on one or several ranks. A box that "
                       "meets the body's boundary must reach about 2(q+1) cells of its finest "
                       "level into the body (the extension). Empty: the uniform grid.");
+    prm.declare_entry("Refinement region",
+                      "",
+                      Patterns::Anything(),
+                      "Where the background grid is refined, besides 'Refinement boxes': an "
+                      "expression in x, y (2D) or x, y, z (3D) of the initial configuration "
+                      "(the fixed grid's coordinates), e.g. 'abs(sqrt(x^2 + y^2 + z^2) - 0.5) - "
+                      "0.1' for a band round a sphere of radius 0.5. A cell pair is refined at "
+                      "a level when its parent is (or at the first level) and the expression is "
+                      "<= 0 at one of 5 points per direction of the cell, corners included (a "
+                      "region thinner than a quarter of a cell may be missed). The grid is "
+                      "fixed for the run: a band must cover the room a moving surface sweeps. "
+                      "Combined with the boxes: a cell is refined where either refines it. "
+                      "Empty: none.");
     prm.declare_entry("Refinement levels",
                       "1",
                       Patterns::Integer(1, 4),
-                      "How many times the cells in 'Refinement boxes' are halved.");
+                      "How many times the cells in 'Refinement boxes' and 'Refinement region' "
+                      "are halved.");
     prm.leave_subsection();
   }
 
@@ -76,6 +92,7 @@ namespace GelMPM
     const auto n  = get_double_list(prm, "Cells", "Background grid/Cells", dim);
     axisymmetric  = prm.get("Coordinate system") == "axisymmetric";
     const std::string refinement_text = prm.get("Refinement boxes");
+    const std::string region_text     = dealii::Utilities::trim(prm.get("Refinement region"));
     refinement_levels                 = prm.get_integer("Refinement levels");
     prm.leave_subsection();
     require(!axisymmetric || dim == 2,
@@ -102,6 +119,20 @@ namespace GelMPM
                 "give an upper corner larger than the lower corner in every coordinate");
       }
     parse_refinement_boxes(refinement_text);
+    parse_refinement_region(region_text);
+    if (refinement_boxes.empty() && refinement_region == nullptr)
+      refinement_levels = 0;
+    if (!refined())
+      return;
+    for (unsigned int d = 0; d < dim; ++d)
+      require(n_cells[d] % 2 == 0,
+              refinement_boxes.empty() ? "Background grid/Refinement region"
+                                       : "Background grid/Refinement boxes",
+              "needs an even number of cells in every direction ('Background grid/Cells'): "
+              "cells are refined in pairs",
+              "use an even number of cells in every direction");
+    if (refinement_region != nullptr)
+      mark_region();
   }
 
 
@@ -150,21 +181,119 @@ namespace GelMPM
                   "list the lower corner first");
         refinement_boxes.push_back(box);
       }
-    if (refinement_boxes.empty())
+  }
+
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::parse_refinement_region(const std::string &text)
+  {
+    refinement_region.reset();
+    region_marked.clear();
+    if (text.empty())
+      return;
+    const std::string variables = dim == 2 ? "x,y" : "x,y,z";
+    auto              parser    = std::make_shared<dealii::FunctionParser<dim>>(1);
+    try
       {
-        refinement_levels = 0;
-        return;
+        const QuietCerr quiet;
+        parser->initialize(variables, text, {});
+        // The parser compiles lazily: evaluate once to surface syntax errors here.
+        (void)parser->value(dealii::Point<dim>());
       }
-    require(dim == 2,
-            entry,
-            "refines a 3D grid, which the refined path does not run yet",
-            "remove 'Refinement boxes' (refined grids are 2D for now)");
+    catch (const dealii::ExceptionBase &e)
+      {
+        throw InputError("Background grid/Refinement region",
+                         "'" + text + "' cannot be parsed: " + describe(e),
+                         "write an expression in " + variables +
+                           ", <= 0 where the grid is to be refined");
+      }
+    refinement_region = parser;
+  }
+
+
+  template <int dim>
+  bool
+  BackgroundGrid<dim>::pair_cell_in_box(const unsigned int l, const unsigned int c) const
+  {
+    std::array<unsigned int, dim> n;
     for (unsigned int d = 0; d < dim; ++d)
-      require(n_cells[d] % 2 == 0,
-              entry,
-              "needs an even number of cells in every direction ('Background grid/Cells'): "
-              "cells are refined in pairs",
-              "use an even number of cells in every direction");
+      n[d] = n_cells[d] / 2 * (1u << l);
+    dealii::Point<dim> lo, hi;
+    unsigned int       rest = c;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        const unsigned int i = rest % n[d];
+        rest /= n[d];
+        const double h = (upper[d] - lower[d]) / n[d];
+        lo[d]          = lower[d] + i * h;
+        hi[d]          = lower[d] + (i + 1) * h;
+      }
+    for (const auto &[box_lo, box_hi] : refinement_boxes)
+      {
+        bool overlaps = true;
+        for (unsigned int d = 0; d < dim; ++d)
+          overlaps &= lo[d] < box_hi[d] && box_lo[d] < hi[d];
+        if (overlaps)
+          return true;
+      }
+    return false;
+  }
+
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::mark_region()
+  {
+    region_marked.assign(refinement_levels, {});
+    unsigned int n_samples = 1;
+    for (unsigned int d = 0; d < dim; ++d)
+      n_samples *= region_samples;
+    for (unsigned int l = 0; l < refinement_levels; ++l)
+      {
+        std::array<unsigned int, dim> n;
+        unsigned int                  n_total = 1;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            n[d] = n_cells[d] / 2 * (1u << l);
+            n_total *= n[d];
+          }
+        region_marked[l].assign(n_total, false);
+        for (unsigned int c = 0; c < n_total; ++c)
+          {
+            std::array<unsigned int, dim> index;
+            unsigned int                  rest = c, parent = 0, stride = 1;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                index[d] = rest % n[d];
+                rest /= n[d];
+                parent += index[d] / 2 * stride;
+                stride *= n[d] / 2;
+              }
+            // Nested domains: only the children of a refined cell can be refined.
+            if (l > 0 && !region_marked[l - 1][parent] && !pair_cell_in_box(l - 1, parent))
+              continue;
+            for (unsigned int s = 0; s < n_samples && !region_marked[l][c]; ++s)
+              {
+                dealii::Point<dim> x;
+                unsigned int       rest_s = s;
+                for (unsigned int d = 0; d < dim; ++d)
+                  {
+                    const double h = (upper[d] - lower[d]) / n[d];
+                    x[d]           = lower[d] +
+                           (index[d] + double(rest_s % region_samples) / (region_samples - 1)) * h;
+                    rest_s /= region_samples;
+                  }
+                const double value = refinement_region->value(x);
+                if (!std::isfinite(value))
+                  throw InputError("Background grid/Refinement region",
+                                   "is not a number at " + format_point(x),
+                                   "write an expression that is finite in the whole background "
+                                   "grid");
+                region_marked[l][c] = value <= 0.;
+              }
+          }
+      }
   }
 
 
@@ -191,29 +320,8 @@ namespace GelMPM
             n_total *= n[d];
           }
         for (unsigned int c = 0; c < n_total; ++c)
-          {
-            dealii::Point<dim> lo, hi;
-            unsigned int       rest = c;
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                const unsigned int i = rest % n[d];
-                rest /= n[d];
-                const double h = (upper[d] - lower[d]) / n[d];
-                lo[d]          = lower[d] + i * h;
-                hi[d]          = lower[d] + (i + 1) * h;
-              }
-            for (const auto &[box_lo, box_hi] : refinement_boxes)
-              {
-                bool overlaps = true;
-                for (unsigned int d = 0; d < dim; ++d)
-                  overlaps &= lo[d] < box_hi[d] && box_lo[d] < hi[d];
-                if (overlaps)
-                  {
-                    refined[l].push_back(c);
-                    break;
-                  }
-              }
-          }
+          if (pair_cell_in_box(l, c) || (!region_marked.empty() && region_marked[l][c]))
+            refined[l].push_back(c);
       }
     return refined;
   }
@@ -227,7 +335,17 @@ namespace GelMPM
     // not overlap one is the leaf's.
     for (unsigned int l = 0; l < refinement_levels; ++l)
       {
-        bool overlaps = false;
+        bool         overlaps = false;
+        unsigned int cell = 0, stride = 1;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const double       h = 2. * cell_size(d) / (1u << l);
+            const unsigned int n = n_cells[d] / 2 * (1u << l);
+            const unsigned int i =
+              std::min(n - 1, static_cast<unsigned int>(std::max(0., (x[d] - lower[d]) / h)));
+            cell += i * stride;
+            stride *= n;
+          }
         for (const auto &[box_lo, box_hi] : refinement_boxes)
           {
             bool inside = true;
@@ -241,6 +359,7 @@ namespace GelMPM
               }
             overlaps |= inside;
           }
+        overlaps |= !region_marked.empty() && region_marked[l][cell];
         if (!overlaps)
           return l;
       }

@@ -1,11 +1,13 @@
 #ifndef gelmpm_scene_background_grid_h
 #define gelmpm_scene_background_grid_h
 
+#include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/grid/tria.h>
 
 #include <array>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -38,6 +40,19 @@ namespace GelMPM
      */
     std::vector<std::pair<dealii::Point<dim>, dealii::Point<dim>>> refinement_boxes;
     unsigned int                                                   refinement_levels = 0;
+    /**
+     * 'Refinement region': an expression in x, y (, z) of the initial configuration; a cell of
+     * the grid of pairs whose parent is refined (or of level 0) is refined where it is <= 0 at
+     * one of region_samples^dim points of the cell (corners included). Null: none.
+     */
+    std::shared_ptr<dealii::FunctionParser<dim>> refinement_region;
+    /** Samples per direction of a cell for 'Refinement region'. */
+    static constexpr unsigned int region_samples = 5;
+    /**
+     * Per level l < refinement_levels and cell of the grid of pairs at level l: whether
+     * 'Refinement region' refines it (region_marks()). Empty without a region.
+     */
+    std::vector<std::vector<bool>> region_marked;
 
     /** Whether some cells are refined. */
     bool
@@ -76,6 +91,22 @@ namespace GelMPM
     /** Read 'Refinement boxes'; throws InputError where the refined path does not run yet. */
     void
     parse_refinement_boxes(const std::string &text);
+
+    /** Read 'Refinement region' (empty: none); throws InputError if it cannot be parsed. */
+    void
+    parse_refinement_region(const std::string &text);
+
+    /**
+     * region_marked, level by level: a cell is marked when its parent is refined (by a box or
+     * the region) and the region is <= 0 at one of its samples. Throws InputError if the
+     * region is not a number at a sample.
+     */
+    void
+    mark_region();
+
+    /** Whether the cell @p c of the grid of pairs at level @p l overlaps a refinement box. */
+    bool
+    pair_cell_in_box(const unsigned int l, const unsigned int c) const;
 
     /** The grid as a deal.II triangulation (GridGenerator::subdivided_hyper_rectangle). */
     void
