@@ -449,6 +449,8 @@ namespace GelMPM
               << " on the step ratio, " << fresh.reuses << " on the reuse count, "
               << fresh.discarded << " after a discarded update";
       }
+    if (loop && monitor && !monitor->signature_sources().empty())
+      pcout << ", " << monitor->signature_sources();
     if (loop && loop->switch_updates().first > 0)
       pcout << ", " << loop->switch_updates().first
             << " updates of the contact seals held in Newton (" << loop->switch_updates().second

@@ -97,12 +97,19 @@ namespace GelMPM
       return StepControl::Verdict::accept;
     {
       dealii::TimerOutput::Scope scope(timer, "stability");
-      if (!report.tangent_at_solution)
+      const bool reads_factorization = settings.inertia || settings.n_eigenvalues > 0;
+      const SymmetricFactorization *factorization =
+        reads_factorization ? newton_factorization(report) : nullptr;
+      const bool reused = factorization != nullptr;
+      if (reads_factorization && settings.signature_source ==
+                                   StabilitySettings::SignatureSource::last_newton_factorisation)
+        ++(reused ? n_signatures_reused : n_signatures_fresh);
+      // What reads the tangent itself (K_uu, the dense estimates) reads the converged one.
+      if (!report.tangent_at_solution && (!reused || reads_tangent()))
         scene.system->assemble(solution, dt * loop.scales().tau_d, true);
       // The Newton solver's LDL^T of the converged tangent gives the signature, and is the
       // factorisation the next step's modified Newton starts from.
-      const SymmetricFactorization *factorization = nullptr;
-      if ((settings.inertia || settings.n_eigenvalues > 0) && linear_solver.uses_ldlt())
+      if (reads_factorization && !reused && linear_solver.uses_ldlt())
         {
           linear_solver.factorize(scene.system->matrix());
           loop.count_factorization();
@@ -136,6 +143,39 @@ namespace GelMPM
               (last_result.mode.size() == scene.spaces->n_u_dofs() ||
                last_result.drained_mode.size() == scene.spaces->n_u_dofs());
     return verdict;
+  }
+
+
+  template <int dim>
+  const SymmetricFactorization *
+  StabilityMonitor<dim>::newton_factorization(const NewtonReport &report) const
+  {
+    // Only a factorisation of the tangent at the iterate before the converged one: one kept
+    // from an earlier iterate or step (modified Newton) is of an older state.
+    if (settings.signature_source !=
+          StabilitySettings::SignatureSource::last_newton_factorisation ||
+        report.factorizations == 0 || !report.last_solve_fresh || !linear_solver.uses_ldlt())
+      return nullptr;
+    return linear_solver.symmetric_factorization();
+  }
+
+
+  template <int dim>
+  bool
+  StabilityMonitor<dim>::reads_tangent() const
+  {
+    return settings.drained_onset || settings.inf_sup || settings.condition;
+  }
+
+
+  template <int dim>
+  std::string
+  StabilityMonitor<dim>::signature_sources() const
+  {
+    if (settings.signature_source != StabilitySettings::SignatureSource::last_newton_factorisation)
+      return "";
+    return std::to_string(n_signatures_reused) + " signatures from Newton's last factorisation, " +
+           std::to_string(n_signatures_fresh) + " from the converged tangent";
   }
 
 

@@ -335,7 +335,8 @@ namespace GelMPM
             report.failure = e.what();
             return report;
           }
-        report.iterations = k + 1;
+        report.iterations       = k + 1;
+        report.last_solve_fresh = fresh;
 
         const double merit_0 = merit();
         const double r_u_0 = report.residual_u, r_mu_0 = report.residual_mu;

@@ -139,6 +139,26 @@ namespace GelMPM
                       "After every converged step, an estimate of the 1-norm condition "
                       "number of the tangent (column condition_number). Dense: for grids with at "
                       "most 10000 unknowns in all (the Nitsche penalty study of doc/extremes.md).");
+    prm.declare_entry(
+      "Signature from",
+      "converged tangent",
+      dealii::Patterns::Selection("converged tangent|last Newton factorisation"),
+      "Which LDL^T factorisation gives 'Inertia' and 'Schur eigenvalues'. 'converged tangent': "
+      "the tangent at the converged state, factorised for the analysis (one factorisation per "
+      "converged attempt more than Newton's). 'last Newton factorisation': the one Newton's "
+      "last iteration made and solved with, of the tangent at the iterate before the converged "
+      "state; nothing is factorised for the signature. Its signature is the converged "
+      "tangent's unless an eigenvalue of the tangent lies closer to zero than the last Newton "
+      "update moves it (quadratic convergence: that update is about the square of the one "
+      "before), so a bracketed loss of stability moves by at most one bisection step; the "
+      "Schur eigenvalues and their mode are likewise that tangent's, apart from the converged "
+      "one's by that amount. Where Newton's last iteration solved with a factorisation kept "
+      "from an earlier iterate or step ('Newton/Reuse contraction' > 0), made none, or the run "
+      "solves by Krylov, the converged tangent is factorised as with 'converged tangent'. The "
+      "drained criterion's K_uu, the inf-sup constant and the condition number are always the "
+      "converged tangent's. Needs 'Inertia' or 'Schur eigenvalues' and MUMPS's LDL^T in double "
+      "precision (doc/method.md, 'Going through an instability'; doc/performance.md, 'Fewer "
+      "factorisations').");
     prm.leave_subsection();
   }
 
@@ -163,16 +183,22 @@ namespace GelMPM
       perturbation_direction.push_back(dealii::Utilities::string_to_double(item));
     const std::string eigensolver_choice = prm.get("Eigensolver");
     n_drained_eigenvalues                = prm.get_integer("Drained eigenvalues");
+    signature_source                     = prm.get("Signature from") == "last Newton factorisation"
+                                             ? SignatureSource::last_newton_factorisation
+                                             : SignatureSource::converged_tangent;
     prm.leave_subsection();
     // 'automatic' follows the linear solver: a run that solves by Krylov has no factorisation to
     // spare, one that factorises anyway keeps the inertia.
-    bool krylov = false;
+    std::string solver = "automatic", precision = "double";
     if (prm.subsection_path_exists({"Linear solver"}))
       {
         prm.enter_subsection("Linear solver");
-        krylov = prm.get("Solver") == "Krylov";
+        solver    = prm.get("Solver");
+        precision = prm.get("Precision");
         prm.leave_subsection();
       }
+    const bool krylov = solver == "Krylov";
+    check_signature_source(solver, precision);
     eigensolver = eigensolver_choice == "iterative" || (eigensolver_choice == "automatic" && krylov)
                     ? Eigensolver::iterative
                     : Eigensolver::factorisation;
@@ -223,6 +249,32 @@ namespace GelMPM
             "Stability/Write mode",
             "needs the eigenvector of the smallest Schur eigenvalue, but 'Schur eigenvalues' is 0",
             "set 'Schur eigenvalues' to at least 1 or 'Write mode' to false");
+  }
+
+
+  void
+  StabilitySettings::check_signature_source(const std::string &solver,
+                                            const std::string &precision) const
+  {
+    if (signature_source != SignatureSource::last_newton_factorisation)
+      return;
+    require(inertia || n_eigenvalues > 0,
+            "Stability/Signature from",
+            "is 'last Newton factorisation', but neither 'Inertia' nor 'Schur eigenvalues' reads "
+            "a factorisation",
+            "set 'Inertia = true', or 'Signature from = converged tangent'");
+    require(solver != "KLU" && solver != "Krylov",
+            "Stability/Signature from",
+            "is 'last Newton factorisation', but with 'Linear solver/Solver = " + solver +
+              "' Newton makes no LDL^T factorisation",
+            "set 'Linear solver/Solver = MUMPS' (or 'automatic'), or 'Signature from = converged "
+            "tangent'");
+    require(precision != "single",
+            "Stability/Signature from",
+            "is 'last Newton factorisation', but Newton's factors are in single precision "
+            "('Linear solver/Precision = single'), which the stability analysis does not read "
+            "(near an onset they cannot be refined)",
+            "set 'Linear solver/Precision = double', or 'Signature from = converged tangent'");
   }
 
 

@@ -79,6 +79,14 @@ namespace GelMPM
     bool
     end_requested() const override;
 
+    /**
+     * With 'Signature from = last Newton factorisation': how many signatures came from Newton's
+     * last factorisation and how many from a factorisation of the converged tangent (Newton's
+     * last iteration solved with a kept one, or made none), for the end of the run; else empty.
+     */
+    std::string
+    signature_sources() const;
+
     /** Boost serialization of the bookkeeping the next step and stability.csv read. */
     template <class Archive>
     void
@@ -90,6 +98,21 @@ namespace GelMPM
     }
 
   private:
+    /**
+     * With 'Signature from = last Newton factorisation': the LDL^T that the last iteration of
+     * the Newton solve @p report made, of the tangent at the iterate before the converged
+     * state; nullptr where that iteration solved with a factorisation kept from an earlier
+     * iterate or step, none was made, or there is no double-precision LDL^T (the converged
+     * tangent is then factorised).
+     */
+    const SymmetricFactorization *
+    newton_factorization(const NewtonReport &report) const;
+
+    /** Whether the analysis reads the tangent itself (K_uu, the dense estimates), not only its
+     * factorisation. */
+    bool
+    reads_tangent() const;
+
     /** Hand the signature to the step control and log what it decided. */
     StepControl::Verdict
     judge_signature(const StabilityReport &result);
@@ -123,6 +146,10 @@ namespace GelMPM
     bool            ended_at_onset  = false;
     bool            perturb         = false; // the accepted attempt is to be kicked
     StabilityReport last_result;
+
+    /** Signatures taken from Newton's last factorisation, and from the converged tangent. */
+    unsigned long n_signatures_reused = 0;
+    unsigned long n_signatures_fresh  = 0;
   };
 } // namespace GelMPM
 

@@ -136,6 +136,13 @@ namespace GelMPM
     /** Whether the system's matrix() is the tangent at the returned state. */
     bool tangent_at_solution = false;
     /**
+     * Whether the last iteration factorised the tangent at its own iterate (a fresh tangent, not
+     * a factorisation kept from an earlier iterate or step): the linear solver then holds the
+     * factorisation of the tangent at the state before the last update ('Stability/Signature
+     * from').
+     */
+    bool last_solve_fresh = false;
+    /**
      * Per iteration: the scaled residuals (u, mu) at its start and the damping taken (0: the
      * update of an old factorisation, discarded).
      */

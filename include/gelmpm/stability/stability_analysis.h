@@ -32,6 +32,8 @@ namespace GelMPM
    *   of stability (StepControl; Simulator; doc/method.md, "Going through an instability").
    * - Condition number: LAPACK's 1-norm estimate for the tangent (column condition_number);
    *   dense, for small discretisations.
+   * - Signature from: the LDL^T of the converged tangent, made for the analysis, or the one
+   *   Newton's last iteration made (the tangent at the iterate before the converged state).
    * - Eigensolver: how the drained criterion ('Onset criterion = drained') looks at K_uu. By
    *   factorisation, its inertia from a second LDL^T (column n_neg_uu); iteratively, its
    *   'Drained eigenvalues' smallest eigenvalues by LOBPCG with the AMG of K_uu
@@ -79,11 +81,32 @@ namespace GelMPM
     /** Iterative drained criterion: how many of the smallest eigenvalues of K_uu. */
     unsigned int n_drained_eigenvalues = 3;
 
+    /** Which LDL^T gives the inertia and the Schur eigenvalues ('Signature from'). */
+    enum class SignatureSource
+    {
+      /** The tangent assembled at the converged state, factorised for the analysis. */
+      converged_tangent,
+      /**
+       * The factorisation Newton's last iteration made, of the tangent at the iterate before
+       * the converged state, where it made one (else as converged_tangent).
+       */
+      last_newton_factorisation
+    };
+    SignatureSource signature_source = SignatureSource::converged_tangent;
+
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 
     void
     parse_parameters(dealii::ParameterHandler &prm);
+
+    /**
+     * Throw InputError where 'Signature from = last Newton factorisation' has nothing to read
+     * (no 'Inertia', no 'Schur eigenvalues') or Newton makes no double-precision LDL^T
+     * ('Linear solver/Solver' @p solver KLU or Krylov, 'Precision' @p precision single).
+     */
+    void
+    check_signature_source(const std::string &solver, const std::string &precision) const;
 
     /** Whether the drained criterion takes the smallest eigenvalues of K_uu by LOBPCG. */
     bool
