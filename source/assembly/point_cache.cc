@@ -5,6 +5,9 @@
 #include <deal.II/base/parallel.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
 
@@ -63,7 +66,7 @@ namespace GelMPM
 
     std::vector<PointRecord<dim>>  unsorted;
     std::vector<particle_iterator> its;
-    std::vector<unsigned int>      cells;
+    std::vector<unsigned int>      cells, pieces;
     unsorted.reserve(particle_handler.n_locally_owned_particles());
     std::string failure;
     try
@@ -73,7 +76,9 @@ namespace GelMPM
           {
             unsorted.push_back(unpack_point(*particle));
             its.push_back(particle);
-            cells.push_back(cell_of_point(unsorted.back()));
+            const auto [cell, piece] = cell_and_piece_of_point(unsorted.back());
+            cells.push_back(cell);
+            pieces.push_back(piece);
           }
       }
     catch (const std::runtime_error &e)
@@ -81,7 +86,7 @@ namespace GelMPM
         failure = e.what();
       }
     Collective::agree_on_failure<std::runtime_error>(communicator, failure);
-    group_points(unsorted, its, cells);
+    group_points(unsorted, its, cells, pieces);
     evaluate_shape_functions();
   }
 
@@ -225,18 +230,83 @@ namespace GelMPM
 
 
   template <int dim>
+  std::pair<unsigned int, unsigned int>
+  PointCache<dim>::cell_and_piece_of_point(const PointRecord<dim> &r) const
+  {
+    const unsigned int cell = cell_of_point(r);
+    if (!spaces.refined())
+      return {cell, 0u};
+    const auto        &u     = spaces.u();
+    const unsigned int piece = u.piece_containing(r.x, cell);
+    if (r.kind == PointKind::volume || leaf_classification_[u.leaf_of_piece(cell, piece)])
+      return {cell, piece};
+
+    // A surface point in a leaf without volume points: the leaf's extended functions lack
+    // those of its control points outside the body, so they do not sum to one there, and the
+    // point's increments were wrong (on a film refined at its top, the surface points' J fell
+    // from 2.1 to 0.83 while the volume points beside them swelled). Evaluate it in the
+    // nearest leaf with volume points, whose polynomial continues the field there, as a cell
+    // without volume points does on a uniform grid (DiscreteSpaces::active_u_cell_containing).
+    const auto  &space     = spaces.u_space();
+    const auto  &hierarchy = spaces.u_hierarchy();
+    const auto   home      = space.cell_multi_index(cell);
+    double       best_gap  = std::numeric_limits<double>::max();
+    unsigned int best_cell = cell, best_piece = piece;
+    for (unsigned int neighbour = 0; neighbour < std::pow(3, dim); ++neighbour)
+      {
+        std::array<unsigned int, dim> index;
+        bool                          valid = true;
+        unsigned int                  rest  = neighbour;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const int i = static_cast<int>(home[d]) + static_cast<int>(rest % 3) - 1;
+            rest /= 3;
+            valid &= i >= 0 && i < static_cast<int>(space.n_cells_per_direction()[d]);
+            index[d] = valid ? i : 0;
+          }
+        if (!valid)
+          continue;
+        const unsigned int c = space.cell_index(index);
+        if (!classification_[c])
+          continue;
+        for (unsigned int k = 0; k < u.n_pieces(c); ++k)
+          {
+            const unsigned int leaf = u.leaf_of_piece(c, k);
+            if (!leaf_classification_[leaf])
+              continue;
+            const auto &[level, leaf_cell] = hierarchy.leaf_cell(leaf);
+            const auto &level_space        = hierarchy.level_space(level);
+            const auto  leaf_index         = level_space.cell_multi_index(leaf_cell);
+            double      gap                = 0.;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                const double h     = level_space.cell_size(d);
+                const double lower = level_space.basis_1d(d).x_min() + leaf_index[d] * h;
+                const double out   = std::max({0., lower - r.x[d], r.x[d] - (lower + h)});
+                gap += out * out;
+              }
+            if (gap < best_gap)
+              {
+                best_gap   = gap;
+                best_cell  = c;
+                best_piece = k;
+              }
+          }
+      }
+    return {best_cell, best_piece};
+  }
+
+
+  template <int dim>
   void
   PointCache<dim>::group_points(const std::vector<PointRecord<dim>>  &unsorted,
                                 const std::vector<particle_iterator> &its,
-                                const std::vector<unsigned int>      &cells)
+                                const std::vector<unsigned int>      &cells,
+                                const std::vector<unsigned int>      &pieces)
   {
     // Stable: within a cell the points keep the handler's order, so that sums over them (and
     // with them the results) do not depend on the sort.
-    // On a refined grid a cell's points are grouped further by the leaf (piece) they lie in.
-    std::vector<unsigned int> pieces(unsorted.size(), 0);
-    if (spaces.refined())
-      for (unsigned int i = 0; i < unsorted.size(); ++i)
-        pieces[i] = spaces.u().piece_containing(unsorted[i].x, cells[i]);
+    // On a refined grid a cell's points are grouped further by the leaf (piece) they use.
     std::vector<unsigned int> order(unsorted.size());
     std::iota(order.begin(), order.end(), 0u);
     std::stable_sort(order.begin(), order.end(), [&](const unsigned int a, const unsigned int b) {

@@ -293,13 +293,23 @@ namespace GelMPM
     cell_of_point(const PointRecord<dim> &r) const;
 
     /**
-     * Order the records @p unsorted (of the particles @p its) by their @p cells into the blocks
-     * of assembly, and give each its offsets into the shape arrays (which are sized here).
+     * The displacement cell and its piece (leaf) whose functions the point @p r is evaluated
+     * with: cell_of_point() and the leaf that holds the point; on a refined grid a surface point
+     * in a leaf without volume points takes the nearest leaf with volume points instead.
+     */
+    std::pair<unsigned int, unsigned int>
+    cell_and_piece_of_point(const PointRecord<dim> &r) const;
+
+    /**
+     * Order the records @p unsorted (of the particles @p its) by their @p cells and @p pieces
+     * into the blocks of assembly, and give each its offsets into the shape arrays (which are
+     * sized here).
      */
     void
     group_points(const std::vector<PointRecord<dim>>  &unsorted,
                  const std::vector<particle_iterator> &its,
-                 const std::vector<unsigned int>      &cells);
+                 const std::vector<unsigned int>      &cells,
+                 const std::vector<unsigned int>      &pieces);
 
     /** The block of the points of piece @p u_piece of @p u_cell, from point @p first on. */
     PointBlock
