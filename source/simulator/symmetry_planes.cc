@@ -232,10 +232,9 @@ namespace GelMPM
                  "rollers) "
               << plane_list(within_cells, grid)
               << " fall within cells of the background grid: their points lie in cut cells, "
-                 "where the condition holds only weakly, and a curved body meeting them there "
-                 "has failed "
-                 "Newton's method (doc/own_scenes.md, \"Planes of symmetry\"). A grid of the "
-                 "same cell size with each plane on a grid line and "
+                 "where the condition holds only weakly, and the body's material beyond them "
+                 "shares those cells' functions (doc/own_scenes.md, \"Planes of symmetry\"). "
+                 "A grid of the same cell size with each plane on a grid line and "
               << degree + 1 << " cells beyond it: "
               << grid_entries_for_planes(within_cells, grid, degree + 1, even_cells) << '\n';
       }

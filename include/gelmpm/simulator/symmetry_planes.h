@@ -21,10 +21,9 @@ namespace GelMPM
    * carry the body next to it (doc/own_scenes.md, "Planes of symmetry"): a plane on a grid line
    * with q + 1 cells of grid beyond it never cuts a cell, and the cut cells where a curved
    * surface meets it are extrapolated from control points away from the grid's edge. A plane
-   * within a cell puts its points in cut cells, where its condition holds only weakly (an eighth
-   * of a sphere with such planes failed Newton from 41 tau_d on); a plane fewer than q cells from
-   * the grid's edge asks for extrapolations there that are not exact, which the first step
-   * refuses.
+   * within a cell puts its points in cut cells, where its condition holds only weakly; a plane
+   * fewer than q cells from the grid's edge asks for extrapolations there that are not exact,
+   * which the first step refuses.
    */
   struct RollerPlane
   {
