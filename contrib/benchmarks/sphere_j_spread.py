@@ -106,9 +106,9 @@ def solve(M, n, m):
     return [[M[r][n + k] / M[r][r] for k in range(m)] for r in range(n)]
 
 
-def fitted_J_3d(volume, radius):
+def fitted_J_3d(volume, radius, lambda_0):
     """3D: J of the affine map X_0 -> x fitted to the volume points within @p radius of each
-    point; None with fewer than ten."""
+    point, times lambda_0^3 (from the dry state); None with fewer than ten."""
     key = lambda X: tuple(math.floor(c / radius) for c in X)
     buckets = {}
     for p in volume:
@@ -130,9 +130,9 @@ def fitted_J_3d(volume, radius):
                 for d in range(3):
                     M[a][4 + d] += v[a] * q["x"][d]
         B = solve(M, 4, 3)[1:]  # B[e][d] = dx_d / dX_e
-        result.append(B[0][0] * (B[1][1] * B[2][2] - B[2][1] * B[1][2]) -
-                      B[1][0] * (B[0][1] * B[2][2] - B[2][1] * B[0][2]) +
-                      B[2][0] * (B[0][1] * B[1][2] - B[1][1] * B[0][2]))
+        result.append(lambda_0 ** 3 * (B[0][0] * (B[1][1] * B[2][2] - B[2][1] * B[1][2]) -
+                                       B[1][0] * (B[0][1] * B[2][2] - B[2][1] * B[0][2]) +
+                                       B[2][0] * (B[0][1] * B[1][2] - B[1][1] * B[0][2])))
     return result
 
 
@@ -201,7 +201,7 @@ def row(directory, args):
         return max(math.hypot(*c) for c in corners) > current_radius
 
     fits = (fitted_J(volume, 1.7 * h / args.points_per_cell, args.lambda_0) if dim == 2 else
-            fitted_J_3d(volume, 1.7 * h / args.points_per_cell))
+            fitted_J_3d(volume, 1.7 * h / args.points_per_cell, args.lambda_0))
     local = [p["J"] / f - 1 for p, f in zip(volume, fits) if f]
     deep = [p["J"] for p in volume if args.radius - math.hypot(*p["X"]) > 2 * h]
     return "| %s | %s | %s | %s | %s | %s | %s |" % (
