@@ -24,7 +24,10 @@ run it reads statistics.csv, events.csv and the profiles surface_top-*.csv and r
              and over the whole run, against the plane-strain free-swelling value at mu = 0.
 
   /usr/bin/python3 contrib/benchmarks/creasing_film.py [--gelmpm build/gelmpm] [--output DIR]
-      [--cells 16,20,32] [--dips 0.02,0.005] [--end-time 12]
+      [--cells 16,20,32] [--dips 0.02,0.005] [--end-time 12] [--levels 0,1,2,3 --box BOX]
+
+With --levels, each grid is also run refined that many times in --box (default: round the dip
+and the path of the top while the film swells), the finest spacing h/2^levels there.
 
 Prints a Markdown table (also <DIR>/onset.md) and writes <DIR>/onset.csv; with --plot the
 profiles at t_crease to doc/figures/creasing_film_profiles.png.
@@ -100,7 +103,7 @@ def output_times(directory):
     return dict(sorted(times.items()))
 
 
-def run(gelmpm, cells, dip, end_time, directory, reuse):
+def run(gelmpm, cells, dip, end_time, directory, reuse, levels=0, box=""):
     h = 1.0 / cells
     args = [gelmpm, os.path.join(TOP, "prm", "creasing_film.prm"),
             "--set", f"Output/Directory={directory}",
@@ -110,6 +113,9 @@ def run(gelmpm, cells, dip, end_time, directory, reuse):
             "--set", f"Geometry/Level set constants=d={dip}, w=0.1",
             "--set", f"Time stepping/End time={end_time}",
             "--set", "Observables/Volume ratio range=true"]
+    if levels > 0:
+        args += ["--set", f"Background grid/Refinement boxes={box}",
+                 "--set", f"Background grid/Refinement levels={levels}"]
     if reuse and os.path.exists(os.path.join(directory, "statistics.csv")):
         returncode = 0 if "reached t/tau_d" in open(directory + ".log").read() else 1
         wall_file = os.path.join(directory, "wall_seconds")
@@ -136,7 +142,7 @@ def run(gelmpm, cells, dip, end_time, directory, reuse):
             t_fold = t_output
             break
     J_before = max((J for ti, J in zip(t, J_max) if not ti > t_crease), default=math.nan)
-    return dict(cells=cells, dip=dip, t_end=t[-1], reached=returncode == 0,
+    return dict(cells=cells, levels=levels, dip=dip, t_end=t[-1], reached=returncode == 0,
                 t_45=t_45, t_fold=t_fold, t_crease=t_crease,
                 J_max_before=J_before, J_max=max(J_max), wall=wall)
 
@@ -152,6 +158,11 @@ def main():
     parser.add_argument("--cells", default="16,20,32", help="cells per H")
     parser.add_argument("--dips", default="0.02,0.005", help="dip depths in H")
     parser.add_argument("--end-time", type=float, default=12.0)
+    parser.add_argument("--levels", default="0",
+                        help="comma-separated refinement levels of --box on each grid (0: uniform)")
+    parser.add_argument("--box", default="1.0, 1.0 : 1.5, 3.0",
+                        help="the refined box, 'x0, y0 : x1, y1': round the dip and the path of "
+                             "the top while the film swells (the top rises from y = 1.25 to 2.98)")
     parser.add_argument("--plot", action="store_true")
     parser.add_argument("--reuse", action="store_true",
                         help="analyse the runs already in --output instead of running them")
@@ -160,22 +171,24 @@ def main():
 
     results = []
     for dip in [float(d) for d in a.dips.split(",")]:
-        for cells in [int(c) for c in a.cells.split(",")]:
-            directory = os.path.join(a.output, f"h{cells}_d{dip}")
-            r = run(a.gelmpm, cells, dip, a.end_time, directory, a.reuse)
+        for cells, levels in [(int(c), int(l)) for c in a.cells.split(",")
+                              for l in a.levels.split(",")]:
+            directory = os.path.join(a.output, f"h{cells}_d{dip}" +
+                                     (f"_L{levels}" if levels > 0 else ""))
+            r = run(a.gelmpm, cells, dip, a.end_time, directory, a.reuse, levels, a.box)
             r["directory"] = directory
             results.append(r)
-            print(f"h = H/{cells}, dip {dip}: t_45 {r['t_45']:.3f}, fold {r['t_fold']:.2f}, "
+            print(f"h = H/{cells}, {levels} levels, dip {dip}: t_45 {r['t_45']:.3f}, fold {r['t_fold']:.2f}, "
                   f"crease {r['t_crease']:.3f}, J_max {r['J_max']:.2f}, "
                   f"end {r['t_end']:.3f}, {r['wall']:.0f} s", flush=True)
 
     J_free = free_swelling_J(0.0)
-    lines = ["| h | dip / H | t_45 (s) | visible fold (s) | first crease event (s) | "
+    lines = ["| h | levels | dip / H | t_45 (s) | visible fold (s) | first crease event (s) | "
              "J_max before / whole run | reached t/tau_d | wall |",
-             "|---|---|---|---|---|---|---|---|"]
+             "|---|---|---|---|---|---|---|---|---|"]
     for r in results:
         lines.append(
-            f"| H/{r['cells']} | {r['dip']} | {r['t_45']:.2f} ({stretch_at(r['t_45']):.3f}) | "
+            f"| H/{r['cells']} | {r['levels']} | {r['dip']} | {r['t_45']:.2f} ({stretch_at(r['t_45']):.3f}) | "
             f"{r['t_fold']:.1f} ({stretch_at(r['t_fold']):.3f}) | "
             f"{r['t_crease']:.2f} ({stretch_at(r['t_crease']):.3f}) | "
             f"{r['J_max_before']:.2f} / {r['J_max']:.2f} | {r['t_end']:.2f} | {r['wall']:.0f} s |")
