@@ -112,7 +112,11 @@ namespace GelMPM
     if (axisymmetric_)
       inexact_extrapolation_tolerated = true;
     if (grid.refined())
-      build_hierarchies(grid);
+      {
+        if (grid.refinement_boxes.empty())
+          refinement_entry_ = "Background grid/Refinement region";
+        build_hierarchies(grid);
+      }
   }
 
 
@@ -245,7 +249,7 @@ namespace GelMPM
       {
         u_.reset();
         mu_.reset();
-        throw InputError("Background grid/Refinement boxes",
+        throw InputError(refinement_entry_,
                          std::string("refines a region that the extended B-splines cannot "
                                      "extrapolate into (") +
                            e.what() + ")",

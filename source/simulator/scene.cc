@@ -92,13 +92,15 @@ namespace GelMPM
     const std::string solver = prm.get("Solver");
     prm.leave_subsection();
     // 'automatic' keeps MUMPS there (LinearSolver::allow_krylov()).
+    const std::string refining = grid.refinement_boxes.empty()
+                                   ? "'Background grid/Refinement region'"
+                                   : "'Background grid/Refinement boxes'";
     require(solver != "Krylov",
             "Linear solver/Solver",
-            "is 'Krylov' with 'Background grid/Refinement boxes', but the refined grid "
-            "runs with a direct solver only (the Krylov solver's geometric multigrid does not "
-            "know the levels yet)",
-            "set 'Solver = automatic' or 'MUMPS' (or KLU), or remove 'Background "
-            "grid/Refinement boxes'");
+            "is 'Krylov' with " + refining +
+              ", but the refined grid runs with a direct solver only (the Krylov solver's "
+              "geometric multigrid does not know the levels yet)",
+            "set 'Solver = automatic' or 'MUMPS' (or KLU), or remove " + refining);
   }
 
 

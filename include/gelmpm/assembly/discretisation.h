@@ -215,6 +215,8 @@ namespace GelMPM
     std::vector<bool>                              u_leaf_has_material_;
     bool                                           inexact_extrapolation_tolerated = false;
     bool                                           axisymmetric_;
+    // The entry that refines the grid, named when the extension cannot reach a refined region.
+    std::string refinement_entry_ = "Background grid/Refinement boxes";
     // The rule the current extended spaces were built with.
     bool built_tolerating_inexact_extrapolation = false;
   };
