@@ -50,7 +50,7 @@ namespace GelMPM
     static constexpr unsigned int region_samples = 5;
     /**
      * Per level l < refinement_levels and cell of the grid of pairs at level l: whether
-     * 'Refinement region' refines it (region_marks()). Empty without a region.
+     * 'Refinement region' refines it (mark_region()). Empty without a region.
      */
     std::vector<std::vector<bool>> region_marked;
 
