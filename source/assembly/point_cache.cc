@@ -1,6 +1,7 @@
 #include <gelmpm/assembly/point_cache.h>
 #include <gelmpm/core/collective.h>
 #include <gelmpm/core/format_point.h>
+#include <gelmpm/core/non_physical_state.h>
 
 #include <deal.II/base/parallel.h>
 
@@ -183,7 +184,28 @@ namespace GelMPM
         r.radius = r.x[0] + r.edge_offset[0];
         r.hoop   = out_of_plane_stretch_of<dim>(props);
       }
-    r.mobility = r.axisymmetric() ? r.gel->mobility(r.F_p, r.hoop) : r.gel->mobility(r.F_p);
+    try
+      {
+        r.mobility = r.axisymmetric() ? r.gel->mobility(r.F_p, r.hoop) : r.gel->mobility(r.F_p);
+      }
+    catch (const NonPhysicalState &e)
+      {
+        // A converged step passed every point that assembles its state; a surface point
+        // carries F only for its normal and its mobility, and where the surface folds (a
+        // crease closing) its F alone can leave the physical range.
+        throw NonPhysicalState(
+          std::string(e.what()) + " at the " +
+          (r.kind == PointKind::volume
+             ? std::string("volume point")
+             : "surface point" + (r.piece >= 0
+                                    ? " of '" + boundary_conditions.piece(r.piece).name + "'"
+                                    : std::string())) +
+          " at x = " + format_point(r.x) + " (X_0 = " + format_point(r.X0) + ")" +
+          (r.kind == PointKind::volume
+             ? std::string()
+             : ": a surface point leaves the range where the surface folds, its points pressed "
+               "together along it as where a crease closes (doc/own_scenes.md, section 7)"));
+      }
     // Surface points on the axis of an axisymmetric scene have no area (2 pi R = 0).
     r.assembled = ((r.kind == PointKind::volume) || (r.piece >= 0)) &&
                   !(spaces.axisymmetric() && !r.axisymmetric());
