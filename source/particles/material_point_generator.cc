@@ -448,9 +448,7 @@ namespace GelMPM
       ++next_id;
     };
 
-    double h_min = grid.cell_size(0);
-    for (unsigned int d = 1; d < dim; ++d)
-      h_min = std::min(h_min, grid.cell_size(d));
+    const double h_min = grid.smallest_cell_size();
 
     // In an axisymmetric scene every measure is that of the revolved body: 2 pi R times the
     // meridian plane's. Surface points closer to the axis than on_axis_tolerance h lie on it

@@ -398,6 +398,17 @@ namespace GelMPM
 
 
   template <int dim>
+  double
+  BackgroundGrid<dim>::smallest_cell_size() const
+  {
+    double h = cell_size(0);
+    for (unsigned int d = 1; d < dim; ++d)
+      h = std::min(h, cell_size(d));
+    return h;
+  }
+
+
+  template <int dim>
   bool
   BackgroundGrid<dim>::contains(const dealii::Point<dim> &p) const
   {

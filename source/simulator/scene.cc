@@ -202,10 +202,7 @@ namespace GelMPM
   {
     // Far below any gap a scene means, far above the round-off of a point placed on the
     // obstacle's surface (an obstacle that starts touching the body, gap 0).
-    double smallest_cell = grid.cell_size(0);
-    for (unsigned int d = 1; d < dim; ++d)
-      smallest_cell = std::min(smallest_cell, grid.cell_size(d));
-    const double tolerance = 1e-6 * smallest_cell;
+    const double tolerance = 1e-6 * grid.smallest_cell_size();
     for (auto &obstacle : obstacles)
       {
         obstacle.check_motion(times);

@@ -93,9 +93,7 @@ namespace GelMPM
   std::string
   Simulator<dim>::jump_hint(const double t) const
   {
-    double h = scene.grid.cell_size(0);
-    for (unsigned int d = 1; d < dim; ++d)
-      h = std::min(h, scene.grid.cell_size(d));
+    const double h                   = scene.grid.smallest_cell_size();
     const double cell_diffusion_time = std::pow(h / time_stepping.characteristic_length, 2);
     if (boundary_jump.empty() || !(t < cell_diffusion_time))
       return "";

@@ -26,16 +26,6 @@ namespace GelMPM
       return "xyz"[d];
     }
 
-    template <int dim>
-    double
-    smallest_cell(const BackgroundGrid<dim> &grid)
-    {
-      double h = grid.cell_size(0);
-      for (unsigned int d = 1; d < dim; ++d)
-        h = std::min(h, grid.cell_size(d));
-      return h;
-    }
-
     /** "x = 0 (on the grid's side)", "y = 0.05 (0.8 cells from the grid's side)". */
     template <int dim>
     std::string
@@ -201,7 +191,7 @@ namespace GelMPM
                        const unsigned int              degree,
                        const bool                      even_cells)
   {
-    const double             tolerance = flatness_in_cells * smallest_cell(grid);
+    const double             tolerance = flatness_in_cells * grid.smallest_cell_size();
     std::ostringstream       notes;
     std::vector<RollerPlane> within_cells;
     for (const auto &plane : planes)
@@ -217,8 +207,8 @@ namespace GelMPM
                      "inner wall) is held with it. If the piece is a plane of symmetry, select it "
                      "by its position as well, e.g. '"
                   << x << (plane.side < 0 ? " < " : " > ")
-                  << (plane.side < 0 ? plane.lowest + 1e-3 * smallest_cell(grid)
-                                     : plane.highest - 1e-3 * smallest_cell(grid))
+                  << (plane.side < 0 ? plane.lowest + 1e-3 * grid.smallest_cell_size()
+                                     : plane.highest - 1e-3 * grid.smallest_cell_size())
                   << " && n" << x << (plane.side < 0 ? " < -0.99" : " > 0.99") << "'\n";
             continue;
           }
@@ -248,7 +238,7 @@ namespace GelMPM
                         const BackgroundGrid<dim>      &grid,
                         const unsigned int              degree)
   {
-    const double             tolerance = flatness_in_cells * smallest_cell(grid);
+    const double             tolerance = flatness_in_cells * grid.smallest_cell_size();
     std::vector<RollerPlane> near;
     for (const auto &plane : planes)
       if (plane.flat(tolerance) && cells_beyond(plane, grid) < degree + 1 - flatness_in_cells)

@@ -80,6 +80,10 @@ namespace GelMPM
     double
     cell_size(const unsigned int d) const;
 
+    /** The smallest of the base grid's cell sizes over the directions. */
+    double
+    smallest_cell_size() const;
+
     /** Throw InputError if @p cells (per direction) cannot fit in the machine's memory. */
     void
     check_memory(const std::vector<double> &cells) const;
