@@ -2,6 +2,7 @@
 #include <gelmpm/assembly/mixed_system.h>
 #include <gelmpm/core/collective.h>
 #include <gelmpm/core/format_point.h>
+#include <gelmpm/core/serial_blas.h>
 
 #include <deal.II/base/work_stream.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -373,6 +374,7 @@ namespace GelMPM
     std::vector<unsigned int> block_indices = assembly_order();
     bool                      failed        = false;
     std::string               failure;
+    const SerialBlasScope     serial_blas;
     dealii::WorkStream::run(
       block_indices.begin(),
       block_indices.end(),
