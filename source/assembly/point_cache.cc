@@ -203,8 +203,10 @@ namespace GelMPM
           " at x = " + format_point(r.x) + " (X_0 = " + format_point(r.X0) + ")" +
           (r.kind == PointKind::volume
              ? std::string()
-             : ": a surface point leaves the range where the surface folds, its points pressed "
-               "together along it as where a crease closes (doc/own_scenes.md, section 7)"));
+             : ": a surface point's own state (used for its normal and mobility only) leaves the "
+               "range where the surface folds, its points pressed together along it as where a "
+               "crease closes, and on a refined grid where the surface crosses cut leaf cells "
+               "(doc/own_scenes.md, section 7)"));
       }
     // Surface points on the axis of an axisymmetric scene have no area (2 pi R = 0).
     r.assembled = ((r.kind == PointKind::volume) || (r.piece >= 0)) &&
