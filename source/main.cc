@@ -11,6 +11,7 @@
  */
 #include <gelmpm/core/input_error.h>
 #include <gelmpm/core/parameters.h>
+#include <gelmpm/core/serial_blas.h>
 #include <gelmpm/core/stop_request.h>
 #include <gelmpm/core/units.h>
 #include <gelmpm/simulator/scene_structure.h>
@@ -134,6 +135,7 @@ main(int argc, char **argv)
   dealii::deal_II_exceptions::disable_abort_on_exception();
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, dealii::numbers::invalid_unsigned_int);
   GelMPM::install_stop_handlers();
+  GelMPM::SerialBlasScope::use_one_thread_unless_set();
   try
     {
       const auto cl = GelMPM::CommandLine::parse(argc, argv);

@@ -1,5 +1,6 @@
 #include <gelmpm/core/serial_blas.h>
 
+#include <cstdlib>
 #include <dlfcn.h>
 
 namespace GelMPM
@@ -54,6 +55,19 @@ namespace GelMPM
   SerialBlasScope::controls_threads()
   {
     return controls().set != nullptr;
+  }
+
+
+  bool
+  SerialBlasScope::use_one_thread_unless_set()
+  {
+    for (const char *name : {"OPENBLAS_NUM_THREADS", "GOTO_NUM_THREADS", "OMP_NUM_THREADS"})
+      if (std::getenv(name) != nullptr)
+        return false;
+    if (!controls_threads())
+      return false;
+    controls().set(1);
+    return true;
   }
 
 

@@ -4,13 +4,15 @@
 // openblas_set_num_threads (the tests run with OPENBLAS_NUM_THREADS=1), so that the scope has
 // something to change and to restore; nested scopes restore in order. With another BLAS the scope
 // does nothing and the count reads 1 throughout. A product computed inside the scope equals the
-// one outside (dgemm through deal.II's FullMatrix::mmult, which calls the BLAS).
+// one outside (dgemm through deal.II's FullMatrix::mmult, which calls the BLAS). The run's
+// default (use_one_thread_unless_set) leaves a count the environment sets and else sets one.
 #include <gelmpm/core/serial_blas.h>
 
 #include <deal.II/lac/full_matrix.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <dlfcn.h>
 #include <iostream>
 
@@ -52,6 +54,21 @@ main()
       difference = std::max(difference, std::abs(inside(i, j) - outside(i, j)));
   // The same kernel on fewer threads sums in the same order per entry; allow round-off.
   std::cout << "the product inside equals the one outside to 1e-14: " << (difference < 1e-14)
+            << '\n';
+
+  // The run's default: one thread unless the environment sets the count.
+  if (SerialBlasScope::controls_threads() && set != nullptr)
+    set(2);
+  setenv("OMP_NUM_THREADS", "2", 1);
+  unsetenv("OPENBLAS_NUM_THREADS");
+  unsetenv("GOTO_NUM_THREADS");
+  const bool with_environment = SerialBlasScope::use_one_thread_unless_set();
+  std::cout << "a count set in the environment is left: "
+            << (!with_environment && SerialBlasScope::threads() == before) << '\n';
+  unsetenv("OMP_NUM_THREADS");
+  const bool without = SerialBlasScope::use_one_thread_unless_set();
+  std::cout << "without one, one thread: "
+            << (without == SerialBlasScope::controls_threads() && SerialBlasScope::threads() == 1)
             << '\n';
   return 0;
 }

@@ -33,6 +33,16 @@ namespace GelMPM
     static int
     threads();
 
+    /**
+     * One BLAS thread for the whole run unless the environment sets the count
+     * (OPENBLAS_NUM_THREADS, GOTO_NUM_THREADS, OMP_NUM_THREADS); returns whether it was set.
+     * deal.II's threads already use the cores, and MUMPS's BLAS threads next to them (spinning
+     * between calls) slowed the free-swelling cube twofold (doc/performance.md, "The BLAS on one
+     * thread").
+     */
+    static bool
+    use_one_thread_unless_set();
+
   private:
     int previous = 0;
   };
