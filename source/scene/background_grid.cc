@@ -242,6 +242,17 @@ namespace GelMPM
 
 
   template <int dim>
+  std::array<unsigned int, dim>
+  BackgroundGrid<dim>::pair_cells(const unsigned int level) const
+  {
+    std::array<unsigned int, dim> n;
+    for (unsigned int d = 0; d < dim; ++d)
+      n[d] = n_cells[d] / 2 * (1u << level);
+    return n;
+  }
+
+
+  template <int dim>
   void
   BackgroundGrid<dim>::mark_region()
   {
@@ -251,13 +262,10 @@ namespace GelMPM
       n_samples *= region_samples;
     for (unsigned int l = 0; l < refinement_levels; ++l)
       {
-        std::array<unsigned int, dim> n;
-        unsigned int                  n_total = 1;
+        const auto   n       = pair_cells(l);
+        unsigned int n_total = 1;
         for (unsigned int d = 0; d < dim; ++d)
-          {
-            n[d] = n_cells[d] / 2 * (1u << l);
-            n_total *= n[d];
-          }
+          n_total *= n[d];
         region_marked[l].assign(n_total, false);
         for (unsigned int c = 0; c < n_total; ++c)
           {
@@ -312,13 +320,10 @@ namespace GelMPM
     std::vector<std::vector<unsigned int>> refined(refinement_levels);
     for (unsigned int l = 0; l < refinement_levels; ++l)
       {
-        std::array<unsigned int, dim> n;
-        unsigned int                  n_total = 1;
+        const auto   n       = pair_cells(l);
+        unsigned int n_total = 1;
         for (unsigned int d = 0; d < dim; ++d)
-          {
-            n[d] = n_cells[d] / 2 * (1u << l);
-            n_total *= n[d];
-          }
+          n_total *= n[d];
         for (unsigned int c = 0; c < n_total; ++c)
           if (pair_cell_in_box(l, c) || (!region_marked.empty() && region_marked[l][c]))
             refined[l].push_back(c);

@@ -65,6 +65,10 @@ namespace GelMPM
     std::vector<std::vector<unsigned int>>
     refined_pair_cells() const;
 
+    /** The cells per direction of the grid of pairs of cells at refinement level @p level. */
+    std::array<unsigned int, dim>
+    pair_cells(const unsigned int level) const;
+
     /** The level of the leaf cell at @p x: how many times the grid is refined there. */
     unsigned int
     refinement_level(const dealii::Point<dim> &x) const;
