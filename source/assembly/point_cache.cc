@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 
 namespace GelMPM
@@ -273,29 +274,50 @@ namespace GelMPM
     // without volume points does on a uniform grid (DiscreteSpaces::active_u_cell_containing).
     // First the leaf half a leaf inwards along the normal: the leaves beside it are often cut
     // slivers too, whose polynomial extrapolates the field poorly (a sideways neighbour made
-    // the film's dip points lose 8 % of J per step).
-    const auto &space     = spaces.u_space();
-    const auto &hierarchy = spaces.u_hierarchy();
-    {
-      const unsigned int home_level = hierarchy.leaf_cell(u.leaf_of_piece(cell, piece)).level;
-      const double       step       = 0.5 * hierarchy.level_space(home_level).cell_size(0);
-      dealii::Point<dim> inward     = r.x;
-      for (unsigned int d = 0; d < dim; ++d)
+    // the film's dip points lose 8-12 % of J per step).
+    if (const auto inward = material_leaf_inwards(r, cell, piece))
+      return *inward;
+    return nearest_material_leaf(r, cell, piece);
+  }
+
+
+  template <int dim>
+  std::optional<std::pair<unsigned int, unsigned int>>
+  PointCache<dim>::material_leaf_inwards(const PointRecord<dim> &r,
+                                         const unsigned int      cell,
+                                         const unsigned int      piece) const
+  {
+    const auto        &u          = spaces.u();
+    const auto        &space      = spaces.u_space();
+    const auto        &hierarchy  = spaces.u_hierarchy();
+    const unsigned int home_level = hierarchy.leaf_cell(u.leaf_of_piece(cell, piece)).level;
+    const double       step       = 0.5 * hierarchy.level_space(home_level).cell_size(0);
+    dealii::Point<dim> inward     = r.x;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
         inward[d] -= step * r.normal[d];
-      bool inside = true;
-      for (unsigned int d = 0; d < dim; ++d)
-        inside &= inward[d] >= space.basis_1d(d).x_min() && inward[d] <= space.basis_1d(d).x_max();
-      if (inside)
-        {
-          const unsigned int c = space.cell_containing(inward);
-          if (classification_[c])
-            {
-              const unsigned int k = u.piece_containing(inward, c);
-              if (leaf_classification_[u.leaf_of_piece(c, k)])
-                return {c, k};
-            }
-        }
-    }
+        if (inward[d] < space.basis_1d(d).x_min() || inward[d] > space.basis_1d(d).x_max())
+          return std::nullopt;
+      }
+    const unsigned int c = space.cell_containing(inward);
+    if (!classification_[c])
+      return std::nullopt;
+    const unsigned int k = u.piece_containing(inward, c);
+    if (!leaf_classification_[u.leaf_of_piece(c, k)])
+      return std::nullopt;
+    return std::make_pair(c, k);
+  }
+
+
+  template <int dim>
+  std::pair<unsigned int, unsigned int>
+  PointCache<dim>::nearest_material_leaf(const PointRecord<dim> &r,
+                                         const unsigned int      cell,
+                                         const unsigned int      piece) const
+  {
+    const auto  &u         = spaces.u();
+    const auto  &space     = spaces.u_space();
+    const auto  &hierarchy = spaces.u_hierarchy();
     const auto   home      = space.cell_multi_index(cell);
     double       best_gap  = std::numeric_limits<double>::max();
     unsigned int best_cell = cell, best_piece = piece;

@@ -15,6 +15,7 @@
 #include <deal.II/lac/vector.h>
 #include <deal.II/particles/particle_handler.h>
 
+#include <optional>
 #include <vector>
 
 namespace GelMPM
@@ -299,6 +300,24 @@ namespace GelMPM
      */
     std::pair<unsigned int, unsigned int>
     cell_and_piece_of_point(const PointRecord<dim> &r) const;
+
+    /**
+     * The cell and piece of the leaf half a leaf inwards from surface point @p r (in piece
+     * @p piece of @p cell) along its normal, if that leaf holds volume points.
+     */
+    std::optional<std::pair<unsigned int, unsigned int>>
+    material_leaf_inwards(const PointRecord<dim> &r,
+                          const unsigned int      cell,
+                          const unsigned int      piece) const;
+
+    /**
+     * The cell and piece of the leaf with volume points nearest to @p r among the pieces of
+     * @p cell and its neighbours; @p cell and @p piece if there is none.
+     */
+    std::pair<unsigned int, unsigned int>
+    nearest_material_leaf(const PointRecord<dim> &r,
+                          const unsigned int      cell,
+                          const unsigned int      piece) const;
 
     /**
      * Order the records @p unsorted (of the particles @p its) by their @p cells and @p pieces
