@@ -517,7 +517,12 @@ namespace GelMPM
             << 100. * current_time() / end_time << "%";
         const double remaining = progress->remaining();
         if (remaining >= 0. && !loop->control().finished())
-          log << ", end in ~" << format_duration(remaining);
+          {
+            log << ", end in ~" << format_duration(remaining);
+            // The assumption the estimate stands on, so that the reader can judge it.
+            if (progress->assumed_rate() > 0.)
+              log << " at dt/t " << std::setprecision(2) << 100. * progress->assumed_rate() << "%";
+          }
         log << ")";
       }
     log << std::setprecision(6) << std::endl;

@@ -53,14 +53,26 @@ namespace GelMPM
   {
     if (seconds_per_step < 0.)
       return -1.;
+    // Without an error tolerance nothing but the growth factor and the caps bounds the step.
+    const double rate = assumed_rate();
+    return seconds_per_step *
+           remaining_steps(settings,
+                           time,
+                           last_dt,
+                           settings.end_time,
+                           rate > 0. ? rate : std::numeric_limits<double>::infinity());
+  }
+
+
+  double
+  RunProgress::assumed_rate() const
+  {
+    if (recent_rates.empty() || (settings.tolerance <= 0. && settings.displacement_tolerance <= 0.))
+      return 0.;
     // With an error tolerance the step tends to a share of the time: the largest of the last
-    // steps (a step cut short for a contact or an onset grows back to it); without, nothing but
-    // the growth factor and the caps bounds it.
-    double rate = std::numeric_limits<double>::infinity();
-    if (settings.tolerance > 0. || settings.displacement_tolerance > 0.)
-      rate = std::min(*std::max_element(recent_rates.begin(), recent_rates.end()),
-                      settings.growth_factor - 1.);
-    return seconds_per_step * remaining_steps(settings, time, last_dt, settings.end_time, rate);
+    // steps (a step cut short for a contact or an onset grows back to it).
+    return std::min(*std::max_element(recent_rates.begin(), recent_rates.end()),
+                    settings.growth_factor - 1.);
   }
 
 

@@ -9,7 +9,9 @@
 // 2. the estimate is the average wall time per step times that count, the newest step weighing
 //    1/4 (synthetic clock times), r being the largest dt/t of the last steps;
 // 3. nothing is estimated before a step, and nothing remains at the end;
-// 4. durations read as the log writes them.
+// 4. durations read as the log writes them;
+// 5. the dt/t the estimate assumes (printed beside it): none without an error tolerance, at most
+//    'Growth factor' - 1 with one.
 #include <gelmpm/solvers/run_progress.h>
 
 #include <chrono>
@@ -96,10 +98,27 @@ main()
     const double n2 = RunProgress::remaining_steps(settings, 1.011, 0.011, 50., 0.1);
     std::cout << "then a short one of 6 s: 0.75 * 2 + 0.25 * 6 = 3 s per step, r = 0.1: "
               << (std::abs(progress.remaining() - 3. * n2) < 1e-9 * n2) << '\n';
+    std::cout << "the estimate's assumption, the largest recent dt/t: "
+              << (std::abs(progress.assumed_rate() - 0.1) < 1e-12) << '\n';
     std::cout << "wall time counts from the start of the run: "
               << (std::abs(progress.elapsed(start + std::chrono::seconds(9)) - 9.) < 1e-12) << '\n';
     progress.step_accepted(50., 1., start + std::chrono::seconds(10));
     std::cout << "nothing remains at the end: " << (progress.remaining() == 0.) << '\n';
+  }
+
+  // 5. Without an error tolerance no dt/t is assumed; with one it is at most 'Growth factor' - 1.
+  {
+    using Clock = RunProgress::Clock;
+    const Clock::time_point start;
+    settings.tolerance = 0.;
+    RunProgress fixed(settings, start);
+    fixed.step_accepted(1., 0.5, start + std::chrono::seconds(1));
+    std::cout << "no dt/t assumed without a tolerance: " << (fixed.assumed_rate() == 0.) << '\n';
+    settings.tolerance = 1e-2;
+    RunProgress growing(settings, start);
+    growing.step_accepted(1., 0.5, start + std::chrono::seconds(1));
+    std::cout << "dt/t 0.5 assumed as the growth factor's 0.25: "
+              << (std::abs(growing.assumed_rate() - 0.25) < 1e-12) << '\n';
   }
 
   // 4.

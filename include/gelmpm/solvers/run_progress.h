@@ -57,6 +57,16 @@ namespace GelMPM
     remaining() const;
 
     /**
+     * The share of the time by which remaining() assumes the steps to go on: dt/t, the largest
+     * of the last accepted steps (at most 'Growth factor' - 1); zero without an error tolerance,
+     * where the growth factor and the caps alone set the steps. The log prints it beside the
+     * estimate because the estimate is only as good as this assumption: in a diffusion run the
+     * error-controlled dt/t falls and rises again by factors of 10 and more (doc/output.md).
+     */
+    double
+    assumed_rate() const;
+
+    /**
      * The number of steps from @p t to @p end_time, the last step having been @p dt: each step
      * grows by 'Growth factor' over the last, up to @p rate times the time (infinity: no such
      * bound) and up to the cap in force ('Step caps').
