@@ -6,6 +6,10 @@
 // Asserted, as for the uniform grid (mpm_vs_sphere_reference):
 // - |r_MPM - r_ref| / R_0 <= 0.5 % of the equilibrium change (r_eq - R_0)/R_0 at every step with
 //   t >= 1 tau_d;
+// with 'Time stepping/Tolerance = 2e-3' instead of the scene's 1e-3: from about 3 tau_d the
+// points' integration noise holds the steps of 1e-3 to 0.01-0.1 tau_d (384 steps, 17 s; the
+// uniform grid's too, 327 steps), 2e-3 takes 119 steps with the largest error 0.17 % (1e-3:
+// 0.085 %; 1e-2: 0.75 %, which fails).
 #include <deal.II/base/mpi.h>
 
 #include <cmath>
@@ -26,6 +30,7 @@ main(int argc, char **argv)
                             "Time stepping/End time=10",
                             "Background grid/Refinement boxes=0.1875, -0.1875 : 1.125, 1.0625",
                             "Background grid/Refinement levels=1",
+                            "Time stepping/Tolerance=2e-3",
                             "Output/Write particles=false"});
   std::cout << std::boolalpha << "run completed: " << (run.status == 0) << std::endl;
 
