@@ -521,7 +521,7 @@ namespace GelMPM
             log << ", end in ~" << format_duration(remaining);
             // The assumption the estimate stands on, so that the reader can judge it.
             if (progress->assumed_rate() > 0.)
-              log << " at dt/t " << std::setprecision(2) << 100. * progress->assumed_rate() << "%";
+              log << " at dt/t " << format_percent(progress->assumed_rate());
           }
         log << ")";
       }

@@ -146,4 +146,21 @@ namespace GelMPM
       }
     return out.str();
   }
+
+
+  std::string
+  format_percent(const double share)
+  {
+    const double       percent = 100. * share;
+    std::ostringstream out;
+    // Two significant digits without an exponent down to 10^-4 %: a crawl reads as one.
+    const int decimals =
+      percent > 0. ? std::max(0, 1 - static_cast<int>(std::floor(std::log10(percent)))) : 0;
+    if (decimals > 6)
+      out << std::setprecision(1) << std::scientific << percent;
+    else
+      out << std::fixed << std::setprecision(decimals) << percent;
+    out << "%";
+    return out.str();
+  }
 } // namespace GelMPM

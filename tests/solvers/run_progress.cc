@@ -9,7 +9,7 @@
 // 2. the estimate is the average wall time per step times that count, the newest step weighing
 //    1/4 (synthetic clock times), r being the largest dt/t of the last steps;
 // 3. nothing is estimated before a step, and nothing remains at the end;
-// 4. durations read as the log writes them;
+// 4. durations and shares read as the log writes them;
 // 5. the dt/t the estimate assumes (printed beside it): none without an error tolerance, at most
 //    'Growth factor' - 1 with one.
 #include <gelmpm/solvers/run_progress.h>
@@ -122,6 +122,9 @@ main()
   }
 
   // 4.
+  std::cout << GelMPM::format_percent(1.) << " | " << GelMPM::format_percent(0.73) << " | "
+            << GelMPM::format_percent(0.0137) << " | " << GelMPM::format_percent(2.2e-5) << " | "
+            << GelMPM::format_percent(3e-9) << '\n';
   std::cout << GelMPM::format_duration(8.44) << " | " << GelMPM::format_duration(42.4) << " | "
             << GelMPM::format_duration(187.) << " | " << GelMPM::format_duration(7500.) << '\n';
   return 0;

@@ -91,6 +91,10 @@ namespace GelMPM
   /** A wall time for the log: "8.4 s", "3 min 07 s", "2 h 05 min". */
   std::string
   format_duration(const double seconds);
+
+  /** A share for the log, in percent with two significant digits: "100%", "1.4%", "0.0022%". */
+  std::string
+  format_percent(const double share);
 } // namespace GelMPM
 
 #endif
