@@ -9,7 +9,8 @@ table: estimate / actual remaining (1 is exact, 2 twice too long).
 import re
 import sys
 
-LINE = re.compile(r"step\s+(\d+)\s+t/tau_d =.*wall (.+?) \(([\d.e+-]+)%(?:, end in ~(.+?))?\)")
+LINE = re.compile(r"step\s+(\d+)\s+t/tau_d =.*wall (.+?) \(([\d.e+-]+)%"
+                  r"(?:, end in ~(.+?)(?: at dt/t [^)]*)?)?\)")
 
 
 def seconds(text):
