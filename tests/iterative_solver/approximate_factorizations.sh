@@ -23,10 +23,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/../mpi/common.sh"
 run_value() {
   local name="$1" scene="$2" value="$3" entry="$4"
   shift 4
-  "$gelmpm" "$source_dir/prm/$scene" --set "Output/Directory=${name}_${value}" \
-    --set "Output/Write particles=false" --set "Linear solver/Solver=MUMPS" \
-    --set "Linear solver/${entry}=${value}" "$@" > "${name}_${value}.log" 2>&1
-  check $? "$name with $entry = $value finished ($(grep -m1 'reached\|error\|failed' "${name}_${value}.log"))"
+  run_with_mumps "${name}_${value}" "$scene" --set "Linear solver/${entry}=${value}" "$@"
 }
 # agree NAME DIRECTORY_A DIRECTORY_B WHAT: their statistics agree.
 agree() {
@@ -40,11 +37,6 @@ run() {
   run_value "$name" "$scene" "$a" "$entry" "$@"
   run_value "$name" "$scene" "$b" "$entry" "$@"
   agree "$name" "${name}_${a}" "${name}_${b}" "$entry = $a and $b"
-}
-fixed_steps() { # fixed_steps DT STEPS: the entries for STEPS steps of DT, in ${steps[@]}
-  steps=(--set "Time stepping/Initial step=$1" --set "Time stepping/Growth factor=1"
-         --set "Time stepping/Step caps=" --set "Time stepping/Stop at times="
-         --set "Time stepping/End time=$(awk -v d="$1" -v n="$2" 'BEGIN { print d * n }')")
 }
 
 run swelling constrained_swelling.prm double single Precision \

@@ -33,11 +33,6 @@ run() {
     > "${name}_compare.log"
   check $? "$name: Krylov and MUMPS statistics agree ($(tail -1 "${name}_compare.log"))"
 }
-fixed_steps() { # fixed_steps DT STEPS: the entries for STEPS steps of DT, in ${steps[@]}
-  steps=(--set "Time stepping/Initial step=$1" --set "Time stepping/Growth factor=1"
-         --set "Time stepping/Step caps=" --set "Time stepping/Stop at times="
-         --set "Time stepping/End time=$(awk -v d="$1" -v n="$2" 'BEGIN { print d * n }')")
-}
 
 run swelling constrained_swelling.prm --set "Material points/Points per cell=4" \
   --set "Time stepping/End time=0.1" \

@@ -14,14 +14,8 @@
 # - both again with single-precision factors, whose solves with a kept factorisation are refined
 #   only to a tenth of the contraction: the same statistics.
 source "$(dirname "${BASH_SOURCE[0]}")/../mpi/common.sh"
-# run NAME SCENE [--set ...]: the scene into NAME/, its log NAME.log.
-run() {
-  local name="$1" scene="$2"
-  shift 2
-  "$gelmpm" "$source_dir/prm/$scene" --set "Output/Directory=$name" \
-    --set "Output/Write particles=false" --set "Linear solver/Solver=MUMPS" "$@" > "$name.log" 2>&1
-  check $? "$name finished ($(grep -m1 'reached\|error\|failed' "$name.log"))"
-}
+# run NAME SCENE [--set ...]: the scene into NAME/, its log NAME.log (tests/mpi/common.sh).
+run() { run_with_mumps "$@"; }
 # same A B: B's statistics are A's to 1e-6 (the Newton iterations may differ by up to 10).
 same() {
   "$compare" --relative 1e-6 --newton 10 "$1/statistics.csv" "$2/statistics.csv" > "$2_compare.log"

@@ -19,10 +19,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/../mpi/common.sh"
 run() {
   local name="$1" scene="$2" from="$3"
   shift 3
-  "$gelmpm" "$source_dir/prm/$scene" --set "Output/Directory=${name}_${from}" \
-    --set "Output/Write particles=false" --set "Linear solver/Solver=MUMPS" \
-    --set "Stability/Signature from=${from//_/ }" "$@" > "${name}_${from}.log" 2>&1
-  check $? "${name}_${from} finished ($(grep -m1 '^gelmpm: \(reached\|error\)\|onset' "${name}_${from}.log"))"
+  run_with_mumps "${name}_${from}" "$scene" --set "Stability/Signature from=${from//_/ }" "$@"
 }
 # both NAME SCENE [--set ...]: the scene with either source; statistics compared.
 both() {

@@ -18,6 +18,23 @@ run_both() {
   check $? "the run on two ranks failed: $(tail -3 two.log)"
 }
 
+# run_with_mumps NAME SCENE [--set ...]: prm/SCENE into NAME/ (its log NAME.log) with MUMPS and no
+# particle files; checked to finish.
+run_with_mumps() {
+  local name="$1" scene="$2"
+  shift 2
+  "$gelmpm" "$source_dir/prm/$scene" --set "Output/Directory=$name" \
+    --set "Output/Write particles=false" --set "Linear solver/Solver=MUMPS" "$@" > "$name.log" 2>&1
+  check $? "$name finished ($(grep -m1 'reached\|error\|failed\|onset' "$name.log"))"
+}
+
+# fixed_steps DT STEPS: the entries for STEPS steps of DT, in ${steps[@]}.
+fixed_steps() {
+  steps=(--set "Time stepping/Initial step=$1" --set "Time stepping/Growth factor=1"
+         --set "Time stepping/Step caps=" --set "Time stepping/Stop at times="
+         --set "Time stepping/End time=$(awk -v d="$1" -v n="$2" 'BEGIN { print d * n }')")
+}
+
 # The statistics agree (the tool prints its judgement per column).
 compare_statistics() {
   "$compare" "$@" one/statistics.csv two/statistics.csv
