@@ -113,8 +113,7 @@ namespace GelMPM
       inexact_extrapolation_tolerated = true;
     if (grid.refined())
       {
-        if (grid.refinement_boxes.empty())
-          refinement_entry_ = "Background grid/Refinement region";
+        refinement_entry_ = grid.refinement_entry();
         build_hierarchies(grid);
       }
   }
@@ -151,6 +150,18 @@ namespace GelMPM
                                                         grid.upper,
                                                         grid.n_cells,
                                                         u_cells);
+  }
+
+
+  template <int dim>
+  void
+  DiscreteSpaces<dim>::rebuild_hierarchies(const BackgroundGrid<dim> &grid)
+  {
+    build_hierarchies(grid);
+    // The extended spaces belong to the old hierarchies: the next reinit() builds them anew.
+    u_.reset();
+    mu_.reset();
+    u_leaf_has_material_.clear();
   }
 
 
@@ -253,11 +264,15 @@ namespace GelMPM
                          std::string("refines a region that the extended B-splines cannot "
                                      "extrapolate into (") +
                            e.what() + ")",
-                         "let a box (or 'Refinement region') that reaches the body's boundary "
-                         "extend at least 2(q+1) "
-                         "cells of its finest level into the body (also as it deforms; the "
-                         "chemical potential's cells are twice as large), or set "
-                         "'Discretisation/Extended B-splines = false'");
+                         refinement_entry_ == "Background grid/Refinement band"
+                           ? "widen the band so that it reaches at least 2(q+1) cells of its "
+                             "finest level into the body (the chemical potential's cells are "
+                             "twice as large), or set 'Discretisation/Extended B-splines = false'"
+                           : "let a box (or 'Refinement region') that reaches the body's "
+                             "boundary extend at least 2(q+1) cells of its finest level into "
+                             "the body (also as it deforms; the chemical potential's cells are "
+                             "twice as large), or set 'Discretisation/Extended B-splines = "
+                             "false'");
       }
     return true;
   }

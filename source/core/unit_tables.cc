@@ -25,6 +25,8 @@ namespace GelMPM
         {"Background grid/Lower corner", Q::length},
         {"Background grid/Upper corner", Q::length},
         {"Background grid/Refinement boxes", Q::length},
+        {"Background grid/Refinement band", Q::length},
+        {"Background grid/Refinement band pieces", Q::none},
         {"Background grid/Refinement levels", Q::none},
         {"Background grid/Refinement region", Q::none, Form::level_set},
         {"Boundary conditions/Pieces", Q::none},

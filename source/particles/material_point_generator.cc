@@ -5,6 +5,7 @@
 #include <gelmpm/particles/material_point_generator.h>
 #include <gelmpm/particles/material_state.h>
 #include <gelmpm/particles/point_location.h>
+#include <gelmpm/particles/point_refinement.h>
 #include <gelmpm/scene/expression.h>
 
 #include <deal.II/fe/mapping_q1.h>
@@ -36,89 +37,34 @@ namespace GelMPM
                        const unsigned int         points_per_cell,
                        const Insert              &insert)
     {
-      const unsigned int parts      = 1u << level;
-      unsigned int       n_children = 1;
+      std::array<double, dim> sides;
       for (unsigned int d = 0; d < dim; ++d)
-        n_children *= parts;
-      const double child_volume = volume / n_children;
-      for (unsigned int k = 0; k < n_children; ++k)
-        {
-          dealii::Point<dim> child;
-          unsigned int       rest = k;
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              const double sub = grid.cell_size(d) / points_per_cell;
-              child[d]         = x[d] - 0.5 * sub + ((rest % parts) + 0.5) * sub / parts;
-              rest /= parts;
-            }
-          insert(child, child_volume, "");
-        }
-    }
-
-
-    /**
-     * A unit tangent of the facet with unit normal @p n in 3D: the coordinate axis most nearly
-     * in the facet, projected onto it (the first such axis on a tie), so that the children of
-     * a box face's element lie along the face's own axes.
-     */
-    inline dealii::Tensor<1, 3>
-    facet_tangent(const dealii::Tensor<1, 3> &n)
-    {
-      unsigned int axis = 0;
-      for (unsigned int d = 1; d < 3; ++d)
-        if (std::abs(n[d]) < std::abs(n[axis]))
-          axis = d;
-      dealii::Tensor<1, 3> t;
-      t[axis] = 1.;
-      t -= (t * n) * n;
-      return t / t.norm();
+        sides[d] = grid.cell_size(d) / points_per_cell;
+      const auto   offsets      = volume_point_offsets<dim>(sides, 1u << level);
+      const double child_volume = volume / offsets.size();
+      for (const auto &offset : offsets)
+        insert(x + offset, child_volume, "");
     }
 
 
     /**
      * The children of the surface element @p e in a cell refined into @p parts per direction,
-     * appended to @p split, each with the parent's normal and N_0 A_0 divided by parts^(dim-1):
-     * - 2D: parts along the tangent, on the parent's chord;
-     * - 3D: parts x parts over the facet, taken as the square of the parent's area (side
-     *   sqrt(A_0)) in its tangent plane, centred on the parent, with sides along
-     *   facet_tangent() and n x that tangent.
-     * The division by a power of two is exact, so the children's N_0 A_0 sum to the parent's
-     * to round-off (bit for bit for two children). On a curved boundary they lie in the parent's
-     * chord or tangent plane, within s^2 kappa / 8 of the surface (s the parent's side, kappa the
-     * curvature).
+     * appended to @p split, each with the parent's normal and N_0 A_0 divided by parts^(dim-1),
+     * at surface_element_offsets(). The division by a power of two is exact, so the children's
+     * N_0 A_0 sum to the parent's to round-off (bit for bit for two children). On a curved
+     * boundary they lie in the parent's chord or tangent plane, within s^2 kappa / 8 of the
+     * surface (s the parent's side, kappa the curvature).
      */
     template <int dim, typename Element>
     void
     split_surface_element(const Element &e, const unsigned int parts, std::vector<Element> &split)
     {
-      const double                                area = e.normal_area.norm();
-      std::array<dealii::Tensor<1, dim>, dim - 1> tangents;
-      double                                      side = area;
-      if constexpr (dim == 2)
+      const auto offsets = surface_element_offsets<dim>(e.normal_area, parts);
+      for (const auto &offset : offsets)
         {
-          tangents[0][0] = -e.normal_area[1] / area;
-          tangents[0][1] = e.normal_area[0] / area;
-        }
-      else
-        {
-          const dealii::Tensor<1, 3> n = e.normal_area / area;
-          tangents[0]                  = facet_tangent(n);
-          tangents[1]                  = dealii::cross_product_3d(n, tangents[0]);
-          side                         = std::sqrt(area);
-        }
-      unsigned int n_children = 1;
-      for (unsigned int d = 0; d + 1 < dim; ++d)
-        n_children *= parts;
-      for (unsigned int k = 0; k < n_children; ++k)
-        {
-          Element      child = e;
-          unsigned int rest  = k;
-          child.normal_area  = e.normal_area / static_cast<double>(n_children);
-          for (unsigned int d = 0; d + 1 < dim; ++d)
-            {
-              child.centre += ((rest % parts + 0.5) / parts - 0.5) * side * tangents[d];
-              rest /= parts;
-            }
+          Element child     = e;
+          child.normal_area = e.normal_area / static_cast<double>(offsets.size());
+          child.centre += offset;
           split.push_back(child);
         }
     }
@@ -128,23 +74,30 @@ namespace GelMPM
      * The surface elements @p elements of the uniform grid's spacing, those in a cell refined
      * l times split into 2^l per direction of the boundary (split_surface_element()), so that
      * the surface points per cell edge are the scene's at every level, as the volume points
-     * are.
+     * are. @p levels receives each element's level l.
      */
     template <int dim, typename Element>
     std::vector<Element>
-    split_surface_elements(const std::vector<Element> &elements, const BackgroundGrid<dim> &grid)
+    split_surface_elements(const std::vector<Element> &elements,
+                           const BackgroundGrid<dim>  &grid,
+                           std::vector<unsigned int>  &levels)
     {
+      levels.clear();
       if (!grid.refined())
-        return elements;
+        {
+          levels.assign(elements.size(), 0);
+          return elements;
+        }
       std::vector<Element> split;
       split.reserve(elements.size());
       for (const auto &e : elements)
         {
-          const unsigned int parts = 1u << grid.refinement_level(e.centre);
-          if (parts == 1)
+          const unsigned int level = grid.refinement_level(e.centre);
+          if (level == 0)
             split.push_back(e);
           else
-            split_surface_element<dim>(e, parts, split);
+            split_surface_element<dim>(e, 1u << level, split);
+          levels.resize(split.size(), level);
         }
       return split;
     }
@@ -457,11 +410,14 @@ namespace GelMPM
     const auto       revolution        = [&](const dealii::Point<dim> &x) {
       return grid.axisymmetric ? 2. * dealii::numbers::PI * x[0] : 1.;
     };
+    // A point of the uniform grid's spacing at level 0 until split (a mesh element's: never).
+    int        spacing_level = 0;
     const auto insert_volume_point =
       [&](const dealii::Point<dim> &x, const double volume, const std::string &group) {
         std::fill(properties.begin(), properties.end(), 0.);
-        properties[Layout::kind]      = static_cast<double>(PointKind::volume);
-        properties[Layout::piece]     = -1;
+        properties[Layout::kind]          = static_cast<double>(PointKind::volume);
+        properties[Layout::piece]         = -1;
+        properties[Layout::spacing_level] = spacing_level;
         properties[Layout::measure_0] = properties[Layout::measure_n] = revolution(x) * volume;
         const unsigned int region = regions.size() > 1 ? regions.region_of(x, group) : 0;
         ++volume_points_of_region[region];
@@ -474,6 +430,7 @@ namespace GelMPM
       // of a box body.
       for (const auto &e : body.volume_elements(points_per_cell, h_min / points_per_cell))
         {
+          spacing_level = -1;
           require(grid.contains(e.centre),
                   geometry.entry(),
                   "puts the body outside the background grid, e.g. at " + format_point(e.centre),
@@ -510,6 +467,7 @@ namespace GelMPM
               if (!body.inside(x))
                 continue;
               const unsigned int level = grid.refinement_level(x);
+              spacing_level            = level;
               if (level == 0)
                 insert_volume_point(x, sub_volume, "");
               else
@@ -548,8 +506,11 @@ namespace GelMPM
         return grid.axisymmetric && e.centre[0] <= on_axis_tolerance * h_min;
       };
       std::vector<unsigned int> count(boundary_conditions.n_pieces(), 0);
-      for (const auto &e : split_surface_elements(elements, grid))
+      std::vector<unsigned int> levels;
+      const auto                split = split_surface_elements(elements, grid, levels);
+      for (unsigned int k = 0; k < split.size(); ++k)
         {
+          const auto &e = split[k];
           require(!grid.axisymmetric || e.centre[0] >= -relative_position_tolerance * h_min,
                   geometry.entry(),
                   "puts material at R = x < 0 in an axisymmetric scene, e.g. at " +
@@ -575,8 +536,9 @@ namespace GelMPM
             }
           else
             properties[Layout::kind] = static_cast<double>(PointKind::neumann_neumann);
-          properties[Layout::piece]     = piece;
-          const double revolved_area    = revolution(e.centre) * area;
+          properties[Layout::piece]         = piece;
+          properties[Layout::spacing_level] = levels[k];
+          const double revolved_area        = revolution(e.centre) * area;
           properties[Layout::measure_0] = properties[Layout::measure_n] = revolved_area;
           for (unsigned int d = 0; d < dim; ++d)
             properties[Layout::normal_area_0 + d] = properties[Layout::normal_area_n + d] =

@@ -73,11 +73,29 @@ namespace GelMPM
                       "fixed for the run: a band must cover the room a moving surface sweeps. "
                       "Combined with the boxes: a cell is refined where either refines it. "
                       "Empty: none.");
+    prm.declare_entry("Refinement band",
+                      "0",
+                      Patterns::Double(0.),
+                      "Refine the grid within this distance of the body's current surface "
+                      "(its surface points, or those of 'Refinement band pieces'), marked anew "
+                      "at the start of every step, so that the refined cells follow a moving "
+                      "surface. Points that enter a finer leaf are split into 2^dim children per "
+                      "level (volume, solvent and N_0 A_0 conserved); points stay split where the "
+                      "band has moved on (doc/architecture.md, \"A band that follows the "
+                      "surface\"). The band must reach about 2(q+1) cells of its finest level "
+                      "into the body (the extension). Combined with the boxes and the region. "
+                      "A length in the scene's units; 0: none.");
+    prm.declare_entry("Refinement band pieces",
+                      "",
+                      Patterns::Anything(),
+                      "The boundary pieces ('Boundary conditions/Pieces', comma-separated) "
+                      "whose surface points 'Refinement band' follows, e.g. the bath side of a "
+                      "layer or an indented face. Empty: every surface point.");
     prm.declare_entry("Refinement levels",
                       "1",
                       Patterns::Integer(1, 4),
-                      "How many times the cells in 'Refinement boxes' and 'Refinement region' "
-                      "are halved.");
+                      "How many times the cells in 'Refinement boxes', 'Refinement region' and "
+                      "'Refinement band' are halved.");
     prm.leave_subsection();
   }
 
@@ -94,6 +112,8 @@ namespace GelMPM
     const std::string refinement_text = prm.get("Refinement boxes");
     const std::string region_text     = dealii::Utilities::trim(prm.get("Refinement region"));
     refinement_levels                 = prm.get_integer("Refinement levels");
+    refinement_band                   = prm.get_double("Refinement band");
+    band_piece_names = dealii::Utilities::split_string_list(prm.get("Refinement band pieces"));
     prm.leave_subsection();
     require(!axisymmetric || dim == 2,
             "Background grid/Coordinate system",
@@ -120,14 +140,18 @@ namespace GelMPM
       }
     parse_refinement_boxes(refinement_text);
     parse_refinement_region(region_text);
-    if (refinement_boxes.empty() && refinement_region == nullptr)
+    band_marked.clear();
+    require(refinement_band > 0. || band_piece_names.empty(),
+            "Background grid/Refinement band pieces",
+            "names pieces but 'Refinement band' is 0",
+            "give the band's width in 'Refinement band', or leave the pieces empty");
+    if (refinement_boxes.empty() && refinement_region == nullptr && !follows_surface())
       refinement_levels = 0;
     if (!refined())
       return;
     for (unsigned int d = 0; d < dim; ++d)
       require(n_cells[d] % 2 == 0,
-              refinement_boxes.empty() ? "Background grid/Refinement region"
-                                       : "Background grid/Refinement boxes",
+              refinement_entry(),
               "needs an even number of cells in every direction ('Background grid/Cells'): "
               "cells are refined in pairs",
               "use an even number of cells in every direction");
@@ -307,6 +331,85 @@ namespace GelMPM
 
   template <int dim>
   bool
+  BackgroundGrid<dim>::follows_surface() const
+  {
+    return refinement_band > 0.;
+  }
+
+
+  template <int dim>
+  std::string
+  BackgroundGrid<dim>::refinement_entry() const
+  {
+    if (!refinement_boxes.empty())
+      return "Background grid/Refinement boxes";
+    return refinement_region != nullptr ? "Background grid/Refinement region"
+                                        : "Background grid/Refinement band";
+  }
+
+
+  template <int dim>
+  bool
+  BackgroundGrid<dim>::mark_band(const std::vector<dealii::Point<dim>> &surface)
+  {
+    std::vector<std::vector<bool>> marked(refinement_levels);
+    for (unsigned int l = 0; l < refinement_levels; ++l)
+      {
+        const auto              n = pair_cells(l);
+        std::array<double, dim> h;
+        unsigned int            n_total = 1;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            h[d] = (upper[d] - lower[d]) / n[d];
+            n_total *= n[d];
+          }
+        marked[l].assign(n_total, false);
+        // A cell is marked when its box lies within the band's width of a surface point. Its
+        // parent's box contains it, so the parent is marked too: the domains nest.
+        for (const auto &p : surface)
+          {
+            std::array<unsigned int, dim> first, last;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                const auto index = [&](const double x) {
+                  return static_cast<unsigned int>(
+                    std::clamp((x - lower[d]) / h[d], 0., double(n[d] - 1)));
+                };
+                first[d] = index(p[d] - refinement_band);
+                last[d]  = index(p[d] + refinement_band);
+              }
+            std::array<unsigned int, dim> i = first;
+            while (true)
+              {
+                double       distance_squared = 0.;
+                unsigned int cell = 0, stride = 1;
+                for (unsigned int d = 0; d < dim; ++d)
+                  {
+                    const double lo = lower[d] + i[d] * h[d], hi = lo + h[d];
+                    const double gap = std::max({lo - p[d], p[d] - hi, 0.});
+                    distance_squared += gap * gap;
+                    cell += i[d] * stride;
+                    stride *= n[d];
+                  }
+                if (distance_squared <= refinement_band * refinement_band)
+                  marked[l][cell] = true;
+                unsigned int d = 0;
+                for (; d < dim && i[d] == last[d]; ++d)
+                  i[d] = first[d];
+                if (d == dim)
+                  break;
+                ++i[d];
+              }
+          }
+      }
+    const bool changed = marked != band_marked;
+    band_marked        = std::move(marked);
+    return changed;
+  }
+
+
+  template <int dim>
+  bool
   BackgroundGrid<dim>::refined() const
   {
     return refinement_levels > 0;
@@ -325,7 +428,8 @@ namespace GelMPM
         for (unsigned int d = 0; d < dim; ++d)
           n_total *= n[d];
         for (unsigned int c = 0; c < n_total; ++c)
-          if (pair_cell_in_box(l, c) || (!region_marked.empty() && region_marked[l][c]))
+          if (pair_cell_in_box(l, c) || (!region_marked.empty() && region_marked[l][c]) ||
+              (!band_marked.empty() && band_marked[l][c]))
             refined[l].push_back(c);
       }
     return refined;
@@ -365,6 +469,7 @@ namespace GelMPM
             overlaps |= inside;
           }
         overlaps |= !region_marked.empty() && region_marked[l][cell];
+        overlaps |= !band_marked.empty() && band_marked[l][cell];
         if (!overlaps)
           return l;
       }

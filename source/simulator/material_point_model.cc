@@ -25,7 +25,23 @@ namespace GelMPM
     , timer(timer)
     , mu_coefficients(scene.spaces->n_mu_control_points(), scene.material.mu_0())
     , mu_known(scene.spaces->n_mu_control_points(), true)
+    , mu_marking(scene.grid.band_marked)
   {}
+
+
+  template <int dim>
+  void
+  MaterialPointModel<dim>::follow_surface()
+  {
+    if (!scene.grid.follows_surface())
+      return;
+    scene.refine_around_surface();
+    if (scene.grid.band_marked == mu_marking)
+      return;
+    mu_coefficients.assign(scene.spaces->n_mu_control_points(), scene.material.mu_0());
+    mu_known.assign(mu_coefficients.size(), false);
+    mu_marking = scene.grid.band_marked;
+  }
 
 
   template <int dim>
@@ -41,6 +57,7 @@ namespace GelMPM
   MaterialPointModel<dim>::begin_step(const double last_dt)
   {
     dealii::TimerOutput::Scope scope(timer, "grid reset");
+    follow_surface();
     // A grid reset that changes the classification gives the tangent a new sparsity pattern;
     // the factorisation of the old one goes first, while the matrix it refers to still exists.
     // Otherwise it stays, and Newton may start from it (modified Newton).

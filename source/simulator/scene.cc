@@ -3,6 +3,7 @@
 #include <gelmpm/core/format_point.h>
 #include <gelmpm/core/input_error.h>
 #include <gelmpm/io/grid_output.h>
+#include <gelmpm/particles/point_refinement.h>
 #include <gelmpm/particles/property_layout.h>
 #include <gelmpm/simulator/rigid_motion.h>
 #include <gelmpm/simulator/scene.h>
@@ -79,6 +80,60 @@ namespace GelMPM
       obstacle.check_inside_grid(grid.lower, grid.upper);
     check_points_per_cell();
     check_refinement_supported(prm);
+    band_pieces = band_piece_indices();
+  }
+
+
+  template <int dim>
+  std::vector<int>
+  Scene<dim>::band_piece_indices() const
+  {
+    std::vector<int> indices;
+    for (const auto &name : grid.band_piece_names)
+      {
+        int index = -1;
+        for (unsigned int i = 0; i < boundary_conditions.n_pieces(); ++i)
+          if (boundary_conditions.piece(i).name == name)
+            index = i;
+        require(index >= 0,
+                "Background grid/Refinement band pieces",
+                "names '" + name + "', which is no piece of 'Boundary conditions/Pieces'",
+                "name pieces listed in 'Boundary conditions/Pieces'");
+        indices.push_back(index);
+      }
+    return indices;
+  }
+
+
+  template <int dim>
+  bool
+  Scene<dim>::refine_around_surface()
+  {
+    if (!grid.follows_surface())
+      return false;
+    std::vector<dealii::Point<dim>> surface;
+    for (const auto &particle : particles)
+      {
+        const auto properties = particle.get_properties();
+        if (kind_of(properties) == PointKind::volume)
+          continue;
+        const int piece = std::lround(properties[PropertyLayout<dim>::piece]);
+        if (band_pieces.empty() ||
+            std::find(band_pieces.begin(), band_pieces.end(), piece) != band_pieces.end())
+          surface.push_back(position_of(particle.get_location(), properties));
+      }
+    if (Collective::is_parallel(communicator))
+      {
+        std::vector<dealii::Point<dim>> all;
+        for (const auto &part : dealii::Utilities::MPI::all_gather(communicator, surface))
+          all.insert(all.end(), part.begin(), part.end());
+        surface = std::move(all);
+      }
+    const bool changed = grid.mark_band(surface);
+    if (changed)
+      spaces->rebuild_hierarchies(grid);
+    split_points_to_leaves(particles, grid, regions, generator.points_per_cell, *triangulation);
+    return changed;
   }
 
 
@@ -92,9 +147,7 @@ namespace GelMPM
     const std::string solver = prm.get("Solver");
     prm.leave_subsection();
     // 'automatic' keeps MUMPS there (LinearSolver::allow_krylov()).
-    const std::string refining = grid.refinement_boxes.empty()
-                                   ? "'Background grid/Refinement region'"
-                                   : "'Background grid/Refinement boxes'";
+    const std::string refining = "'" + grid.refinement_entry() + "'";
     require(solver != "Krylov",
             "Linear solver/Solver",
             "is 'Krylov' with " + refining +
@@ -316,6 +369,7 @@ namespace GelMPM
     grid.create_triangulation(*triangulation);
     particles.initialize(*triangulation, mapping, PropertyLayout<dim>::n_properties);
     generator.generate(geometry, grid, *triangulation, boundary_conditions, regions, particles);
+    refine_around_surface();
     balance_partition();
   }
 

@@ -92,6 +92,13 @@ namespace GelMPM
     bool
     refined() const;
 
+    /**
+     * Build the hierarchies anew from @p grid's marking (a band that follows the surface); the
+     * next reinit() then builds the extended spaces, their unknowns numbered anew.
+     */
+    void
+    rebuild_hierarchies(const BackgroundGrid<dim> &grid);
+
     /** The displacement hierarchy (refined grids only). */
     const HierarchicalBSplineSpace<dim> &
     u_hierarchy() const;

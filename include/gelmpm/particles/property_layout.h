@@ -68,6 +68,10 @@ namespace GelMPM
    *   fixed at its creation.
    * - out_of_plane (2D only): the out-of-plane stretch F_33 from the dry state, lambda_0 in plane
    *   strain, the hoop stretch lambda_0 r_n / R_0 in an axisymmetric scene (doc/axisymmetric.md).
+   * - spacing_level: the refinement level l whose spacing the point has (a volume point stands
+   *   for a sub-cell of side h / (points per cell 2^l), a surface point for an element of its
+   *   spacing); -1 for a point of a body's own mesh element, which is never split
+   *   (split_points_to_leaves()).
    */
   template <int dim>
   struct PropertyLayout
@@ -86,7 +90,8 @@ namespace GelMPM
     static constexpr unsigned int edge_offset   = mu_increment + 1;
     static constexpr unsigned int region        = edge_offset + dim;
     static constexpr unsigned int out_of_plane  = region + 1;
-    static constexpr unsigned int n_properties  = out_of_plane + (dim == 2 ? 1 : 0);
+    static constexpr unsigned int spacing_level = out_of_plane + (dim == 2 ? 1 : 0);
+    static constexpr unsigned int n_properties  = spacing_level + 1;
   };
 
 

@@ -53,6 +53,34 @@ namespace GelMPM
      * 'Refinement region' refines it (mark_region()). Empty without a region.
      */
     std::vector<std::vector<bool>> region_marked;
+    /**
+     * 'Refinement band' (0: none) and 'Refinement band pieces' (empty: every piece): the grid is
+     * refined within this distance of the body's current surface, marked anew every step
+     * (mark_band()).
+     */
+    double                   refinement_band = 0.;
+    std::vector<std::string> band_piece_names;
+    /**
+     * Per level l < refinement_levels and cell of the grid of pairs at level l: whether the band
+     * refines it (mark_band()). Empty before the first marking and without a band.
+     */
+    std::vector<std::vector<bool>> band_marked;
+
+    /** Whether 'Refinement band' is set: the refinement follows the body's surface. */
+    bool
+    follows_surface() const;
+
+    /** The entry that refines the grid, named in errors of the refined path. */
+    std::string
+    refinement_entry() const;
+
+    /**
+     * Mark the cells of the grid of pairs, at every level, whose box lies within
+     * 'Refinement band' of one of the points @p surface (the surface points' current
+     * positions, over all ranks). Returns whether the marking changed.
+     */
+    bool
+    mark_band(const std::vector<dealii::Point<dim>> &surface);
 
     /** Whether some cells are refined. */
     bool

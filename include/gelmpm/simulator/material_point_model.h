@@ -127,15 +127,26 @@ namespace GelMPM
     unsigned long
     repartitions() const;
 
-    /** Boost serialization: the mu coefficients and which of them hold a value. */
+    /**
+     * Boost serialization: the mu coefficients, which of them hold a value, and the band's
+     * marking they belong to.
+     */
     template <class Archive>
     void
     serialize(Archive &ar, const unsigned int)
     {
-      ar &mu_coefficients &mu_known;
+      ar &mu_coefficients &mu_known &mu_marking;
     }
 
   private:
+    /**
+     * The grid reset's first part with 'Background grid/Refinement band': the grid marked round
+     * the surface, the points split; the mu coefficients, which belong to the last marking's
+     * control points, are forgotten when it changed (the step starts from the points' mu).
+     */
+    void
+    follow_surface();
+
     /** Chemical-potential coefficients of every control point of the mu grid, from a solution. */
     void
     store_mu_coefficients(const dealii::Vector<double> &solution);
@@ -146,10 +157,11 @@ namespace GelMPM
     double               characteristic_length;
     dealii::TimerOutput &timer;
 
-    std::vector<double> mu_coefficients;         // per mu control point
-    std::vector<bool>   mu_known;                // coefficient holds a current value
-    std::vector<double> mu_projection;           // points' mu on the step's basis
-    std::vector<double> displacement_projection; // last step's motion on the step's basis
+    std::vector<double>            mu_coefficients; // per mu control point
+    std::vector<bool>              mu_known;        // coefficient holds a current value
+    std::vector<std::vector<bool>> mu_marking;      // the band's marking of the coefficients
+    std::vector<double>            mu_projection;   // points' mu on the step's basis
+    std::vector<double> displacement_projection;    // last step's motion on the step's basis
 
     std::vector<bool> resumed_classification;
     SparseEntries     resumed_tangent;

@@ -160,6 +160,15 @@ namespace GelMPM
       return n_points > 0 ? base_weight * (n_points + 4) : 0;
     }
 
+    /**
+     * 'Background grid/Refinement band': mark the grid anew round the current surface points
+     * (those of 'Refinement band pieces'; over all ranks), rebuild the spaces' hierarchies when
+     * the marking changed, and split the points that now lie in finer leaves than their spacing
+     * (split_points_to_leaves()). Returns whether the marking changed. Nothing without a band.
+     */
+    bool
+    refine_around_surface();
+
     /** The body's own material (section "Material"), region 0 of regions. */
     FloryRehnerGel<dim> material;
     /** Every gel of the body, by region (MaterialRegions). */
@@ -185,6 +194,13 @@ namespace GelMPM
     std::unique_ptr<MixedSystem<dim>>           system;
 
   private:
+    /** The indices of 'Background grid/Refinement band pieces'; InputError on an unknown name. */
+    std::vector<int>
+    band_piece_indices() const;
+
+    /** band_piece_indices(), read once (empty: every surface point). */
+    std::vector<int> band_pieces;
+
     /**
      * Throw the InputError of a grid on which the extended bases cannot be built (@p reason, the
      * extension's words): naming the planes of symmetry too close to the grid's side and the

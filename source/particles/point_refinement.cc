@@ -1,0 +1,283 @@
+#include <gelmpm/particles/material_state.h>
+#include <gelmpm/particles/point_location.h>
+#include <gelmpm/particles/point_refinement.h>
+#include <gelmpm/particles/property_layout.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <cmath>
+
+namespace GelMPM
+{
+  template <int dim>
+  std::vector<dealii::Tensor<1, dim>>
+  volume_point_offsets(const std::array<double, dim> &sides, const unsigned int parts)
+  {
+    unsigned int n_children = 1;
+    for (unsigned int d = 0; d < dim; ++d)
+      n_children *= parts;
+    std::vector<dealii::Tensor<1, dim>> offsets(n_children);
+    for (unsigned int k = 0; k < n_children; ++k)
+      {
+        unsigned int rest = k;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            offsets[k][d] = ((rest % parts + 0.5) / parts - 0.5) * sides[d];
+            rest /= parts;
+          }
+      }
+    return offsets;
+  }
+
+
+  namespace
+  {
+    /**
+     * A unit tangent of the facet with unit normal @p n in 3D: the coordinate axis most nearly
+     * in the facet, projected onto it (the first such axis on a tie).
+     */
+    dealii::Tensor<1, 3>
+    facet_tangent(const dealii::Tensor<1, 3> &n)
+    {
+      unsigned int axis = 0;
+      for (unsigned int d = 1; d < 3; ++d)
+        if (std::abs(n[d]) < std::abs(n[axis]))
+          axis = d;
+      dealii::Tensor<1, 3> t;
+      t[axis] = 1.;
+      t -= (t * n) * n;
+      return t / t.norm();
+    }
+  } // namespace
+
+
+  template <int dim>
+  std::vector<dealii::Tensor<1, dim>>
+  surface_element_offsets(const dealii::Tensor<1, dim> &normal_area, const unsigned int parts)
+  {
+    const double                                area = normal_area.norm();
+    std::array<dealii::Tensor<1, dim>, dim - 1> tangents;
+    double                                      side = area;
+    if constexpr (dim == 2)
+      {
+        tangents[0][0] = -normal_area[1] / area;
+        tangents[0][1] = normal_area[0] / area;
+      }
+    else
+      {
+        const dealii::Tensor<1, 3> n = normal_area / area;
+        tangents[0]                  = facet_tangent(n);
+        tangents[1]                  = dealii::cross_product_3d(n, tangents[0]);
+        side                         = std::sqrt(area);
+      }
+    unsigned int n_children = 1;
+    for (unsigned int d = 0; d + 1 < dim; ++d)
+      n_children *= parts;
+    std::vector<dealii::Tensor<1, dim>> offsets(n_children);
+    for (unsigned int k = 0; k < n_children; ++k)
+      {
+        unsigned int rest = k;
+        for (unsigned int d = 0; d + 1 < dim; ++d)
+          {
+            offsets[k] += ((rest % parts + 0.5) / parts - 0.5) * side * tangents[d];
+            rest /= parts;
+          }
+      }
+    return offsets;
+  }
+
+
+  namespace
+  {
+    template <int dim>
+    using Layout = PropertyLayout<dim>;
+
+    /** A point to be inserted: its location, properties and the cell its parent lies in. */
+    template <int dim>
+    struct Child
+    {
+      dealii::Point<dim>                                        location;
+      std::vector<double>                                       properties;
+      typename dealii::Triangulation<dim>::active_cell_iterator cell;
+    };
+
+
+    /** The offsets in the initial configuration of the children of the point @p properties. */
+    template <int dim, typename Properties>
+    std::vector<dealii::Tensor<1, dim>>
+    child_offsets(const Properties          &properties,
+                  const unsigned int         parts,
+                  const BackgroundGrid<dim> &grid,
+                  const unsigned int         points_per_cell)
+    {
+      const unsigned int spacing = std::lround(properties[Layout<dim>::spacing_level]);
+      if (kind_of(properties) == PointKind::volume)
+        {
+          std::array<double, dim> sides;
+          for (unsigned int d = 0; d < dim; ++d)
+            sides[d] = grid.cell_size(d) / (points_per_cell * double(1u << spacing));
+          return volume_point_offsets<dim>(sides, parts);
+        }
+      dealii::Tensor<1, dim> normal_area;
+      for (unsigned int d = 0; d < dim; ++d)
+        normal_area[d] = properties[Layout<dim>::normal_area_0 + d];
+      // An axisymmetric scene's N_0 A_0 is revolved: the element's own is 1 / (2 pi R_0) of it.
+      if (grid.axisymmetric)
+        normal_area /= 2. * dealii::numbers::PI * properties[Layout<dim>::position_0];
+      return surface_element_offsets<dim>(normal_area, parts);
+    }
+
+
+    /**
+     * The properties of the child at @p offset (initial configuration) of the point with
+     * properties @p parent at @p x, one of @p n_children; its current position in @p x_child.
+     */
+    template <int dim, typename Properties>
+    std::vector<double>
+    child_properties(const Properties             &parent,
+                     const dealii::Point<dim>     &x,
+                     const dealii::Tensor<1, dim> &offset,
+                     const unsigned int            n_children,
+                     const unsigned int            level,
+                     const BackgroundGrid<dim>    &grid,
+                     const MaterialRegions<dim>   &regions,
+                     dealii::Point<dim>           &x_child)
+    {
+      std::vector<double> child(parent.begin(), parent.end());
+      const double        lambda_0 = material_state_of(regions, parent).gel->lambda_0();
+      const auto          F_n      = deformation_gradient_of<dim>(parent) / lambda_0;
+      x_child                      = x + F_n * offset;
+      for (unsigned int d = 0; d < dim; ++d)
+        child[Layout<dim>::position_0 + d] += offset[d];
+      // Every measure of an axisymmetric scene is revolved: 2 pi R_0 in the initial
+      // configuration, 2 pi r_n in the current one.
+      double initial = 1. / n_children, current = 1. / n_children;
+      if (grid.axisymmetric)
+        {
+          const double R_0 = parent[Layout<dim>::position_0];
+          initial *= child[Layout<dim>::position_0] / R_0;
+          current *= x_child[0] / x[0];
+          if constexpr (dim == 2)
+            child[Layout<dim>::out_of_plane] =
+              lambda_0 * x_child[0] / child[Layout<dim>::position_0];
+        }
+      child[Layout<dim>::measure_0] *= initial;
+      child[Layout<dim>::measure_n] *= current;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          child[Layout<dim>::normal_area_0 + d] *= initial;
+          child[Layout<dim>::normal_area_n + d] *= current;
+        }
+      child[Layout<dim>::spacing_level] = level;
+      return child;
+    }
+
+
+    /** The reference coordinates of @p x in the box cell @p cell (outside [0, 1] if outside). */
+    template <int dim>
+    dealii::Point<dim>
+    reference_in(const typename dealii::Triangulation<dim>::active_cell_iterator &cell,
+                 const dealii::Point<dim>                                        &x)
+    {
+      const auto        &lo = cell->vertex(0);
+      const auto        &hi = cell->vertex(dealii::GeometryInfo<dim>::vertices_per_cell - 1);
+      dealii::Point<dim> reference;
+      for (unsigned int d = 0; d < dim; ++d)
+        reference[d] = (x[d] - lo[d]) / (hi[d] - lo[d]);
+      return reference;
+    }
+  } // namespace
+
+
+  template <int dim>
+  unsigned long
+  split_points_to_leaves(dealii::Particles::ParticleHandler<dim> &particles,
+                         const BackgroundGrid<dim>               &grid,
+                         const MaterialRegions<dim>              &regions,
+                         const unsigned int                       points_per_cell,
+                         const dealii::Triangulation<dim>        &triangulation)
+  {
+    std::vector<Child<dim>> children;
+    for (auto particle = particles.begin(); particle != particles.end(); ++particle)
+      {
+        auto               properties = particle->get_properties();
+        const long         spacing    = std::lround(properties[Layout<dim>::spacing_level]);
+        const auto         x          = position_of(particle->get_location(), properties);
+        const unsigned int level      = grid.refinement_level(particle->get_location());
+        if (spacing < 0 || level <= static_cast<unsigned long>(spacing))
+          continue;
+        const auto offsets =
+          child_offsets<dim>(properties, 1u << (level - spacing), grid, points_per_cell);
+        const std::vector<double> parent(properties.begin(), properties.end());
+        for (unsigned int k = 0; k < offsets.size(); ++k)
+          {
+            dealii::Point<dim> x_child;
+            auto               child = child_properties<dim>(parent,
+                                               x,
+                                               offsets[k],
+                                               offsets.size(),
+                                               level,
+                                               grid,
+                                               regions,
+                                               x_child);
+            // The edge offset stays: the child's location is its position less it, as the
+            // parent's.
+            dealii::Point<dim> location = x_child;
+            for (unsigned int d = 0; d < dim; ++d)
+              location[d] -= child[Layout<dim>::edge_offset + d];
+            if (k == 0)
+              {
+                std::copy(child.begin(), child.end(), properties.begin());
+                particle->set_location(location);
+                particle->set_reference_location(
+                  reference_in<dim>(particle->get_surrounding_cell(), location));
+              }
+            else
+              children.push_back({location, std::move(child), particle->get_surrounding_cell()});
+          }
+      }
+    const MPI_Comm communicator = triangulation.get_communicator();
+    const auto     counts =
+      dealii::Utilities::MPI::all_gather(communicator, static_cast<unsigned long>(children.size()));
+    dealii::types::particle_index next  = particles.get_next_free_particle_index();
+    unsigned long                 added = 0;
+    for (unsigned int rank = 0; rank < counts.size(); ++rank)
+      {
+        if (rank < dealii::Utilities::MPI::this_mpi_process(communicator))
+          next += counts[rank];
+        added += counts[rank];
+      }
+    for (auto &child : children)
+      particles.insert_particle(child.location,
+                                reference_in<dim>(child.cell, child.location),
+                                next++,
+                                child.cell,
+                                dealii::make_array_view(child.properties));
+    if (added > 0)
+      sort_into_cells(particles, grid, triangulation);
+    particles.update_cached_numbers();
+    return added;
+  }
+
+
+  template std::vector<dealii::Tensor<1, 2>>
+  volume_point_offsets<2>(const std::array<double, 2> &, const unsigned int);
+  template std::vector<dealii::Tensor<1, 3>>
+  volume_point_offsets<3>(const std::array<double, 3> &, const unsigned int);
+  template std::vector<dealii::Tensor<1, 2>>
+  surface_element_offsets<2>(const dealii::Tensor<1, 2> &, const unsigned int);
+  template std::vector<dealii::Tensor<1, 3>>
+  surface_element_offsets<3>(const dealii::Tensor<1, 3> &, const unsigned int);
+  template unsigned long
+  split_points_to_leaves<2>(dealii::Particles::ParticleHandler<2> &,
+                            const BackgroundGrid<2> &,
+                            const MaterialRegions<2> &,
+                            const unsigned int,
+                            const dealii::Triangulation<2> &);
+  template unsigned long
+  split_points_to_leaves<3>(dealii::Particles::ParticleHandler<3> &,
+                            const BackgroundGrid<3> &,
+                            const MaterialRegions<3> &,
+                            const unsigned int,
+                            const dealii::Triangulation<3> &);
+} // namespace GelMPM
