@@ -4,7 +4,9 @@
 Runs, alternating so that a change of the machine's load shows in both, --repeat times each:
   paper     prm/constrained_swelling.prm (20 x 160 cells, steps growing by 1.25);
   refined   prm/constrained_swelling_refined.prm (the cells of 0.9 <= y <= 1.2 halved once,
-            steps growing by 1.05);
+            steps growing by 1.08);
+  band      the same scene with its box replaced by a band that follows the top
+            ('Refinement band = 0.1', 'Refinement band pieces = top'), unless --no-band;
   uniform   prm/constrained_swelling.prm on 40 x 320 cells with steps growing by 1.05 (the
             uniform grid that is as accurate, doc/constrained_swelling.md), unless --no-uniform;
 each to the scene's end (1713 tau_d) without particle output, and compares Delta h with the
@@ -15,7 +17,7 @@ t >= 1e-3 tau_d (with its time), Delta h at 1.197e-3 tau_d and at the end, steps
 setting's.
 
     python3 contrib/benchmarks/constrained_swelling_refined.py [--output DIR] [--repeat N]
-        [--no-uniform] [--end T]
+        [--no-uniform] [--no-band] [--end T]
 
 Environment: GELMPM_BUILD_DIR (default: build). Needs only Python's standard library.
 """
@@ -35,6 +37,9 @@ from gelmpm_files import read_rows  # noqa: E402
 VARIANTS = [
     ("paper", "constrained_swelling.prm", []),
     ("refined", "constrained_swelling_refined.prm", []),
+    ("band", "constrained_swelling_refined.prm",
+     ["Background grid/Refinement boxes=", "Background grid/Refinement band=0.1",
+      "Background grid/Refinement band pieces=top"]),
     ("uniform", "constrained_swelling.prm",
      ["Background grid/Cells=40, 320", "Time stepping/Growth factor=1.05"]),
 ]
@@ -96,12 +101,14 @@ def main():
     parser.add_argument("--output", default=os.path.join(TOP, "output", "constrained_swelling_refined"))
     parser.add_argument("--repeat", type=int, default=2)
     parser.add_argument("--no-uniform", action="store_true")
+    parser.add_argument("--no-band", action="store_true")
     parser.add_argument("--end", type=float, default=1713.)
     args = parser.parse_args()
     build = os.path.abspath(os.environ.get("GELMPM_BUILD_DIR", os.path.join(TOP, "build")))
     os.makedirs(args.output, exist_ok=True)
     ref = reference(build, args.output, args.end)
-    variants = [v for v in VARIANTS if not (args.no_uniform and v[0] == "uniform")]
+    variants = [v for v in VARIANTS if not (args.no_uniform and v[0] == "uniform")
+                and not (args.no_band and v[0] == "band")]
     walls = {v[0]: [] for v in variants}
     for k in range(args.repeat):
         for name, scene, sets in variants:
