@@ -25,9 +25,12 @@ run it reads statistics.csv, events.csv and the profiles surface_top-*.csv and r
 
   /usr/bin/python3 contrib/benchmarks/creasing_film.py [--gelmpm build/gelmpm] [--output DIR]
       [--cells 16,20,32] [--dips 0.02,0.005] [--end-time 12] [--levels 0,1,2,3 --box BOX]
+      [--band W]
 
 With --levels, each grid is also run refined that many times in --box (default: round the dip
-and the path of the top while the film swells), the finest spacing h/2^levels there.
+and the path of the top while the film swells), the finest spacing h/2^levels there; with
+--band W instead within W of the top's current surface points ('Refinement band', marked anew
+every step, so that the refined cells follow the top as it rises).
 
 Prints a Markdown table (also <DIR>/onset.md) and writes <DIR>/onset.csv; with --plot the
 profiles at t_crease to doc/figures/creasing_film_profiles.png.
@@ -103,7 +106,7 @@ def output_times(directory):
     return dict(sorted(times.items()))
 
 
-def run(gelmpm, cells, dip, end_time, directory, reuse, levels=0, box=""):
+def run(gelmpm, cells, dip, end_time, directory, reuse, levels=0, box="", band=0.0):
     h = 1.0 / cells
     args = [gelmpm, os.path.join(TOP, "prm", "creasing_film.prm"),
             "--set", f"Output/Directory={directory}",
@@ -113,7 +116,11 @@ def run(gelmpm, cells, dip, end_time, directory, reuse, levels=0, box=""):
             "--set", f"Geometry/Level set constants=d={dip}, w=0.1",
             "--set", f"Time stepping/End time={end_time}",
             "--set", "Observables/Volume ratio range=true"]
-    if levels > 0:
+    if levels > 0 and band > 0:
+        args += ["--set", f"Background grid/Refinement band={band}",
+                 "--set", "Background grid/Refinement band pieces=top",
+                 "--set", f"Background grid/Refinement levels={levels}"]
+    elif levels > 0:
         args += ["--set", f"Background grid/Refinement boxes={box}",
                  "--set", f"Background grid/Refinement levels={levels}"]
     if reuse and os.path.exists(os.path.join(directory, "statistics.csv")):
@@ -163,6 +170,9 @@ def main():
     parser.add_argument("--box", default="1.0, 1.0 : 1.5, 3.0",
                         help="the refined box, 'x0, y0 : x1, y1': round the dip and the path of "
                              "the top while the film swells (the top rises from y = 1.25 to 2.98)")
+    parser.add_argument("--band", type=float, default=0.0,
+                        help="with --levels: refine within this distance of the top's current "
+                             "surface instead of --box")
     parser.add_argument("--plot", action="store_true")
     parser.add_argument("--reuse", action="store_true",
                         help="analyse the runs already in --output instead of running them")
@@ -175,7 +185,7 @@ def main():
                               for l in a.levels.split(",")]:
             directory = os.path.join(a.output, f"h{cells}_d{dip}" +
                                      (f"_L{levels}" if levels > 0 else ""))
-            r = run(a.gelmpm, cells, dip, a.end_time, directory, a.reuse, levels, a.box)
+            r = run(a.gelmpm, cells, dip, a.end_time, directory, a.reuse, levels, a.box, a.band)
             r["directory"] = directory
             results.append(r)
             print(f"h = H/{cells}, {levels} levels, dip {dip}: t_45 {r['t_45']:.3f}, fold {r['t_fold']:.2f}, "
