@@ -7,6 +7,8 @@ Runs, alternating so that a change of the machine's load shows in both, --repeat
             steps growing by 1.08);
   band      the same scene with its box replaced by a band that follows the top
             ('Refinement band = 0.1', 'Refinement band pieces = top'), unless --no-band;
+  front R   the same scene with its box replaced by refinement where the points' mu spans more
+            than R ('Refinement mu range', marked anew every step), for each R of --ranges;
   uniform   prm/constrained_swelling.prm on 40 x 320 cells with steps growing by 1.05 (the
             uniform grid that is as accurate, doc/constrained_swelling.md), unless --no-uniform;
 each to the scene's end (1713 tau_d) without particle output, and compares Delta h with the
@@ -17,7 +19,7 @@ t >= 1e-3 tau_d (with its time), Delta h at 1.197e-3 tau_d and at the end, steps
 setting's.
 
     python3 contrib/benchmarks/constrained_swelling_refined.py [--output DIR] [--repeat N]
-        [--no-uniform] [--no-band] [--end T]
+        [--no-uniform] [--no-band] [--ranges 0.01,0.02] [--end T]
 
 Environment: GELMPM_BUILD_DIR (default: build). Needs only Python's standard library.
 """
@@ -64,7 +66,7 @@ def reference(build, out, end):
 
 
 def run(build, out, name, scene, sets, end):
-    directory = os.path.join(out, name)
+    directory = os.path.join(out, name.replace(" ", "_"))
     command = [os.path.join(build, "gelmpm"), "--set", f"Output/Directory={directory}",
                "--set", "Output/Write particles=false", "--set", f"Time stepping/End time={end:g}"]
     for s in sets:
@@ -79,7 +81,7 @@ def run(build, out, name, scene, sets, end):
 
 
 def evaluate(out, name, ref):
-    rows = read_rows(os.path.join(out, name, "statistics.csv"))[1:]
+    rows = read_rows(os.path.join(out, name.replace(" ", "_"), "statistics.csv"))[1:]
     worst, worst_t, early = 0., 0., None
     for r in rows:
         t = float(r["t_over_tau_d"])
@@ -102,6 +104,7 @@ def main():
     parser.add_argument("--repeat", type=int, default=2)
     parser.add_argument("--no-uniform", action="store_true")
     parser.add_argument("--no-band", action="store_true")
+    parser.add_argument("--ranges", default="", help="mu ranges of the 'front' variants")
     parser.add_argument("--end", type=float, default=1713.)
     args = parser.parse_args()
     build = os.path.abspath(os.environ.get("GELMPM_BUILD_DIR", os.path.join(TOP, "build")))
@@ -109,6 +112,10 @@ def main():
     ref = reference(build, args.output, args.end)
     variants = [v for v in VARIANTS if not (args.no_uniform and v[0] == "uniform")
                 and not (args.no_band and v[0] == "band")]
+    for r in [float(x) for x in args.ranges.split(",") if x]:
+        variants.append((f"front {r:g}", "constrained_swelling_refined.prm",
+                         ["Background grid/Refinement boxes=",
+                          f"Background grid/Refinement mu range={r:g}"]))
     walls = {v[0]: [] for v in variants}
     for k in range(args.repeat):
         for name, scene, sets in variants:

@@ -6,6 +6,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <cmath>
+#include <map>
 
 namespace GelMPM
 {
@@ -260,6 +261,153 @@ namespace GelMPM
   }
 
 
+  namespace
+  {
+    /**
+     * The key of the parent of the volume point with @p properties on the generator's lattice of
+     * sub-cells: its spacing level s, its region and the multi-index of the sub-cell of spacing
+     * s - 1 that holds its X_0. A point of spacing s stands for the sub-cell of side
+     * h / (points per cell 2^s) centred on X_0; its parent's sub-cell holds it.
+     */
+    template <int dim, typename Properties>
+    std::vector<long>
+    parent_key(const Properties          &properties,
+               const BackgroundGrid<dim> &grid,
+               const unsigned int         points_per_cell)
+    {
+      const long        spacing = std::lround(properties[Layout<dim>::spacing_level]);
+      std::vector<long> key     = {spacing, std::lround(properties[Layout<dim>::region])};
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          const double side  = grid.cell_size(d) / (points_per_cell * double(1u << spacing));
+          const long   index = std::lround(
+            std::floor((properties[Layout<dim>::position_0 + d] - grid.lower[d]) / side));
+          key.push_back(index >> 1);
+        }
+      return key;
+    }
+
+
+    /**
+     * The properties of the point that the volume points @p children (the 2^dim children of one
+     * parent) merge into, and its current position in @p x: V_0 and V_n summed, X_0, x, mu, the
+     * increments and the edge offset their means weighted by their shares of the parent's
+     * sub-cell (V_0; V_0 / R_0 in an axisymmetric scene), F its weighted mean scaled
+     * so that the point's J is the children's V_n / V_0 (the volume, hence the solvent, is
+     * kept), the hoop stretch of an axisymmetric scene lambda_0 r / R of the merged point.
+     */
+    template <int dim>
+    std::vector<double>
+    merged_properties(const std::vector<std::vector<double>> &children,
+                      const std::vector<dealii::Point<dim>>  &positions,
+                      const BackgroundGrid<dim>              &grid,
+                      const MaterialRegions<dim>             &regions,
+                      dealii::Point<dim>                     &x)
+    {
+      std::vector<double> merged(children[0].size(), 0.);
+      double              V_0 = 0., V_n = 0.;
+      for (const auto &child : children)
+        {
+          V_0 += child[Layout<dim>::measure_0];
+          V_n += child[Layout<dim>::measure_n];
+        }
+      // The weights of the children's shares of the parent's sub-cell in the plane (meridian
+      // plane): V_0, divided by 2 pi R_0 in an axisymmetric scene, where V_0-weighted means would
+      // move the point outwards.
+      std::vector<double> weights(children.size());
+      double              total = 0.;
+      for (unsigned int k = 0; k < children.size(); ++k)
+        {
+          weights[k] = children[k][Layout<dim>::measure_0] /
+                       (grid.axisymmetric ? children[k][Layout<dim>::position_0] : 1.);
+          total += weights[k];
+        }
+      x = dealii::Point<dim>();
+      for (unsigned int k = 0; k < children.size(); ++k)
+        {
+          const double weight = weights[k] / total;
+          for (unsigned int i = 0; i < merged.size(); ++i)
+            merged[i] += weight * children[k][i];
+          x += weight * positions[k];
+        }
+      for (const unsigned int i : {Layout<dim>::kind, Layout<dim>::piece, Layout<dim>::region})
+        merged[i] = children[0][i];
+      merged[Layout<dim>::spacing_level] = children[0][Layout<dim>::spacing_level] - 1;
+      merged[Layout<dim>::measure_0]     = V_0;
+      merged[Layout<dim>::measure_n]     = V_n;
+      const double lambda_0              = material_state_of(regions, merged).gel->lambda_0();
+      double       hoop                  = 1.;
+      if constexpr (dim == 2)
+        if (grid.axisymmetric)
+          {
+            hoop                              = x[0] / merged[Layout<dim>::position_0];
+            merged[Layout<dim>::out_of_plane] = lambda_0 * hoop;
+          }
+      const auto   F = deformation_gradient_of<dim>(merged);
+      const double scale =
+        std::pow(V_n / V_0 * std::pow(lambda_0, dim) / (hoop * dealii::determinant(F)), 1. / dim);
+      for (unsigned int i = 0; i < dim * dim; ++i)
+        merged[Layout<dim>::F + i] *= scale;
+      return merged;
+    }
+  } // namespace
+
+
+  template <int dim>
+  unsigned long
+  merge_points_to_leaves(dealii::Particles::ParticleHandler<dim> &particles,
+                         const BackgroundGrid<dim>               &grid,
+                         const MaterialRegions<dim>              &regions,
+                         const unsigned int                       points_per_cell,
+                         const dealii::Triangulation<dim>        &triangulation)
+  {
+    using Iterator = typename dealii::Particles::ParticleHandler<dim>::particle_iterator;
+    std::map<std::vector<long>, std::vector<Iterator>> families;
+    for (auto particle = particles.begin(); particle != particles.end(); ++particle)
+      {
+        const auto properties = particle->get_properties();
+        const long spacing    = std::lround(properties[Layout<dim>::spacing_level]);
+        if (kind_of(properties) != PointKind::volume || spacing <= 0 ||
+            grid.refinement_level(particle->get_location()) >= static_cast<unsigned long>(spacing))
+          continue;
+        families[parent_key<dim>(properties, grid, points_per_cell)].push_back(particle);
+      }
+    std::vector<Iterator> removed;
+    for (auto &[key, members] : families)
+      {
+        // Only a whole family, all of whose points lie in leaves coarser than their spacing, on
+        // this rank.
+        if (members.size() != (1u << dim))
+          continue;
+        std::vector<std::vector<double>> children;
+        std::vector<dealii::Point<dim>>  positions;
+        for (const auto &member : members)
+          {
+            const auto properties = member->get_properties();
+            children.emplace_back(properties.begin(), properties.end());
+            positions.push_back(position_of(member->get_location(), properties));
+          }
+        dealii::Point<dim> x;
+        const auto         merged = merged_properties<dim>(children, positions, grid, regions, x);
+        auto               first  = members[0];
+        std::copy(merged.begin(), merged.end(), first->get_properties().begin());
+        dealii::Point<dim> location = x;
+        for (unsigned int d = 0; d < dim; ++d)
+          location[d] -= merged[Layout<dim>::edge_offset + d];
+        first->set_location(location);
+        first->set_reference_location(reference_in<dim>(first->get_surrounding_cell(), location));
+        removed.insert(removed.end(), members.begin() + 1, members.end());
+      }
+    particles.remove_particles(removed);
+    const auto total = dealii::Utilities::MPI::sum(static_cast<unsigned long>(removed.size()),
+                                                   triangulation.get_communicator());
+    if (total > 0)
+      sort_into_cells(particles, grid, triangulation);
+    particles.update_cached_numbers();
+    return total;
+  }
+
+
   template std::vector<dealii::Tensor<1, 2>>
   volume_point_offsets<2>(const std::array<double, 2> &, const unsigned int);
   template std::vector<dealii::Tensor<1, 3>>
@@ -274,6 +422,18 @@ namespace GelMPM
                             const MaterialRegions<2> &,
                             const unsigned int,
                             const dealii::Triangulation<2> &);
+  template unsigned long
+  merge_points_to_leaves<2>(dealii::Particles::ParticleHandler<2> &,
+                            const BackgroundGrid<2> &,
+                            const MaterialRegions<2> &,
+                            const unsigned int,
+                            const dealii::Triangulation<2> &);
+  template unsigned long
+  merge_points_to_leaves<3>(dealii::Particles::ParticleHandler<3> &,
+                            const BackgroundGrid<3> &,
+                            const MaterialRegions<3> &,
+                            const unsigned int,
+                            const dealii::Triangulation<3> &);
   template unsigned long
   split_points_to_leaves<3>(dealii::Particles::ParticleHandler<3> &,
                             const BackgroundGrid<3> &,

@@ -16,6 +16,49 @@
 
 namespace GelMPM
 {
+  namespace
+  {
+    /**
+     * Call @p f(cell) for every cell of a grid of @p n cells per direction whose multi-index
+     * differs from that of @p centre by at most @p distance in every direction.
+     */
+    template <int dim, typename F>
+    void
+    for_each_cell_near(const std::array<unsigned int, dim> &n,
+                       const unsigned int                   centre,
+                       const unsigned int                   distance,
+                       const F                             &f)
+    {
+      std::array<unsigned int, dim> first, last, i;
+      unsigned int                  rest = centre;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          const unsigned int index = rest % n[d];
+          rest /= n[d];
+          first[d] = index >= distance ? index - distance : 0;
+          last[d]  = std::min(n[d] - 1, index + distance);
+        }
+      i = first;
+      while (true)
+        {
+          unsigned int cell = 0, stride = 1;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              cell += i[d] * stride;
+              stride *= n[d];
+            }
+          f(cell);
+          unsigned int d = 0;
+          for (; d < dim && i[d] == last[d]; ++d)
+            i[d] = first[d];
+          if (d == dim)
+            return;
+          ++i[d];
+        }
+    }
+  } // namespace
+
+
   template <int dim>
   void
   BackgroundGrid<dim>::declare_parameters(dealii::ParameterHandler &prm)
@@ -96,6 +139,17 @@ namespace GelMPM
                       Patterns::Integer(1, 4),
                       "How many times the cells in 'Refinement boxes', 'Refinement region' and "
                       "'Refinement band' are halved.");
+    prm.declare_entry("Refinement mu range",
+                      "0",
+                      Patterns::Double(0.),
+                      "Refine the grid where the chemical potential varies: a cell pair (at "
+                      "every level, up to 'Refinement levels') is refined where the material "
+                      "points in it, with the prescribed mu of its surface points, span more than "
+                      "this range of mu/(k_B T), marked anew at the start of every step, so that "
+                      "the refined cells follow a swelling front and leave it once it has spread. "
+                      "Points are split as for 'Refinement band'. A cell whose points all have one "
+                      "mu is not refined: at t = 0 only a bath that differs from the gel's mu "
+                      "refines. Combined with the boxes, the region and the band. 0: none.");
     prm.leave_subsection();
   }
 
@@ -113,6 +167,7 @@ namespace GelMPM
     const std::string region_text     = dealii::Utilities::trim(prm.get("Refinement region"));
     refinement_levels                 = prm.get_integer("Refinement levels");
     refinement_band                   = prm.get_double("Refinement band");
+    refinement_mu_range               = prm.get_double("Refinement mu range");
     band_piece_names = dealii::Utilities::split_string_list(prm.get("Refinement band pieces"));
     prm.leave_subsection();
     require(!axisymmetric || dim == 2,
@@ -140,12 +195,12 @@ namespace GelMPM
       }
     parse_refinement_boxes(refinement_text);
     parse_refinement_region(region_text);
-    band_marked.clear();
+    moving_marked.clear();
     require(refinement_band > 0. || band_piece_names.empty(),
             "Background grid/Refinement band pieces",
             "names pieces but 'Refinement band' is 0",
             "give the band's width in 'Refinement band', or leave the pieces empty");
-    if (refinement_boxes.empty() && refinement_region == nullptr && !follows_surface())
+    if (refinement_boxes.empty() && refinement_region == nullptr && !moves())
       refinement_levels = 0;
     if (!refined())
       return;
@@ -331,9 +386,26 @@ namespace GelMPM
 
   template <int dim>
   bool
-  BackgroundGrid<dim>::follows_surface() const
+  BackgroundGrid<dim>::moves() const
   {
-    return refinement_band > 0.;
+    return refinement_band > 0. || refinement_mu_range > 0.;
+  }
+
+
+  template <int dim>
+  unsigned int
+  BackgroundGrid<dim>::pair_cell_of(const dealii::Point<dim> &x, const unsigned int level) const
+  {
+    const auto   n    = pair_cells(level);
+    unsigned int cell = 0, stride = 1;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        const double h = (upper[d] - lower[d]) / n[d];
+        cell += stride *
+                static_cast<unsigned int>(std::clamp((x[d] - lower[d]) / h, 0., double(n[d] - 1)));
+        stride *= n[d];
+      }
+    return cell;
   }
 
 
@@ -343,14 +415,18 @@ namespace GelMPM
   {
     if (!refinement_boxes.empty())
       return "Background grid/Refinement boxes";
-    return refinement_region != nullptr ? "Background grid/Refinement region"
-                                        : "Background grid/Refinement band";
+    if (refinement_region != nullptr)
+      return "Background grid/Refinement region";
+    return refinement_band > 0. ? "Background grid/Refinement band"
+                                : "Background grid/Refinement mu range";
   }
 
 
   template <int dim>
   bool
-  BackgroundGrid<dim>::mark_band(const std::vector<dealii::Point<dim>> &surface)
+  BackgroundGrid<dim>::mark_moving(const std::vector<dealii::Point<dim>>  &surface,
+                                   const std::vector<std::vector<double>> &mu_spread,
+                                   const unsigned int                      buffer)
   {
     std::vector<std::vector<bool>> marked(refinement_levels);
     for (unsigned int l = 0; l < refinement_levels; ++l)
@@ -402,8 +478,20 @@ namespace GelMPM
               }
           }
       }
-    const bool changed = marked != band_marked;
-    band_marked        = std::move(marked);
+    // A cell's points include its children's: the spread of a parent is at least theirs. The
+    // cells within 'buffer' cells of a marked one are marked too, at every level: the parent of
+    // such a cell lies within 'buffer' cells of the marked cell's parent, so the domains nest.
+    for (unsigned int l = 0; l < mu_spread.size() && l < refinement_levels; ++l)
+      {
+        const auto n = pair_cells(l);
+        for (unsigned int c = 0; c < mu_spread[l].size(); ++c)
+          if (mu_spread[l][c] > refinement_mu_range)
+            for_each_cell_near<dim>(n, c, buffer, [&](const unsigned int near) {
+              marked[l][near] = true;
+            });
+      }
+    const bool changed = marked != moving_marked;
+    moving_marked      = std::move(marked);
     return changed;
   }
 
@@ -429,7 +517,7 @@ namespace GelMPM
           n_total *= n[d];
         for (unsigned int c = 0; c < n_total; ++c)
           if (pair_cell_in_box(l, c) || (!region_marked.empty() && region_marked[l][c]) ||
-              (!band_marked.empty() && band_marked[l][c]))
+              (!moving_marked.empty() && moving_marked[l][c]))
             refined[l].push_back(c);
       }
     return refined;
@@ -469,7 +557,7 @@ namespace GelMPM
             overlaps |= inside;
           }
         overlaps |= !region_marked.empty() && region_marked[l][cell];
-        overlaps |= !band_marked.empty() && band_marked[l][cell];
+        overlaps |= !moving_marked.empty() && moving_marked[l][cell];
         if (!overlaps)
           return l;
       }

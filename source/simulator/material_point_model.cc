@@ -25,7 +25,7 @@ namespace GelMPM
     , timer(timer)
     , mu_coefficients(scene.spaces->n_mu_control_points(), scene.material.mu_0())
     , mu_known(scene.spaces->n_mu_control_points(), true)
-    , mu_marking(scene.grid.band_marked)
+    , mu_marking(scene.grid.moving_marked)
   {}
 
 
@@ -33,14 +33,14 @@ namespace GelMPM
   void
   MaterialPointModel<dim>::follow_surface()
   {
-    if (!scene.grid.follows_surface())
+    if (!scene.grid.moves())
       return;
-    scene.refine_around_surface();
-    if (scene.grid.band_marked == mu_marking)
+    scene.update_moving_refinement();
+    if (scene.grid.moving_marked == mu_marking)
       return;
     mu_coefficients.assign(scene.spaces->n_mu_control_points(), scene.material.mu_0());
     mu_known.assign(mu_coefficients.size(), false);
-    mu_marking = scene.grid.band_marked;
+    mu_marking = scene.grid.moving_marked;
   }
 
 

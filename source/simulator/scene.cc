@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -106,12 +107,12 @@ namespace GelMPM
 
 
   template <int dim>
-  bool
-  Scene<dim>::refine_around_surface()
+  std::vector<dealii::Point<dim>>
+  Scene<dim>::band_surface_points() const
   {
-    if (!grid.follows_surface())
-      return false;
     std::vector<dealii::Point<dim>> surface;
+    if (!(grid.refinement_band > 0.))
+      return surface;
     for (const auto &particle : particles)
       {
         const auto properties = particle.get_properties();
@@ -129,9 +130,84 @@ namespace GelMPM
           all.insert(all.end(), part.begin(), part.end());
         surface = std::move(all);
       }
-    const bool changed = grid.mark_band(surface);
+    return surface;
+  }
+
+
+  template <int dim>
+  std::vector<std::vector<double>>
+  Scene<dim>::mu_spread_per_cell() const
+  {
+    std::vector<std::vector<double>> spread;
+    if (!(grid.refinement_mu_range > 0.))
+      return spread;
+    using Layout = PropertyLayout<dim>;
+    std::vector<std::vector<double>> lowest(grid.refinement_levels),
+      highest(grid.refinement_levels);
+    for (unsigned int l = 0; l < grid.refinement_levels; ++l)
+      {
+        unsigned int n = 1;
+        for (const unsigned int n_d : grid.pair_cells(l))
+          n *= n_d;
+        lowest[l].assign(n, std::numeric_limits<double>::max());
+        highest[l].assign(n, std::numeric_limits<double>::lowest());
+      }
+    const auto add = [&](const dealii::Point<dim> &x, const double mu) {
+      for (unsigned int l = 0; l < grid.refinement_levels; ++l)
+        {
+          const unsigned int c = grid.pair_cell_of(x, l);
+          lowest[l][c]         = std::min(lowest[l][c], mu);
+          highest[l][c]        = std::max(highest[l][c], mu);
+        }
+    };
+    for (const auto &particle : particles)
+      {
+        const auto properties = particle.get_properties();
+        const auto x          = particle.get_location();
+        add(x, properties[Layout::mu]);
+        // A bath's mu refines before the gel has taken it up (at t = 0 the points all hold
+        // mu_0): the prescribed value at the functions' time, the start of the step.
+        const int piece = std::lround(properties[Layout::piece]);
+        if (kind_of(properties) != PointKind::volume && piece >= 0 &&
+            boundary_conditions.piece(piece).chemical_potential_prescribed())
+          {
+            dealii::Point<dim> X_0;
+            for (unsigned int d = 0; d < dim; ++d)
+              X_0[d] = properties[Layout::position_0 + d];
+            add(x, boundary_conditions.piece(piece).chemical_potential_value().value(X_0));
+          }
+      }
+    spread.resize(grid.refinement_levels);
+    for (unsigned int l = 0; l < grid.refinement_levels; ++l)
+      {
+        if (Collective::is_parallel(communicator))
+          {
+            dealii::Utilities::MPI::min(lowest[l], communicator, lowest[l]);
+            dealii::Utilities::MPI::max(highest[l], communicator, highest[l]);
+          }
+        spread[l].assign(lowest[l].size(), 0.);
+        for (unsigned int c = 0; c < spread[l].size(); ++c)
+          if (highest[l][c] > lowest[l][c])
+            spread[l][c] = highest[l][c] - lowest[l][c];
+      }
+    return spread;
+  }
+
+
+  template <int dim>
+  bool
+  Scene<dim>::update_moving_refinement()
+  {
+    if (!grid.moves())
+      return false;
+    // q + 2 cells of a level round a front: as deep as the shallowest box that the extension
+    // accepts at a boundary (§4.1's, 4 cells of its level for q = 2).
+    const bool changed = grid.mark_moving(band_surface_points(),
+                                          mu_spread_per_cell(),
+                                          discretisation.chemical_potential_degree + 2);
     if (changed)
       spaces->rebuild_hierarchies(grid);
+    merge_points_to_leaves(particles, grid, regions, generator.points_per_cell, *triangulation);
     split_points_to_leaves(particles, grid, regions, generator.points_per_cell, *triangulation);
     return changed;
   }
@@ -369,7 +445,7 @@ namespace GelMPM
     grid.create_triangulation(*triangulation);
     particles.initialize(*triangulation, mapping, PropertyLayout<dim>::n_properties);
     generator.generate(geometry, grid, *triangulation, boundary_conditions, regions, particles);
-    refine_around_surface();
+    update_moving_refinement();
     balance_partition();
   }
 

@@ -6,7 +6,9 @@
 // - after an affine deformation (x = c + G (X - c), F = lambda_0 G) in an axisymmetric scene the
 //   children lie at c + G (X_c - c) within 1e-12 and the sums of V_0, V_n, N_0 A_0 and N_n A_n
 //   over the body are the parent's within 1e-13 relative; the hoop stretch is lambda_0 r / R;
-// - a point of a mesh element (spacing -1) stays whole.
+// - a point of a mesh element (spacing -1) stays whole;
+// - coarsened again, the split volume points merge back into the points they came from: every
+//   property and position within 1e-12, the sums of V_0 and V_n within 1e-13 relative.
 #include <gelmpm/particles/material_point_generator.h>
 #include <gelmpm/particles/point_refinement.h>
 
@@ -224,6 +226,10 @@ namespace
           props[Layout::spacing_level] = -1, first = false;
       }
     sums(uniform.particles, before);
+    std::vector<Record<2>> volume_before;
+    for (const auto &r : records(uniform.particles))
+      if (kind_of(r.properties) == PointKind::volume)
+        volume_before.push_back(r);
     // The deformed body reaches y = 0.2 * 1.5 + 0.9 * 1.25 = 1.425: the box over y >= 1 holds
     // its top in the current configuration.
     uniform.split_like(refined.grid);
@@ -261,6 +267,39 @@ namespace
     report("the point of spacing -1 kept whole", unsplit == 1);
     report("points were split",
            uniform.particles.n_global_particles() > refined.particles.n_global_particles() / 2);
+
+    // Coarsened again: the children merge back into the points they came from.
+    uniform.grid.refinement_boxes.clear();
+    uniform.grid.refinement_levels = 0;
+    const unsigned long removed    = merge_points_to_leaves(uniform.particles,
+                                                         uniform.grid,
+                                                         uniform.regions,
+                                                         uniform.generator.points_per_cell,
+                                                         uniform.tria);
+    std::cout << "  " << removed << " points removed by merging" << std::endl;
+    std::vector<Record<2>> volume_after;
+    for (const auto &r : records(uniform.particles))
+      if (kind_of(r.properties) == PointKind::volume)
+        volume_after.push_back(r);
+    bool   same_count = volume_after.size() == volume_before.size();
+    double largest    = 0.;
+    for (unsigned int i = 0; same_count && i < volume_after.size(); ++i)
+      {
+        largest = std::max(largest, volume_after[i].x.distance(volume_before[i].x));
+        for (unsigned int k = 0; k < Layout::n_properties; ++k)
+          largest =
+            std::max(largest,
+                     std::abs(volume_after[i].properties[k] - volume_before[i].properties[k]) /
+                       std::max(1., std::abs(volume_before[i].properties[k])));
+      }
+    report("merged back: the volume points before the split, their number", same_count);
+    report("merged back: positions and every property within 1e-12 (relative above 1)",
+           same_count && largest < 1e-12);
+    std::vector<double> merged(4, 0.);
+    sums(uniform.particles, merged);
+    report("merged back: sum V_0 and V_n kept within 1e-13 relative",
+           std::abs(merged[0] / before[0] - 1.) < 1e-13 &&
+             std::abs(merged[1] / before[1] - 1.) < 1e-13);
   }
 } // namespace
 

@@ -58,6 +58,25 @@ namespace GelMPM
                          const MaterialRegions<dim>              &regions,
                          const unsigned int                       points_per_cell,
                          const dealii::Triangulation<dim>        &triangulation);
+
+  /**
+   * Merge the volume points whose leaf cell of @p grid is coarser than their spacing back into
+   * their parents, one level at a time: the 2^dim points of spacing s whose X_0 lie in one
+   * sub-cell of spacing s - 1 of the generator's lattice (the children of one split), when all
+   * of them are on this rank and lie in leaves of level below s. The merged point has the sum of
+   * their V_0 and V_n (so the body's volume and solvent content stay to round-off), the mean of
+   * their X_0, x, mu and increments weighted by their shares of the parent's sub-cell (V_0, or
+   * V_0 / R_0 in an axisymmetric scene), and their weighted mean F scaled
+   * so that its J is V_n / V_0 (the children of one split, deformed alike, give back the
+   * parent). Surface points are not merged. Returns the number of points removed over all ranks.
+   */
+  template <int dim>
+  unsigned long
+  merge_points_to_leaves(dealii::Particles::ParticleHandler<dim> &particles,
+                         const BackgroundGrid<dim>               &grid,
+                         const MaterialRegions<dim>              &regions,
+                         const unsigned int                       points_per_cell,
+                         const dealii::Triangulation<dim>        &triangulation);
 } // namespace GelMPM
 
 #endif

@@ -55,32 +55,48 @@ namespace GelMPM
     std::vector<std::vector<bool>> region_marked;
     /**
      * 'Refinement band' (0: none) and 'Refinement band pieces' (empty: every piece): the grid is
-     * refined within this distance of the body's current surface, marked anew every step
-     * (mark_band()).
+     * refined within this distance of the body's current surface, marked anew every step.
      */
     double                   refinement_band = 0.;
     std::vector<std::string> band_piece_names;
     /**
-     * Per level l < refinement_levels and cell of the grid of pairs at level l: whether the band
-     * refines it (mark_band()). Empty before the first marking and without a band.
+     * 'Refinement mu range' (0: none): the grid is refined where the points' mu (and the
+     * prescribed mu of their surface points) in a cell spans more than this, marked anew every
+     * step.
      */
-    std::vector<std::vector<bool>> band_marked;
+    double refinement_mu_range = 0.;
+    /**
+     * Per level l < refinement_levels and cell of the grid of pairs at level l: whether the band
+     * or the mu range refines it (mark_moving()). Empty before the first marking and without
+     * either.
+     */
+    std::vector<std::vector<bool>> moving_marked;
 
-    /** Whether 'Refinement band' is set: the refinement follows the body's surface. */
+    /** Whether a band or a mu range is set: the refinement is marked anew every step. */
     bool
-    follows_surface() const;
+    moves() const;
 
     /** The entry that refines the grid, named in errors of the refined path. */
     std::string
     refinement_entry() const;
 
+    /** The cell of the grid of pairs at level @p level that holds @p x (clamped into the grid). */
+    unsigned int
+    pair_cell_of(const dealii::Point<dim> &x, const unsigned int level) const;
+
     /**
      * Mark the cells of the grid of pairs, at every level, whose box lies within
      * 'Refinement band' of one of the points @p surface (the surface points' current
-     * positions, over all ranks). Returns whether the marking changed.
+     * positions, over all ranks), or whose points' mu spans more than 'Refinement mu range'
+     * (@p mu_spread[l][c] for cell c of level l; empty without a range), together with the
+     * cells within @p buffer cells of the latter at their level (so that the extension finds
+     * blocks of interior functions of every level: a front one cell thick would not). Returns
+     * whether the marking changed.
      */
     bool
-    mark_band(const std::vector<dealii::Point<dim>> &surface);
+    mark_moving(const std::vector<dealii::Point<dim>>  &surface,
+                const std::vector<std::vector<double>> &mu_spread,
+                const unsigned int                      buffer);
 
     /** Whether some cells are refined. */
     bool

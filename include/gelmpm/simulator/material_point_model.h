@@ -140,9 +140,10 @@ namespace GelMPM
 
   private:
     /**
-     * The grid reset's first part with 'Background grid/Refinement band': the grid marked round
-     * the surface, the points split; the mu coefficients, which belong to the last marking's
-     * control points, are forgotten when it changed (the step starts from the points' mu).
+     * The grid reset's first part with 'Background grid/Refinement band' or 'Refinement mu
+     * range': the grid marked anew, the points split; the mu coefficients, which belong to the last
+     * marking's control points, are forgotten when it changed (the step starts from the points'
+     * mu).
      */
     void
     follow_surface();

@@ -161,13 +161,15 @@ namespace GelMPM
     }
 
     /**
-     * 'Background grid/Refinement band': mark the grid anew round the current surface points
-     * (those of 'Refinement band pieces'; over all ranks), rebuild the spaces' hierarchies when
-     * the marking changed, and split the points that now lie in finer leaves than their spacing
-     * (split_points_to_leaves()). Returns whether the marking changed. Nothing without a band.
+     * 'Background grid/Refinement band' and 'Refinement mu range': mark the grid anew round the
+     * current surface points (those of 'Refinement band pieces'; over all ranks) and where the
+     * points' mu spans the range, rebuild the spaces' hierarchies when the marking changed,
+     * merge the volume points that now lie in coarser leaves than their spacing
+     * (merge_points_to_leaves()) and split those in finer ones (split_points_to_leaves()). Returns
+     * whether the marking changed. Nothing without either.
      */
     bool
-    refine_around_surface();
+    update_moving_refinement();
 
     /** The body's own material (section "Material"), region 0 of regions. */
     FloryRehnerGel<dim> material;
@@ -197,6 +199,17 @@ namespace GelMPM
     /** The indices of 'Background grid/Refinement band pieces'; InputError on an unknown name. */
     std::vector<int>
     band_piece_indices() const;
+
+    /** The current positions of the band's surface points, over all ranks (empty: no band). */
+    std::vector<dealii::Point<dim>>
+    band_surface_points() const;
+
+    /**
+     * Per level and cell of the grid of pairs, the range of the mu of the points in it and of
+     * the prescribed mu of its surface points, over all ranks (empty: no 'Refinement mu range').
+     */
+    std::vector<std::vector<double>>
+    mu_spread_per_cell() const;
 
     /** band_piece_indices(), read once (empty: every surface point). */
     std::vector<int> band_pieces;
