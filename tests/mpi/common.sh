@@ -35,6 +35,12 @@ fixed_steps() {
          --set "Time stepping/End time=$(awk -v d="$1" -v n="$2" 'BEGIN { print d * n }')")
 }
 
+# statistic FILE COLUMN ROW: the value of COLUMN (by its header) in line ROW of FILE (1: the header).
+statistic() {
+  awk -F, -v name="$2" -v row="$3" 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == name) c = i }
+                                    NR == row { print $c }' "$1"
+}
+
 # The statistics agree (the tool prints its judgement per column).
 compare_statistics() {
   "$compare" "$@" one/statistics.csv two/statistics.csv
