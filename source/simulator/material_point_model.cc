@@ -1,4 +1,5 @@
 #include <gelmpm/core/collective.h>
+#include <gelmpm/core/input_error.h>
 #include <gelmpm/core/stop_request.h>
 #include <gelmpm/particles/point_location.h>
 #include <gelmpm/simulator/material_point_model.h>
@@ -36,11 +37,46 @@ namespace GelMPM
     if (!scene.grid.moves())
       return;
     scene.update_moving_refinement();
+    forget_mu_of_other_marking();
+  }
+
+
+  template <int dim>
+  void
+  MaterialPointModel<dim>::forget_mu_of_other_marking()
+  {
     if (scene.grid.moving_marked == mu_marking)
       return;
     mu_coefficients.assign(scene.spaces->n_mu_control_points(), scene.material.mu_0());
     mu_known.assign(mu_coefficients.size(), false);
     mu_marking = scene.grid.moving_marked;
+  }
+
+
+  template <int dim>
+  bool
+  MaterialPointModel<dim>::reset_grid()
+  {
+    const auto new_pattern = [this] {
+      return scene.system->setup(scene.particles, [this] {
+        linear_solver.new_pattern();
+      });
+    };
+    try
+      {
+        return new_pattern();
+      }
+    catch (const InputError &)
+      {
+        // A moving refinement can leave a refined region at the body's boundary thinner than
+        // the extension needs (a front's last cells at a corner): the step keeps the marking of
+        // the last one, which the extension accepted, and says so at the end of the run.
+        if (!scene.keep_last_marking())
+          throw;
+        ++n_kept_markings;
+        forget_mu_of_other_marking();
+        return new_pattern();
+      }
   }
 
 
@@ -61,9 +97,7 @@ namespace GelMPM
     // A grid reset that changes the classification gives the tangent a new sparsity pattern;
     // the factorisation of the old one goes first, while the matrix it refers to still exists.
     // Otherwise it stays, and Newton may start from it (modified Newton).
-    if (scene.system->setup(scene.particles, [this] {
-          linear_solver.new_pattern();
-        }))
+    if (reset_grid())
       ++n_new_patterns;
     if (linear_solver.may_iterate())
       {
@@ -309,6 +343,14 @@ namespace GelMPM
   {
     resumed_classification = classification;
     resumed_tangent        = tangent;
+  }
+
+
+  template <int dim>
+  unsigned long
+  MaterialPointModel<dim>::kept_markings() const
+  {
+    return n_kept_markings;
   }
 
 

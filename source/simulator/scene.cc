@@ -196,10 +196,24 @@ namespace GelMPM
 
   template <int dim>
   bool
+  Scene<dim>::keep_last_marking()
+  {
+    if (!grid.moves() || last_marking.empty() || last_marking == grid.moving_marked)
+      return false;
+    grid.moving_marked = last_marking;
+    spaces->rebuild_hierarchies(grid);
+    split_points_to_leaves(particles, grid, regions, generator.points_per_cell, *triangulation);
+    return true;
+  }
+
+
+  template <int dim>
+  bool
   Scene<dim>::update_moving_refinement()
   {
     if (!grid.moves())
       return false;
+    last_marking = grid.moving_marked;
     // q + 2 cells of a level round a front: as deep as the shallowest box that the extension
     // accepts at a boundary (§4.1's, 4 cells of its level for q = 2).
     const bool changed = grid.mark_moving(band_surface_points(),

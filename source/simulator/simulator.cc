@@ -438,6 +438,10 @@ namespace GelMPM
       pcout << "gelmpm: " << loop->newton_iterations() << " Newton iterations, "
             << loop->factorizations() << " factorisations (" << linear_solver.name() << "), "
             << model->new_patterns() << " sparsity patterns";
+    if (loop && model->kept_markings() > 0)
+      pcout << ", " << model->kept_markings()
+            << " step(s) on the last step's refinement (the new one too thin for the extension "
+               "at the body's boundary)";
     if (loop && loop->newton().reuse_contraction > 0.)
       {
         // Why the modified Newton iteration factorised, where it did not reuse.

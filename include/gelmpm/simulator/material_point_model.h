@@ -124,6 +124,9 @@ namespace GelMPM
     /** Grid resets that gave a new sparsity pattern, and repartitions of the grid. */
     unsigned long
     new_patterns() const;
+    /** Steps that kept the last step's moving refinement (Scene::keep_last_marking()). */
+    unsigned long
+    kept_markings() const;
     unsigned long
     repartitions() const;
 
@@ -147,6 +150,18 @@ namespace GelMPM
      */
     void
     follow_surface();
+
+    /** Forget the mu coefficients when they belong to another marking than the grid's. */
+    void
+    forget_mu_of_other_marking();
+
+    /**
+     * The grid reset proper (MixedSystem::setup()); if the extension cannot be built on this
+     * step's moving refinement, once more on the last step's. Returns whether the sparsity
+     * pattern is new.
+     */
+    bool
+    reset_grid();
 
     /** Chemical-potential coefficients of every control point of the mu grid, from a solution. */
     void
@@ -176,6 +191,7 @@ namespace GelMPM
     static constexpr double largest_imbalance         = 1.1;
     double                  imbalance_after_partition = 1.;
     unsigned long           n_new_patterns            = 0;
+    unsigned long           n_kept_markings           = 0;
     unsigned long           n_repartitions            = 0;
   };
 } // namespace GelMPM

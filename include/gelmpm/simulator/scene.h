@@ -171,6 +171,14 @@ namespace GelMPM
     bool
     update_moving_refinement();
 
+    /**
+     * Go back to the marking before the last update_moving_refinement() (its hierarchies, and
+     * the points split to its leaves; those merged stay merged): for a step whose new marking
+     * the extension cannot build. Returns false if there is nothing to go back to.
+     */
+    bool
+    keep_last_marking();
+
     /** The body's own material (section "Material"), region 0 of regions. */
     FloryRehnerGel<dim> material;
     /** Every gel of the body, by region (MaterialRegions). */
@@ -210,6 +218,9 @@ namespace GelMPM
      */
     std::vector<std::vector<double>>
     mu_spread_per_cell() const;
+
+    /** The moving refinement's marking before the last update (keep_last_marking()). */
+    std::vector<std::vector<bool>> last_marking;
 
     /** band_piece_indices(), read once (empty: every surface point). */
     std::vector<int> band_pieces;
