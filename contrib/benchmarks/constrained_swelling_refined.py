@@ -9,6 +9,8 @@ Runs, alternating so that a change of the machine's load shows in both, --repeat
             ('Refinement band = 0.1', 'Refinement band pieces = top'), unless --no-band;
   front R   the same scene with its box replaced by refinement where the points' mu spans more
             than R ('Refinement mu range', marked anew every step), for each R of --ranges;
+  material  the same scene with its box replaced by refinement round the material that starts
+            at y >= 0.9 ('Refinement material region = 0.9 - y'), with --material;
   uniform   prm/constrained_swelling.prm on 40 x 320 cells with steps growing by 1.05 (the
             uniform grid that is as accurate, doc/constrained_swelling.md), unless --no-uniform;
 each to the scene's end (1713 tau_d) without particle output, and compares Delta h with the
@@ -19,7 +21,7 @@ t >= 1e-3 tau_d (with its time), Delta h at 1.197e-3 tau_d and at the end, steps
 setting's.
 
     python3 contrib/benchmarks/constrained_swelling_refined.py [--output DIR] [--repeat N]
-        [--no-uniform] [--no-band] [--ranges 0.01,0.02] [--end T]
+        [--no-uniform] [--no-band] [--ranges 0.01,0.02] [--material] [--end T]
 
 Environment: GELMPM_BUILD_DIR (default: build). Needs only Python's standard library.
 """
@@ -105,6 +107,7 @@ def main():
     parser.add_argument("--no-uniform", action="store_true")
     parser.add_argument("--no-band", action="store_true")
     parser.add_argument("--ranges", default="", help="mu ranges of the 'front' variants")
+    parser.add_argument("--material", action="store_true")
     parser.add_argument("--end", type=float, default=1713.)
     args = parser.parse_args()
     build = os.path.abspath(os.environ.get("GELMPM_BUILD_DIR", os.path.join(TOP, "build")))
@@ -116,6 +119,10 @@ def main():
         variants.append((f"front {r:g}", "constrained_swelling_refined.prm",
                          ["Background grid/Refinement boxes=",
                           f"Background grid/Refinement mu range={r:g}"]))
+    if args.material:
+        variants.append(("material", "constrained_swelling_refined.prm",
+                         ["Background grid/Refinement boxes=",
+                          "Background grid/Refinement material region=0.9 - y"]))
     walls = {v[0]: [] for v in variants}
     for k in range(args.repeat):
         for name, scene, sets in variants:

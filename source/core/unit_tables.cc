@@ -28,6 +28,7 @@ namespace GelMPM
         {"Background grid/Refinement band", Q::length},
         {"Background grid/Refinement band pieces", Q::none},
         {"Background grid/Refinement mu range", Q::chemical_potential},
+        {"Background grid/Refinement material region", Q::none, Form::level_set},
         {"Background grid/Refinement levels", Q::none},
         {"Background grid/Refinement region", Q::none, Form::level_set},
         {"Boundary conditions/Pieces", Q::none},

@@ -56,6 +56,36 @@ namespace GelMPM
           ++i[d];
         }
     }
+
+
+    /**
+     * The level set @p text in x, y (, z) of the entry @p entry, or null if empty; InputError if
+     * it cannot be parsed.
+     */
+    template <int dim>
+    std::shared_ptr<dealii::FunctionParser<dim>>
+    parse_level_set(const std::string &text, const std::string &entry)
+    {
+      if (text.empty())
+        return nullptr;
+      const std::string variables = dim == 2 ? "x,y" : "x,y,z";
+      auto              parser    = std::make_shared<dealii::FunctionParser<dim>>(1);
+      try
+        {
+          const QuietCerr quiet;
+          parser->initialize(variables, text, {});
+          // The parser compiles lazily: evaluate once to surface syntax errors here.
+          (void)parser->value(dealii::Point<dim>());
+        }
+      catch (const dealii::ExceptionBase &e)
+        {
+          throw InputError(entry,
+                           "'" + text + "' cannot be parsed: " + describe(e),
+                           "write an expression in " + variables +
+                             ", <= 0 where the grid is to be refined");
+        }
+      return parser;
+    }
   } // namespace
 
 
@@ -139,6 +169,18 @@ namespace GelMPM
                       Patterns::Integer(1, 4),
                       "How many times the cells in 'Refinement boxes', 'Refinement region' and "
                       "'Refinement band' are halved.");
+    prm.declare_entry(
+      "Refinement material region",
+      "",
+      Patterns::Anything(),
+      "Refine the grid round the material that starts in this region: an "
+      "expression in x, y (, z) of the initial configuration, <= 0 in the region "
+      "(e.g. 'abs(x - 1.25) - 0.2' for a strip round a film's dip). At the start of "
+      "every step the cell pairs, at every level, that hold a point whose initial "
+      "position lies in the region are refined, with q + 2 cells round them, so "
+      "that the refined cells follow that material as it moves and deforms. "
+      "Points are split and merged as for 'Refinement band'. Combined with the "
+      "other entries. Empty: none.");
     prm.declare_entry("Refinement mu range",
                       "0",
                       Patterns::Double(0.),
@@ -168,6 +210,8 @@ namespace GelMPM
     refinement_levels                 = prm.get_integer("Refinement levels");
     refinement_band                   = prm.get_double("Refinement band");
     refinement_mu_range               = prm.get_double("Refinement mu range");
+    const std::string material_text =
+      dealii::Utilities::trim(prm.get("Refinement material region"));
     band_piece_names = dealii::Utilities::split_string_list(prm.get("Refinement band pieces"));
     prm.leave_subsection();
     require(!axisymmetric || dim == 2,
@@ -195,6 +239,8 @@ namespace GelMPM
       }
     parse_refinement_boxes(refinement_text);
     parse_refinement_region(region_text);
+    material_region =
+      parse_level_set<dim>(material_text, "Background grid/Refinement material region");
     moving_marked.clear();
     require(refinement_band > 0. || band_piece_names.empty(),
             "Background grid/Refinement band pieces",
@@ -267,27 +313,8 @@ namespace GelMPM
   void
   BackgroundGrid<dim>::parse_refinement_region(const std::string &text)
   {
-    refinement_region.reset();
     region_marked.clear();
-    if (text.empty())
-      return;
-    const std::string variables = dim == 2 ? "x,y" : "x,y,z";
-    auto              parser    = std::make_shared<dealii::FunctionParser<dim>>(1);
-    try
-      {
-        const QuietCerr quiet;
-        parser->initialize(variables, text, {});
-        // The parser compiles lazily: evaluate once to surface syntax errors here.
-        (void)parser->value(dealii::Point<dim>());
-      }
-    catch (const dealii::ExceptionBase &e)
-      {
-        throw InputError("Background grid/Refinement region",
-                         "'" + text + "' cannot be parsed: " + describe(e),
-                         "write an expression in " + variables +
-                           ", <= 0 where the grid is to be refined");
-      }
-    refinement_region = parser;
+    refinement_region = parse_level_set<dim>(text, "Background grid/Refinement region");
   }
 
 
@@ -388,7 +415,7 @@ namespace GelMPM
   bool
   BackgroundGrid<dim>::moves() const
   {
-    return refinement_band > 0. || refinement_mu_range > 0.;
+    return refinement_band > 0. || refinement_mu_range > 0. || material_region != nullptr;
   }
 
 
@@ -417,16 +444,18 @@ namespace GelMPM
       return "Background grid/Refinement boxes";
     if (refinement_region != nullptr)
       return "Background grid/Refinement region";
-    return refinement_band > 0. ? "Background grid/Refinement band"
-                                : "Background grid/Refinement mu range";
+    if (refinement_band > 0.)
+      return "Background grid/Refinement band";
+    return refinement_mu_range > 0. ? "Background grid/Refinement mu range"
+                                    : "Background grid/Refinement material region";
   }
 
 
   template <int dim>
   bool
-  BackgroundGrid<dim>::mark_moving(const std::vector<dealii::Point<dim>>  &surface,
-                                   const std::vector<std::vector<double>> &mu_spread,
-                                   const unsigned int                      buffer)
+  BackgroundGrid<dim>::mark_moving(const std::vector<dealii::Point<dim>> &surface,
+                                   const std::vector<std::vector<bool>>  &flagged,
+                                   const unsigned int                     buffer)
   {
     std::vector<std::vector<bool>> marked(refinement_levels);
     for (unsigned int l = 0; l < refinement_levels; ++l)
@@ -481,11 +510,11 @@ namespace GelMPM
     // A cell's points include its children's: the spread of a parent is at least theirs. The
     // cells within 'buffer' cells of a marked one are marked too, at every level: the parent of
     // such a cell lies within 'buffer' cells of the marked cell's parent, so the domains nest.
-    for (unsigned int l = 0; l < mu_spread.size() && l < refinement_levels; ++l)
+    for (unsigned int l = 0; l < flagged.size() && l < refinement_levels; ++l)
       {
         const auto n = pair_cells(l);
-        for (unsigned int c = 0; c < mu_spread[l].size(); ++c)
-          if (mu_spread[l][c] > refinement_mu_range)
+        for (unsigned int c = 0; c < flagged[l].size(); ++c)
+          if (flagged[l][c])
             for_each_cell_near<dim>(n, c, buffer, [&](const unsigned int near) {
               marked[l][near] = true;
             });

@@ -135,15 +135,16 @@ namespace GelMPM
 
 
   template <int dim>
-  std::vector<std::vector<double>>
-  Scene<dim>::mu_spread_per_cell() const
+  std::vector<std::vector<bool>>
+  Scene<dim>::flagged_cells() const
   {
-    std::vector<std::vector<double>> spread;
-    if (!(grid.refinement_mu_range > 0.))
-      return spread;
+    std::vector<std::vector<bool>> flagged;
+    const bool by_mu = grid.refinement_mu_range > 0., by_material = grid.material_region != nullptr;
+    if (!by_mu && !by_material)
+      return flagged;
     using Layout = PropertyLayout<dim>;
     std::vector<std::vector<double>> lowest(grid.refinement_levels),
-      highest(grid.refinement_levels);
+      highest(grid.refinement_levels), material(grid.refinement_levels);
     for (unsigned int l = 0; l < grid.refinement_levels; ++l)
       {
         unsigned int n = 1;
@@ -151,6 +152,7 @@ namespace GelMPM
           n *= n_d;
         lowest[l].assign(n, std::numeric_limits<double>::max());
         highest[l].assign(n, std::numeric_limits<double>::lowest());
+        material[l].assign(n, 0.);
       }
     const auto add = [&](const dealii::Point<dim> &x, const double mu) {
       for (unsigned int l = 0; l < grid.refinement_levels; ++l)
@@ -162,35 +164,40 @@ namespace GelMPM
     };
     for (const auto &particle : particles)
       {
-        const auto properties = particle.get_properties();
-        const auto x          = particle.get_location();
+        const auto         properties = particle.get_properties();
+        const auto         x          = particle.get_location();
+        dealii::Point<dim> X_0;
+        for (unsigned int d = 0; d < dim; ++d)
+          X_0[d] = properties[Layout::position_0 + d];
+        if (by_material && grid.material_region->value(X_0) <= 0.)
+          for (unsigned int l = 0; l < grid.refinement_levels; ++l)
+            material[l][grid.pair_cell_of(x, l)] = 1.;
+        if (!by_mu)
+          continue;
         add(x, properties[Layout::mu]);
         // A bath's mu refines before the gel has taken it up (at t = 0 the points all hold
         // mu_0): the prescribed value at the functions' time, the start of the step.
         const int piece = std::lround(properties[Layout::piece]);
         if (kind_of(properties) != PointKind::volume && piece >= 0 &&
             boundary_conditions.piece(piece).chemical_potential_prescribed())
-          {
-            dealii::Point<dim> X_0;
-            for (unsigned int d = 0; d < dim; ++d)
-              X_0[d] = properties[Layout::position_0 + d];
-            add(x, boundary_conditions.piece(piece).chemical_potential_value().value(X_0));
-          }
+          add(x, boundary_conditions.piece(piece).chemical_potential_value().value(X_0));
       }
-    spread.resize(grid.refinement_levels);
+    flagged.resize(grid.refinement_levels);
     for (unsigned int l = 0; l < grid.refinement_levels; ++l)
       {
         if (Collective::is_parallel(communicator))
           {
             dealii::Utilities::MPI::min(lowest[l], communicator, lowest[l]);
             dealii::Utilities::MPI::max(highest[l], communicator, highest[l]);
+            dealii::Utilities::MPI::max(material[l], communicator, material[l]);
           }
-        spread[l].assign(lowest[l].size(), 0.);
-        for (unsigned int c = 0; c < spread[l].size(); ++c)
-          if (highest[l][c] > lowest[l][c])
-            spread[l][c] = highest[l][c] - lowest[l][c];
+        flagged[l].assign(lowest[l].size(), false);
+        for (unsigned int c = 0; c < flagged[l].size(); ++c)
+          flagged[l][c] =
+            material[l][c] > 0. || (highest[l][c] > lowest[l][c] &&
+                                    highest[l][c] - lowest[l][c] > grid.refinement_mu_range);
       }
-    return spread;
+    return flagged;
   }
 
 
@@ -217,7 +224,7 @@ namespace GelMPM
     // q + 2 cells of a level round a front: as deep as the shallowest box that the extension
     // accepts at a boundary (§4.1's, 4 cells of its level for q = 2).
     const bool changed = grid.mark_moving(band_surface_points(),
-                                          mu_spread_per_cell(),
+                                          flagged_cells(),
                                           discretisation.chemical_potential_degree + 2);
     if (changed)
       spaces->rebuild_hierarchies(grid);

@@ -12,7 +12,9 @@
 // The same with the box replaced by refinement where the points' mu (and the bath's) span more
 // than 0.01 k_BT ('Background grid/Refinement mu range', marked anew every step with a buffer of
 // q + 2 cells), and that its refined region moves: the unknowns change from step to step and
-// points are split during the run, the solvent balance holding on a grid that changes.
+// points are split during the run, the solvent balance holding on a grid that changes. And the
+// same with refinement round the material that starts at y >= 0.9 ('Refinement material
+// region = 0.9 - y').
 #include <gelmpm/reference/constrained_swelling_1d.h>
 
 #include <deal.II/base/mpi.h>
@@ -100,5 +102,14 @@ main(int argc, char **argv)
                 *std::min_element(n_u.begin() + 1, n_u.end()))
             << std::endl;
   std::cout << "points split during the run: " << (points.back() > points[1]) << std::endl;
+
+  std::cout << "Refined round the material that starts at y >= 0.9 (marked every step):"
+            << std::endl;
+  auto        material        = run_and_check("material",
+                                {"Background grid/Refinement boxes=",
+                                               "Background grid/Refinement material region=0.9 - y"});
+  const auto &material_points = material["n_particles"];
+  std::cout << "the material's points split (more than the unrefined grid's 12,768): "
+            << (material_points[0] > 12768.) << std::endl;
   return 0;
 }

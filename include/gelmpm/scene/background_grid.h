@@ -66,6 +66,11 @@ namespace GelMPM
      */
     double refinement_mu_range = 0.;
     /**
+     * 'Refinement material region' (null: none): a level set of the initial configuration; the
+     * cells that hold a point whose X_0 lies in it are refined, marked anew every step.
+     */
+    std::shared_ptr<dealii::FunctionParser<dim>> material_region;
+    /**
      * Per level l < refinement_levels and cell of the grid of pairs at level l: whether the band
      * or the mu range refines it (mark_moving()). Empty before the first marking and without
      * either.
@@ -87,16 +92,16 @@ namespace GelMPM
     /**
      * Mark the cells of the grid of pairs, at every level, whose box lies within
      * 'Refinement band' of one of the points @p surface (the surface points' current
-     * positions, over all ranks), or whose points' mu spans more than 'Refinement mu range'
-     * (@p mu_spread[l][c] for cell c of level l; empty without a range), together with the
-     * cells within @p buffer cells of the latter at their level (so that the extension finds
-     * blocks of interior functions of every level: a front one cell thick would not). Returns
-     * whether the marking changed.
+     * positions, over all ranks), and the cells @p flagged[l][c] (cell c of level l: where the
+     * points' mu spans more than 'Refinement mu range' or a point starts in 'Refinement material
+     * region'; empty without either) together with the cells within @p buffer cells of those at
+     * their level (so that the extension finds blocks of interior functions of every level: a
+     * front one cell thick would not). Returns whether the marking changed.
      */
     bool
-    mark_moving(const std::vector<dealii::Point<dim>>  &surface,
-                const std::vector<std::vector<double>> &mu_spread,
-                const unsigned int                      buffer);
+    mark_moving(const std::vector<dealii::Point<dim>> &surface,
+                const std::vector<std::vector<bool>>  &flagged,
+                const unsigned int                     buffer);
 
     /** Whether some cells are refined. */
     bool

@@ -162,11 +162,11 @@ namespace GelMPM
 
     /**
      * 'Background grid/Refinement band' and 'Refinement mu range': mark the grid anew round the
-     * current surface points (those of 'Refinement band pieces'; over all ranks) and where the
-     * points' mu spans the range, rebuild the spaces' hierarchies when the marking changed,
-     * merge the volume points that now lie in coarser leaves than their spacing
-     * (merge_points_to_leaves()) and split those in finer ones (split_points_to_leaves()). Returns
-     * whether the marking changed. Nothing without either.
+     * current surface points (those of 'Refinement band pieces'; over all ranks), where the
+     * points' mu spans the range and round the material of 'Refinement material region', rebuild
+     * the spaces' hierarchies when the marking changed, merge the volume points that now lie in
+     * coarser leaves than their spacing (merge_points_to_leaves()) and split those in finer ones
+     * (split_points_to_leaves()). Returns whether the marking changed. Nothing without either.
      */
     bool
     update_moving_refinement();
@@ -213,11 +213,12 @@ namespace GelMPM
     band_surface_points() const;
 
     /**
-     * Per level and cell of the grid of pairs, the range of the mu of the points in it and of
-     * the prescribed mu of its surface points, over all ranks (empty: no 'Refinement mu range').
+     * Per level and cell of the grid of pairs, whether the mu of its points and the prescribed
+     * mu of its surface points span more than 'Refinement mu range', or one of its points starts
+     * in 'Refinement material region'; over all ranks (empty: neither is set).
      */
-    std::vector<std::vector<double>>
-    mu_spread_per_cell() const;
+    std::vector<std::vector<bool>>
+    flagged_cells() const;
 
     /** The moving refinement's marking before the last update (keep_last_marking()). */
     std::vector<std::vector<bool>> last_marking;
