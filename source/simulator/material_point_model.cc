@@ -32,11 +32,11 @@ namespace GelMPM
 
   template <int dim>
   void
-  MaterialPointModel<dim>::follow_surface()
+  MaterialPointModel<dim>::follow_surface(const double t_begin)
   {
     if (!scene.grid.moves())
       return;
-    scene.update_moving_refinement();
+    scene.update_moving_refinement(t_begin);
     forget_mu_of_other_marking();
   }
 
@@ -90,10 +90,10 @@ namespace GelMPM
 
   template <int dim>
   void
-  MaterialPointModel<dim>::begin_step(const double last_dt)
+  MaterialPointModel<dim>::begin_step(const double last_dt, const double t_begin)
   {
     dealii::TimerOutput::Scope scope(timer, "grid reset");
-    follow_surface();
+    follow_surface(t_begin);
     // A grid reset that changes the classification gives the tangent a new sparsity pattern;
     // the factorisation of the old one goes first, while the matrix it refers to still exists.
     // Otherwise it stays, and Newton may start from it (modified Newton).

@@ -176,7 +176,7 @@ namespace GelMPM
           continue;
         add(x, properties[Layout::mu]);
         // A bath's mu refines before the gel has taken it up (at t = 0 the points all hold
-        // mu_0): the prescribed value at the functions' time, the start of the step.
+        // mu_0): the prescribed value at the start of the step.
         const int piece = std::lround(properties[Layout::piece]);
         if (kind_of(properties) != PointKind::volume && piece >= 0 &&
             boundary_conditions.piece(piece).chemical_potential_prescribed())
@@ -216,10 +216,13 @@ namespace GelMPM
 
   template <int dim>
   bool
-  Scene<dim>::update_moving_refinement()
+  Scene<dim>::update_moving_refinement(const double t_begin)
   {
     if (!grid.moves())
       return false;
+    // The prescribed mu at the step's start, whatever time the last attempt left the boundary
+    // data at: a resumed run marks as the uninterrupted one.
+    boundary_conditions.set_time(t_begin);
     last_marking = grid.moving_marked;
     // q + 2 cells of a level round a front: as deep as the shallowest box that the extension
     // accepts at a boundary (§4.1's, 4 cells of its level for q = 2).
@@ -466,7 +469,7 @@ namespace GelMPM
     grid.create_triangulation(*triangulation);
     particles.initialize(*triangulation, mapping, PropertyLayout<dim>::n_properties);
     generator.generate(geometry, grid, *triangulation, boundary_conditions, regions, particles);
-    update_moving_refinement();
+    update_moving_refinement(0.);
     balance_partition();
   }
 

@@ -24,7 +24,7 @@ namespace GelMPM
 
 
   void
-  SteppedModel::begin_step(const double)
+  SteppedModel::begin_step(const double, const double)
   {}
 
 
@@ -223,7 +223,7 @@ namespace GelMPM
   TimeLoop::StepOutcome
   TimeLoop::advance()
   {
-    model.begin_step(last_dt);
+    model.begin_step(last_dt, control_.time());
     for (auto *observer : observers)
       observer->step_begins();
     dealii::Vector<double> solution;

@@ -52,7 +52,7 @@ namespace GelMPM
      * first iterates start from.
      */
     void
-    begin_step(const double last_dt) override;
+    begin_step(const double last_dt, const double t_begin) override;
 
     /** The step's boundary data, and the first iterate (initial_guess()). */
     void
@@ -149,7 +149,7 @@ namespace GelMPM
      * mu).
      */
     void
-    follow_surface();
+    follow_surface(const double t_begin);
 
     /** Forget the mu coefficients when they belong to another marking than the grid's. */
     void

@@ -167,9 +167,10 @@ namespace GelMPM
      * the spaces' hierarchies when the marking changed, merge the volume points that now lie in
      * coarser leaves than their spacing (merge_points_to_leaves()) and split those in finer ones
      * (split_points_to_leaves()). Returns whether the marking changed. Nothing without either.
+     * @p t_begin: the time the step starts at, of the prescribed mu.
      */
     bool
-    update_moving_refinement();
+    update_moving_refinement(const double t_begin);
 
     /**
      * Go back to the marking before the last update_moving_refinement() (its hierarchies, and

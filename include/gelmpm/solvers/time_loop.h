@@ -65,10 +65,10 @@ namespace GelMPM
     /**
      * Once per step, before its attempts: whatever the attempts share (the grid reset of the
      * material points). @p last_dt is the last accepted step (0 before the first and after a
-     * perturbation).
+     * perturbation), @p t_begin the time the step starts at.
      */
     virtual void
-    begin_step(const double last_dt);
+    begin_step(const double last_dt, const double t_begin);
 
     /**
      * Before every attempt of the step [@p t_begin, @p t_begin + @p dt]: set that step's
