@@ -19,6 +19,37 @@ namespace GelMPM
   namespace
   {
     /**
+     * Call @p f(cell, index) for every cell of a grid of @p n cells per direction whose
+     * multi-index lies between @p first and @p last (both included) in every direction.
+     */
+    template <int dim, typename F>
+    void
+    for_each_cell_between(const std::array<unsigned int, dim> &n,
+                          const std::array<unsigned int, dim> &first,
+                          const std::array<unsigned int, dim> &last,
+                          const F                             &f)
+    {
+      std::array<unsigned int, dim> i = first;
+      while (true)
+        {
+          unsigned int cell = 0, stride = 1;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              cell += i[d] * stride;
+              stride *= n[d];
+            }
+          f(cell, i);
+          unsigned int d = 0;
+          for (; d < dim && i[d] == last[d]; ++d)
+            i[d] = first[d];
+          if (d == dim)
+            return;
+          ++i[d];
+        }
+    }
+
+
+    /**
      * Call @p f(cell) for every cell of a grid of @p n cells per direction whose multi-index
      * differs from that of @p centre by at most @p distance in every direction.
      */
@@ -29,7 +60,7 @@ namespace GelMPM
                        const unsigned int                   distance,
                        const F                             &f)
     {
-      std::array<unsigned int, dim> first, last, i;
+      std::array<unsigned int, dim> first, last;
       unsigned int                  rest = centre;
       for (unsigned int d = 0; d < dim; ++d)
         {
@@ -38,23 +69,9 @@ namespace GelMPM
           first[d] = index >= distance ? index - distance : 0;
           last[d]  = std::min(n[d] - 1, index + distance);
         }
-      i = first;
-      while (true)
-        {
-          unsigned int cell = 0, stride = 1;
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              cell += i[d] * stride;
-              stride *= n[d];
-            }
-          f(cell);
-          unsigned int d = 0;
-          for (; d < dim && i[d] == last[d]; ++d)
-            i[d] = first[d];
-          if (d == dim)
-            return;
-          ++i[d];
-        }
+      for_each_cell_between<dim>(n, first, last, [&](const unsigned int cell, const auto &) {
+        f(cell);
+      });
     }
 
 
@@ -452,61 +469,58 @@ namespace GelMPM
 
 
   template <int dim>
+  std::vector<bool>
+  BackgroundGrid<dim>::band_cells(const unsigned int                     level,
+                                  const std::vector<dealii::Point<dim>> &surface) const
+  {
+    const auto              n = pair_cells(level);
+    std::array<double, dim> h;
+    unsigned int            n_total = 1;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        h[d] = (upper[d] - lower[d]) / n[d];
+        n_total *= n[d];
+      }
+    std::vector<bool> marked(n_total, false);
+    for (const auto &p : surface)
+      {
+        std::array<unsigned int, dim> first, last;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const auto index = [&](const double x) {
+              return static_cast<unsigned int>(
+                std::clamp((x - lower[d]) / h[d], 0., double(n[d] - 1)));
+            };
+            first[d] = index(p[d] - refinement_band);
+            last[d]  = index(p[d] + refinement_band);
+          }
+        for_each_cell_between<dim>(n, first, last, [&](const unsigned int cell, const auto &i) {
+          double distance_squared = 0.;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              const double lo = lower[d] + i[d] * h[d], hi = lo + h[d];
+              const double gap = std::max({lo - p[d], p[d] - hi, 0.});
+              distance_squared += gap * gap;
+            }
+          if (distance_squared <= refinement_band * refinement_band)
+            marked[cell] = true;
+        });
+      }
+    return marked;
+  }
+
+
+  template <int dim>
   bool
   BackgroundGrid<dim>::mark_moving(const std::vector<dealii::Point<dim>> &surface,
                                    const std::vector<std::vector<bool>>  &flagged,
                                    const unsigned int                     buffer)
   {
+    // A cell is marked when its box lies within the band's width of a surface point. Its
+    // parent's box contains it, so the parent is marked too: the domains nest.
     std::vector<std::vector<bool>> marked(refinement_levels);
     for (unsigned int l = 0; l < refinement_levels; ++l)
-      {
-        const auto              n = pair_cells(l);
-        std::array<double, dim> h;
-        unsigned int            n_total = 1;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            h[d] = (upper[d] - lower[d]) / n[d];
-            n_total *= n[d];
-          }
-        marked[l].assign(n_total, false);
-        // A cell is marked when its box lies within the band's width of a surface point. Its
-        // parent's box contains it, so the parent is marked too: the domains nest.
-        for (const auto &p : surface)
-          {
-            std::array<unsigned int, dim> first, last;
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                const auto index = [&](const double x) {
-                  return static_cast<unsigned int>(
-                    std::clamp((x - lower[d]) / h[d], 0., double(n[d] - 1)));
-                };
-                first[d] = index(p[d] - refinement_band);
-                last[d]  = index(p[d] + refinement_band);
-              }
-            std::array<unsigned int, dim> i = first;
-            while (true)
-              {
-                double       distance_squared = 0.;
-                unsigned int cell = 0, stride = 1;
-                for (unsigned int d = 0; d < dim; ++d)
-                  {
-                    const double lo = lower[d] + i[d] * h[d], hi = lo + h[d];
-                    const double gap = std::max({lo - p[d], p[d] - hi, 0.});
-                    distance_squared += gap * gap;
-                    cell += i[d] * stride;
-                    stride *= n[d];
-                  }
-                if (distance_squared <= refinement_band * refinement_band)
-                  marked[l][cell] = true;
-                unsigned int d = 0;
-                for (; d < dim && i[d] == last[d]; ++d)
-                  i[d] = first[d];
-                if (d == dim)
-                  break;
-                ++i[d];
-              }
-          }
-      }
+      marked[l] = band_cells(l, surface);
     // A cell's points include its children's: the spread of a parent is at least theirs. The
     // cells within 'buffer' cells of a marked one are marked too, at every level: the parent of
     // such a cell lies within 'buffer' cells of the marked cell's parent, so the domains nest.

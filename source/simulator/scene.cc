@@ -194,8 +194,7 @@ namespace GelMPM
         flagged[l].assign(lowest[l].size(), false);
         for (unsigned int c = 0; c < flagged[l].size(); ++c)
           flagged[l][c] =
-            material[l][c] > 0. || (highest[l][c] > lowest[l][c] &&
-                                    highest[l][c] - lowest[l][c] > grid.refinement_mu_range);
+            material[l][c] > 0. || highest[l][c] - lowest[l][c] > grid.refinement_mu_range;
       }
     return flagged;
   }

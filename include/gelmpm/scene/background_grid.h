@@ -90,6 +90,13 @@ namespace GelMPM
     pair_cell_of(const dealii::Point<dim> &x, const unsigned int level) const;
 
     /**
+     * The cells of the grid of pairs at level @p level whose box lies within 'Refinement band'
+     * of one of the points @p surface.
+     */
+    std::vector<bool>
+    band_cells(const unsigned int level, const std::vector<dealii::Point<dim>> &surface) const;
+
+    /**
      * Mark the cells of the grid of pairs, at every level, whose box lies within
      * 'Refinement band' of one of the points @p surface (the surface points' current
      * positions, over all ranks), and the cells @p flagged[l][c] (cell c of level l: where the
