@@ -245,6 +245,7 @@ namespace GelMPM
         }
     try
       {
+        u_copies_.clear();
         u_  = std::make_unique<ExtendedBSplineSpace<dim>>(*u_hierarchy_,
                                                          u_cell_has_material,
                                                          u_leaf_has_material,
@@ -310,6 +311,7 @@ namespace GelMPM
     for (unsigned int c = 0; c < u_cell_has_material.size(); ++c)
       if (u_cell_has_material[c])
         mu_has_material[mu_cell_of(c)] = true;
+    u_copies_.clear();
     u_  = std::make_unique<ExtendedBSplineSpace<dim>>(u_space_,
                                                      u_cell_has_material,
                                                      settings_.extension,
@@ -390,20 +392,46 @@ namespace GelMPM
   DiscreteSpaces<dim>::for_each_u_dof_function(const F &f) const
   {
     const unsigned int n = refined() ? u_hierarchy_->n_active_functions() : u_space_.n_functions();
+    // A copy of a function (set_u_copies()) is the same function for other points.
+    std::vector<unsigned int> control_point_of(u_->n_dofs(), 0);
+    const auto                call = [&](const unsigned int dof, const unsigned int i) {
+      if (!refined())
+        {
+          f(dof, u_space_, u_space_.function_multi_index(i));
+          return;
+        }
+      const auto &[level, function] = u_hierarchy_->active_function(i);
+      const auto &space             = u_hierarchy_->level_space(level);
+      f(dof, space, space.function_multi_index(function));
+    };
     for (unsigned int i = 0; i < n; ++i)
       {
         const unsigned int dof = u_->dof_of_control_point(i);
         if (dof == dealii::numbers::invalid_unsigned_int)
           continue;
-        if (!refined())
-          {
-            f(dof, u_space_, u_space_.function_multi_index(i));
-            continue;
-          }
-        const auto &[level, function] = u_hierarchy_->active_function(i);
-        const auto &space             = u_hierarchy_->level_space(level);
-        f(dof, space, space.function_multi_index(function));
+        control_point_of[dof] = i;
+        call(dof, i);
       }
+    for (unsigned int k = 0; k < u_copies_.size(); ++k)
+      call(u_->n_dofs() + k, control_point_of[u_copies_[k]]);
+  }
+
+
+  template <int dim>
+  bool
+  DiscreteSpaces<dim>::set_u_copies(std::vector<unsigned int> copy_of)
+  {
+    const bool changed = copy_of != u_copies_;
+    u_copies_          = std::move(copy_of);
+    return changed;
+  }
+
+
+  template <int dim>
+  const std::vector<unsigned int> &
+  DiscreteSpaces<dim>::u_copies() const
+  {
+    return u_copies_;
   }
 
 
@@ -425,7 +453,7 @@ namespace GelMPM
   unsigned int
   DiscreteSpaces<dim>::n_u_dofs() const
   {
-    return dim * u_->n_dofs();
+    return dim * (u_->n_dofs() + u_copies_.size());
   }
 
 

@@ -2,6 +2,7 @@
 #include <gelmpm/assembly/mixed_system.h>
 #include <gelmpm/core/collective.h>
 #include <gelmpm/core/format_point.h>
+#include <gelmpm/core/non_physical_state.h>
 #include <gelmpm/core/serial_blas.h>
 
 #include <deal.II/base/work_stream.h>
@@ -10,8 +11,10 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
@@ -45,6 +48,11 @@ namespace GelMPM
   MixedSystem<dim>::build_terms()
   {
     terms.build({boundary_conditions, nitsche, spaces_, tangent, contact_settings, obstacles});
+    const auto &self_contact = contact_settings.self_contact;
+    cache.separate_faces(self_contact.enabled() && self_contact.separate_faces
+                           ? self_contact_pieces(self_contact, boundary_conditions)
+                           : std::vector<bool>(),
+                         self_contact.minimum_arc_length * spaces_.h_u(0));
   }
 
 
@@ -81,7 +89,7 @@ namespace GelMPM
     auto couplings = terms.cell_couplings(cache);
     bool new_pattern =
       cache.classification() != pattern_classification || cache.leaf_classification_changed() ||
-      couplings != pattern_couplings ||
+      cache.separation_changed() || couplings != pattern_couplings ||
       (Collective::is_parallel(communicator) && cache.cell_holder() != pattern_holder);
     if (Collective::is_parallel(communicator))
       {
@@ -105,6 +113,7 @@ namespace GelMPM
         // Only now: a setup that throws on the way leaves the next one to rebuild the pattern.
         pattern_classification = cache.classification();
         cache.pattern_follows_leaves();
+        cache.pattern_follows_separation();
         pattern_holder    = cache.cell_holder();
         pattern_couplings = std::move(couplings);
       }
@@ -117,15 +126,7 @@ namespace GelMPM
   MixedSystem<dim>::unknowns_of_cell(const unsigned int                            u_cell,
                                      std::vector<dealii::types::global_dof_index> &dofs) const
   {
-    // All pieces of the cell: a pair term couples whole cells.
-    const unsigned int n_u = spaces_.n_u_dofs();
-    dofs.clear();
-    for (const unsigned int i : spaces_.u().cell_dofs(u_cell))
-      for (unsigned int c = 0; c < dim; ++c)
-        dofs.push_back(dim * i + c);
-    for (const unsigned int j : spaces_.mu().cell_dofs(spaces_.mu_cell_of(u_cell)))
-      dofs.push_back(n_u + j);
-    std::sort(dofs.begin(), dofs.end());
+    cache.unknowns_of_cell(u_cell, dofs);
   }
 
 
@@ -147,8 +148,9 @@ namespace GelMPM
     // On a refined grid every piece of an active cell: a surface point can move into a piece
     // without volume points, and so form a block, while the classification (which decides when
     // the pattern is rebuilt) stays. Measured: the refined swelling sphere added entries outside
-    // the pattern of its block-only version.
-    if (spaces_.refined())
+    // the pattern of its block-only version. Where faces are separated, a cell whose points all
+    // use copies can be joined by a point that uses its own functions, the separation staying.
+    if (spaces_.refined() || !spaces_.u_copies().empty())
       for (unsigned int c = 0; c < cache.classification().size(); ++c)
         if (cache.classification()[c])
           for (unsigned int p = 0; p < spaces_.u().n_pieces(c); ++p)
@@ -489,10 +491,20 @@ namespace GelMPM
         return;
       }
     // One rank: local and global indices coincide and every row's columns are sorted, as are
-    // the block's unknowns, so one merge per row finds the entries; the generic add searches
+    // the block's unknowns (but where copies of functions replace some of them, PointCache::
+    // separate_faces()), so one merge per row finds the entries; the generic add searches
     // for each entry and was the largest serial part of the assembly.
-    const Epetra_CrsMatrix &A = matrix_.trilinos_matrix();
-    const unsigned int      n = copy.dofs.size();
+    const Epetra_CrsMatrix   &A = matrix_.trilinos_matrix();
+    const unsigned int        n = copy.dofs.size();
+    std::vector<unsigned int> order;
+    if (!std::is_sorted(copy.dofs.begin(), copy.dofs.end()))
+      {
+        order.resize(n);
+        std::iota(order.begin(), order.end(), 0u);
+        std::sort(order.begin(), order.end(), [&copy](const unsigned int a, const unsigned int b) {
+          return copy.dofs[a] < copy.dofs[b];
+        });
+      }
     for (unsigned int i = 0; i < n; ++i)
       {
         int     length;
@@ -500,9 +512,10 @@ namespace GelMPM
         int    *columns;
         A.ExtractMyRowView(static_cast<int>(copy.dofs[i]), length, values, columns);
         int k = 0;
-        for (unsigned int j = 0; j < n; ++j)
+        for (unsigned int jj = 0; jj < n; ++jj)
           {
-            const int column = static_cast<int>(copy.dofs[j]);
+            const unsigned int j      = order.empty() ? jj : order[jj];
+            const int          column = static_cast<int>(copy.dofs[j]);
             while (k < length && columns[k] < column)
               ++k;
             // Checked in every build: a coupling the pattern lacks would otherwise be added
@@ -541,7 +554,7 @@ namespace GelMPM
             cache.points()[p].kind != PointKind::volume && cache.points()[p].assembled;
         if (!has_surface_points)
           continue;
-        scratch.gather_block_coefficients(block, spaces_, solution);
+        scratch.gather_block_coefficients(block, cache, spaces_, solution);
         const unsigned int mu0 = dim * scratch.n_u;
         for (unsigned int p = block.first; p < block.end; ++p)
           {
@@ -589,7 +602,7 @@ namespace GelMPM
                                cache.points()[p].assembled && contact->applies(cache.points()[p]);
         if (!has_contact_points)
           continue;
-        scratch.gather_block_coefficients(block, spaces_, solution);
+        scratch.gather_block_coefficients(block, cache, spaces_, solution);
         for (unsigned int p = block.first; p < block.end; ++p)
           {
             const PointRecord<dim> &point = cache.points()[p];
@@ -657,7 +670,7 @@ namespace GelMPM
     if (with_matrix)
       copy.matrix.reinit(n, n);
 
-    scratch.gather_block_coefficients(block, spaces_, solution);
+    scratch.gather_block_coefficients(block, cache, spaces_, solution);
     for (const auto *term : terms.all())
       term->start_block(scratch, block.end - block.first, with_matrix);
 
@@ -750,16 +763,18 @@ namespace GelMPM
     std::array<std::array<bool, 2>, dim> on_contact_plane{};
     for (unsigned int d = 0; d < dim && contact != nullptr; ++d)
       on_contact_plane[d] = {{contact->on_contact_plane(d, -1.), contact->on_contact_plane(d, 1.)}};
-    const auto update_point = [&](const unsigned int p) {
+    std::atomic<unsigned int> borrowed{0};
+    const auto                update_point = [&](const unsigned int p) {
       const PointRecord<dim> &r    = cache.points()[p];
       const auto [du, delta_F, mu] = cache.fields_at(r, solution);
 
-      const Tensor<2, dim> F_p = delta_F * r.F_p;
+      const Tensor<2, dim> F_p =
+        physical_or_borrowed_increment(r, delta_F, du, solution, borrowed) * r.F_p;
       // J_n relative to the initial configuration: in plane strain the out-of-plane stretch
       // stays lambda_0; in an axisymmetric scene the hoop stretch is r_{n+1}/R_0.
       const double lambda_0 = r.gel->lambda_0();
       const double hoop     = r.axisymmetric() ? (r.radius + du[0]) / r.X0[0] : 1.;
-      const double J_n      = hoop * dealii::determinant(F_p) / std::pow(lambda_0, dim);
+      const double J_n = hoop * dealii::determinant(F_p) / std::pow(lambda_0, dim);
 
       auto props = cache.particle(p)->get_properties();
       for (unsigned int i = 0; i < dim; ++i)
@@ -797,7 +812,7 @@ namespace GelMPM
         {
           const auto  &basis     = spaces_.u_space().basis_1d(d);
           const double tolerance = 0.25 * basis.cell_size();
-          const bool   held      = r.kind == PointKind::volume || r.projector[d][d] > 0.5;
+          const bool   held = r.kind == PointKind::volume || r.projector[d][d] > 0.5;
           if ((held || on_contact_plane[d][0]) && x[d] < basis.x_min() &&
               x[d] > basis.x_min() - tolerance)
             x[d] = basis.x_min();
@@ -821,6 +836,7 @@ namespace GelMPM
           update_point(p);
       },
       256);
+    n_borrowed_increments_ += borrowed;
 
     std::string failure;
     const auto  first_outside = std::find(outside.begin(), outside.end(), 1);
@@ -837,6 +853,56 @@ namespace GelMPM
                             "stays inside it ('Background grid/Lower corner', 'Upper corner')");
       }
     Collective::agree_on_failure<std::runtime_error>(communicator, failure);
+  }
+
+
+  template <int dim>
+  Tensor<2, dim>
+  MixedSystem<dim>::physical_or_borrowed_increment(const PointRecord<dim>       &r,
+                                                   const Tensor<2, dim>         &delta_F,
+                                                   const Tensor<1, dim>         &du,
+                                                   const dealii::Vector<double> &solution,
+                                                   std::atomic<unsigned int>    &borrowed) const
+  {
+    if (r.kind == PointKind::volume)
+      return delta_F;
+    const auto physical = [&r, &du](const Tensor<2, dim> &increment) {
+      const Tensor<2, dim> F_p = increment * r.F_p;
+      try
+        {
+          if (r.axisymmetric())
+            r.gel->mobility(F_p, r.hoop * (r.radius + du[0]) / r.radius);
+          else
+            r.gel->mobility(F_p);
+          return true;
+        }
+      catch (const NonPhysicalState &)
+        {
+          return false;
+        }
+    };
+    if (physical(delta_F))
+      return delta_F;
+    // Where the surface folds (a crease closing) the field's gradient extrapolated to a surface
+    // point can invert its F, which serves its normal and mobility only: it takes the increment
+    // of the nearest volume point of its block (whose functions it shares) instead.
+    const PointBlock &block   = cache.blocks()[r.block];
+    unsigned int      nearest = dealii::numbers::invalid_unsigned_int;
+    double            closest = std::numeric_limits<double>::max();
+    for (unsigned int q = block.first; q < block.end; ++q)
+      if (const auto &v = cache.points()[q];
+          v.kind == PointKind::volume && (v.x - r.x).norm() < closest)
+        {
+          closest = (v.x - r.x).norm();
+          nearest = q;
+        }
+    if (nearest == dealii::numbers::invalid_unsigned_int)
+      return delta_F;
+    const Tensor<2, dim> increment = cache.fields_at(cache.points()[nearest], solution).delta_F;
+    if (!physical(increment))
+      return delta_F;
+    ++borrowed;
+    return increment;
   }
 
 

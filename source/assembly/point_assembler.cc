@@ -5,10 +5,11 @@ namespace GelMPM
   template <int dim>
   void
   AssemblyScratch<dim>::gather_block_coefficients(const PointBlock             &block,
+                                                  const PointCache<dim>        &cache,
                                                   const DiscreteSpaces<dim>    &spaces,
                                                   const dealii::Vector<double> &solution)
   {
-    const auto        &u_dofs     = spaces.u().cell_dofs(block.u_cell, block.u_piece);
+    const auto        &u_dofs     = cache.u_dofs(block);
     const auto        &mu_dofs    = spaces.mu().cell_dofs(block.mu_cell, block.mu_piece);
     const unsigned int n_u_global = spaces.n_u_dofs();
     n_u                           = u_dofs.size();

@@ -88,7 +88,26 @@ namespace GelMPM
         failure = e.what();
       }
     Collective::agree_on_failure<std::runtime_error>(communicator, failure);
+    own_u_dofs_.clear();
+    side_lists_.clear();
+    separation_.clear();
+    if (separation_pieces_.empty())
+      {
+        group_points(unsorted, its, cells, pieces);
+        evaluate_shape_functions();
+        return;
+      }
+    // Separated faces: the parts of each support are judged on the cells' own functions, then
+    // the points are grouped again with the copies they use.
+    spaces.set_u_copies({});
+    const PointGraph graph = material_neighbours(unsorted, its);
+    anchor_surface_points(unsorted, graph, cells, pieces);
     group_points(unsorted, its, cells, pieces);
+    evaluate_shape_functions();
+    const auto sides = separate_supports(graph);
+    if (spaces.u_copies().empty())
+      return;
+    group_points(unsorted, its, cells, pieces, sides);
     evaluate_shape_functions();
   }
 
@@ -371,17 +390,26 @@ namespace GelMPM
   PointCache<dim>::group_points(const std::vector<PointRecord<dim>>  &unsorted,
                                 const std::vector<particle_iterator> &its,
                                 const std::vector<unsigned int>      &cells,
-                                const std::vector<unsigned int>      &pieces)
+                                const std::vector<unsigned int>      &pieces,
+                                const std::vector<unsigned int>      &sides)
   {
     // Stable: within a cell the points keep the handler's order, so that sums over them (and
     // with them the results) do not depend on the sort.
     // On a refined grid a cell's points are grouped further by the leaf (piece) they use.
     std::vector<unsigned int> order(unsorted.size());
     std::iota(order.begin(), order.end(), 0u);
+    const auto side = [&sides](const unsigned int i) {
+      return sides.empty() ? 0u : sides[i];
+    };
     std::stable_sort(order.begin(), order.end(), [&](const unsigned int a, const unsigned int b) {
-      return std::make_pair(cells[a], pieces[a]) < std::make_pair(cells[b], pieces[b]);
+      return std::make_tuple(cells[a], pieces[a], side(a)) <
+             std::make_tuple(cells[b], pieces[b], side(b));
     });
 
+    const auto own_list = [&](const unsigned int i) {
+      return side(i) == 0 ? -1 : side_lists_.at({cells[i], pieces[i], side(i)});
+    };
+    order_ = order;
     points_.clear();
     particles_.clear();
     blocks_.clear();
@@ -391,8 +419,12 @@ namespace GelMPM
     for (const unsigned int i : order)
       {
         const unsigned int cell = cells[i];
-        if (blocks_.empty() || blocks_.back().u_cell != cell || blocks_.back().u_piece != pieces[i])
-          blocks_.push_back(new_block(cell, pieces[i], points_.size()));
+        if (blocks_.empty() || blocks_.back().u_cell != cell ||
+            blocks_.back().u_piece != pieces[i] || blocks_.back().own_u_dofs != own_list(i))
+          {
+            blocks_.push_back(new_block(cell, pieces[i], points_.size()));
+            blocks_.back().own_u_dofs = own_list(i);
+          }
         PointRecord<dim> r = unsorted[i];
         r.block            = blocks_.size() - 1;
         r.level            = blocks_.back().level;
@@ -494,6 +526,37 @@ namespace GelMPM
       for (unsigned int c = 0; c < dim; ++c)
         dofs.push_back(dim * i + c);
     for (const unsigned int j : mu_dofs(block))
+      dofs.push_back(n_u + j);
+    std::sort(dofs.begin(), dofs.end());
+  }
+
+
+  template <int dim>
+  void
+  PointCache<dim>::unknowns_of_cell(const unsigned int                            u_cell,
+                                    std::vector<dealii::types::global_dof_index> &dofs) const
+  {
+    // All pieces of the cell (a pair term couples whole cells) and every copy its blocks use.
+    std::vector<unsigned int> u_dofs = spaces.u().cell_dofs(u_cell);
+    const auto                first  = std::lower_bound(blocks_.begin(),
+                                        blocks_.end(),
+                                        u_cell,
+                                        [](const PointBlock &b, const unsigned int c) {
+                                          return b.u_cell < c;
+                                        });
+    for (auto b = first; b != blocks_.end() && b->u_cell == u_cell; ++b)
+      if (b->own_u_dofs >= 0)
+        u_dofs.insert(u_dofs.end(),
+                      own_u_dofs_[b->own_u_dofs].begin(),
+                      own_u_dofs_[b->own_u_dofs].end());
+    std::sort(u_dofs.begin(), u_dofs.end());
+    u_dofs.erase(std::unique(u_dofs.begin(), u_dofs.end()), u_dofs.end());
+    const unsigned int n_u = spaces.n_u_dofs();
+    dofs.clear();
+    for (const unsigned int i : u_dofs)
+      for (unsigned int c = 0; c < dim; ++c)
+        dofs.push_back(dim * i + c);
+    for (const unsigned int j : spaces.mu().cell_dofs(spaces.mu_cell_of(u_cell)))
       dofs.push_back(n_u + j);
     std::sort(dofs.begin(), dofs.end());
   }

@@ -20,8 +20,7 @@ namespace GelMPM
       "Contact of the gel's boundary with itself (doc/method.md, \"Contact of the gel with "
       "itself\"): none (off: no term, no cost); penalty (the surface points of 'Pieces' against "
       "the segments of their current surface, frictionless, beta_s g on a point behind a "
-      "segment). 2D (plane strain and axisymmetric), one MPI rank. Where the two sides share "
-      "cells of the background grid they also stay tied by its functions (not undone here).");
+      "segment). 2D (plane strain and axisymmetric), one MPI rank.");
     prm.declare_entry(
       "Penalty",
       "1000",
@@ -49,6 +48,17 @@ namespace GelMPM
                       "never touches a segment whose ends lie closer than "
                       "this to it along the surface in the initial configuration (its own "
                       "segments and their neighbours; on a closed curve the shorter way round).");
+    prm.declare_entry(
+      "Separate faces",
+      "true",
+      Patterns::Bool(),
+      "Where the points in the support of a displacement function form two or more parts of the "
+      "material that are not connected there (the two faces of a closing crease, pore or slit, "
+      "told apart by their neighbours in the initial configuration), each further part that "
+      "holds surface points of 'Pieces' takes a copy of the function, an unknown of its own: the "
+      "faces slide and separate, and only the contact term pushes them apart "
+      "(doc/method.md, \"Two faces on one grid\"). false: they share the grid's functions and "
+      "stay tied about a cell apart (for comparison).");
     prm.declare_entry("Largest depth",
                       "0.25",
                       Patterns::Double(0.),
@@ -70,6 +80,7 @@ namespace GelMPM
     search_distance    = prm.get_double("Search distance");
     minimum_arc_length = prm.get_double("Minimum arc length");
     largest_depth      = prm.get_double("Largest depth");
+    separate_faces     = prm.get_bool("Separate faces");
     prm.leave_subsection();
     if (!enabled())
       return;

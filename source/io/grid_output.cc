@@ -46,7 +46,7 @@ namespace GelMPM
   {
     const unsigned int n_cells = dof_handler.get_triangulation().n_active_cells();
     if (u.space().n_cells() != n_cells || volume_points.size() != n_cells ||
-        solution.size() != dim * u.n_dofs() + mu.n_dofs())
+        solution.size() < dim * u.n_dofs() + mu.n_dofs())
       throw std::logic_error("GridOutput::record: the spaces, point counts and solution do not "
                              "match the background grid");
 
@@ -86,7 +86,8 @@ namespace GelMPM
     const unsigned int c      = cell->active_cell_index();
     const unsigned int mu_c   = mu.space().cell_containing(cell->center());
     const bool         has_mu = mu.cell_kind(mu_c) != CellKind::outer;
-    const unsigned int n_u    = dim * u.n_dofs();
+    // Copies of u functions (DiscreteSpaces::set_u_copies()) lie between u's DoFs and mu's.
+    const unsigned int n_u = solution.size() - mu.n_dofs();
 
     const auto         &u_dofs  = u.cell_dofs(c);
     const auto         &mu_dofs = has_mu ? mu.cell_dofs(mu_c) : std::vector<unsigned int>();

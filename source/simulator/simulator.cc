@@ -422,6 +422,12 @@ namespace GelMPM
             << " step(s) accepted with an error estimate above its tolerance whatever the step "
                "(a perturbation's jump or the points' integration noise)"
             << std::endl;
+    if (scene.system && scene.system->n_borrowed_increments() > 0)
+      pcout << "gelmpm: " << scene.system->n_borrowed_increments()
+            << " surface point update(s) took the nearest volume point's increment, their own "
+               "leaving the physical range where the surface folds (doc/method.md, \"Two faces "
+               "on one grid\")"
+            << std::endl;
     if (record.settings().test_mode)
       record.print_final_row();
     else

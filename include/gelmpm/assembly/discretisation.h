@@ -157,7 +157,25 @@ namespace GelMPM
     std::vector<dealii::types::global_dof_index>
     axis_unknowns() const;
 
-    /** Number of displacement unknowns (dim per DoF of the extended u space). */
+    /**
+     * Displacement functions taken twice or more this step: where the points in the support of
+     * an extended u function form several parts of the material that are not connected there
+     * (the two faces of a closing crease or pore, 'Contact/Self contact/Separate faces';
+     * PointCache), the points of each further part use a copy of it, an unknown of its own.
+     * Copy k of u DoF @p copy_of[k] is u DoF u().n_dofs() + k (its unknowns dim (n + k) + c).
+     * Returns whether they changed.
+     */
+    bool
+    set_u_copies(std::vector<unsigned int> copy_of);
+
+    /** Per copy of a displacement function (set_u_copies()), the u DoF it copies. */
+    const std::vector<unsigned int> &
+    u_copies() const;
+
+    /**
+     * Number of displacement unknowns: dim per DoF of the extended u space and per copy of one
+     * (set_u_copies()).
+     */
     unsigned int
     n_u_dofs() const;
     /** Number of chemical-potential unknowns. */
@@ -220,6 +238,7 @@ namespace GelMPM
     std::unique_ptr<HierarchicalBSplineSpace<dim>> u_hierarchy_;
     std::unique_ptr<HierarchicalBSplineSpace<dim>> mu_hierarchy_;
     std::vector<bool>                              u_leaf_has_material_;
+    std::vector<unsigned int>                      u_copies_;
     bool                                           inexact_extrapolation_tolerated = false;
     bool                                           axisymmetric_;
     // The entry that refines the grid, named when the extension cannot reach a refined region.

@@ -28,6 +28,7 @@
 #include <deal.II/lac/vector.h>
 #include <deal.II/particles/particle_handler.h>
 
+#include <atomic>
 #include <functional>
 #include <memory>
 #include <string>
@@ -158,6 +159,17 @@ namespace GelMPM
      */
     void
     update_particles(const dealii::Vector<double> &solution);
+
+    /**
+     * Surface points whose own increment Delta F would have taken their state out of the
+     * physical range and which took that of the nearest volume point of their block instead
+     * (update_particles()), summed over this object's steps.
+     */
+    unsigned int
+    n_borrowed_increments() const
+    {
+      return n_borrowed_increments_;
+    }
 
     /**
      * Axisymmetric scenes: set the radial unknowns on the axis (DiscreteSpaces::axis_unknowns())
@@ -352,6 +364,13 @@ namespace GelMPM
     const DiscreteSpaces<dim> &
     spaces() const;
 
+    /** The points of the last setup(), their blocks and shape functions. */
+    const PointCache<dim> &
+    point_cache() const
+    {
+      return cache;
+    }
+
     /**
      * Contract the volume points' tangent with the entries of A_n (@p generic true, the former
      * assembly, kept as the reference) instead of its structure (VolumeTermAssembler). The
@@ -415,6 +434,18 @@ namespace GelMPM
       const std::vector<std::pair<unsigned int, unsigned int>> &couplings) const;
 
     /** The scene's terms anew (TermList::build()). */
+    /**
+     * The increment of a point's F for update_particles(): @p delta_F, but for a surface point
+     * whose state it would take out of the physical range the nearest volume point's of its
+     * block (counted in @p borrowed) if that one keeps it physical.
+     */
+    dealii::Tensor<2, dim>
+    physical_or_borrowed_increment(const PointRecord<dim>       &r,
+                                   const dealii::Tensor<2, dim> &delta_F,
+                                   const dealii::Tensor<1, dim> &du,
+                                   const dealii::Vector<double> &solution,
+                                   std::atomic<unsigned int>    &borrowed) const;
+
     void
     build_terms();
 
@@ -449,6 +480,7 @@ namespace GelMPM
     const MPI_Comm              communicator;
 
     PointCache<dim>      cache;
+    unsigned int         n_borrowed_increments_ = 0;
     PointProjection<dim> projection;
 
     // How the terms form their tangents (they refer to it), the "Contact" section and the

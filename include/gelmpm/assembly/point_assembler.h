@@ -94,9 +94,10 @@ namespace GelMPM
       return dim * n_u;
     }
 
-    /** The coefficients of @p solution on @p block's cells (du, mu, n_u, n_mu). */
+    /** The coefficients of @p solution on @p block's unknowns (du, mu, n_u, n_mu). */
     void
     gather_block_coefficients(const PointBlock             &block,
+                              const PointCache<dim>        &cache,
                               const DiscreteSpaces<dim>    &spaces,
                               const dealii::Vector<double> &solution);
 

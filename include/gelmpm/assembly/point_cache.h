@@ -15,7 +15,9 @@
 #include <deal.II/lac/vector.h>
 #include <deal.II/particles/particle_handler.h>
 
+#include <map>
 #include <optional>
+#include <tuple>
 #include <vector>
 
 namespace GelMPM
@@ -99,6 +101,26 @@ namespace GelMPM
     unsigned int u_piece = 0, mu_piece = 0;
     /** The refinement level of the u leaf (0 on a uniform grid). */
     unsigned int level = 0;
+    /**
+     * Where faces are separated (PointCache::separate_faces()): the index of the block's own
+     * list of u DoFs, in which copies replace some of the cell's functions; -1: the cell's.
+     */
+    int own_u_dofs = -1;
+  };
+
+
+  /** Per point, the indices of its material neighbours (compressed rows). */
+  struct PointGraph
+  {
+    std::vector<unsigned int> offsets{0};
+    std::vector<unsigned int> targets;
+
+    /** The neighbours of point @p i. */
+    std::pair<const unsigned int *, const unsigned int *>
+    neighbours(const unsigned int i) const
+    {
+      return {targets.data() + offsets[i], targets.data() + offsets[i + 1]};
+    }
   };
 
 
@@ -232,12 +254,69 @@ namespace GelMPM
       return n_active_cells_;
     }
 
-    /** The u DoFs whose extended functions are nonzero at the points of @p block. */
+    /**
+     * The u DoFs whose extended functions are nonzero at the points of @p block, in the order of
+     * the cell's (and of the shape arrays); where faces are separated, with the copies the
+     * block's points use in place of some of them.
+     */
     const std::vector<unsigned int> &
     u_dofs(const PointBlock &block) const
     {
-      return spaces.u().cell_dofs(block.u_cell, block.u_piece);
+      return block.own_u_dofs < 0 ? spaces.u().cell_dofs(block.u_cell, block.u_piece)
+                                  : own_u_dofs_[block.own_u_dofs];
     }
+
+    /**
+     * Separate the faces of the material from the next gather() on ('Contact/Self contact/
+     * Separate faces', doc/method.md, "Two faces on one grid"); @p pieces flags the boundary
+     * pieces whose surface points take part (empty: off, the default).
+     *
+     * Two points are material neighbours when their distance in the initial configuration is
+     * at most 1.5 times the larger of their spacings, a surface point never with a point in
+     * front of it nor with a surface point facing it (N_0 . N_0 < 0). For each extended u
+     * function whose support holds a surface point of @p pieces, the points of its support
+     * (the blocks whose DoFs include it) fall into parts connected by neighbours within the
+     * support. Where two or more parts hold such a surface point and more than 1 % of the
+     * function's weight sum V_n |N| over the volume points, the part of most points keeps the
+     * function and each other one takes a copy (DiscreteSpaces::set_u_copies()); the rest
+     * (slivers cut off by the edge of the support) keep the function, and so does a part whose
+     * surface points lie within @p along_surface of the keeper's along the surface (a path over
+     * neighbouring surface points in the initial configuration): the flanks next to a fold's
+     * tip, which the self-contact does not pair ('Minimum arc length'). A surface point of
+     * @p pieces is evaluated in the cell (leaf) of one of its neighbouring volume points, so
+     * that it does not take the functions of another part lying in its cell.
+     */
+    void
+    separate_faces(std::vector<bool> pieces, const double along_surface = 0.);
+
+    /** Copies of displacement functions made by separate_faces() this step. */
+    unsigned int
+    n_function_copies() const
+    {
+      return spaces.u_copies().size();
+    }
+
+    /** Whether the separation of this step differs from the one of the sparsity pattern. */
+    bool
+    separation_changed() const
+    {
+      return separation_ != pattern_separation_;
+    }
+
+    /** The sparsity pattern now follows the separation. */
+    void
+    pattern_follows_separation()
+    {
+      pattern_separation_ = separation_;
+    }
+
+    /**
+     * The unknowns (u interleaved, then mu), sorted, of every piece of @p u_cell and of the
+     * copies its blocks use: those a pair term couples with a cell.
+     */
+    void
+    unknowns_of_cell(const unsigned int                            u_cell,
+                     std::vector<dealii::types::global_dof_index> &dofs) const;
     /** The mu DoFs whose extended functions are nonzero at the points of @p block. */
     const std::vector<unsigned int> &
     mu_dofs(const PointBlock &block) const
@@ -320,15 +399,68 @@ namespace GelMPM
                           const unsigned int      piece) const;
 
     /**
-     * Order the records @p unsorted (of the particles @p its) by their @p cells and @p pieces
-     * into the blocks of assembly, and give each its offsets into the shape arrays (which are
-     * sized here).
+     * Order the records @p unsorted (of the particles @p its) by their @p cells, @p pieces and
+     * @p sides (if not empty: 0 the cell's functions, s > 0 the list own_u_dofs_[side_lists_
+     * (cell, piece, s)]) into the blocks of assembly, and give each its offsets into the shape
+     * arrays (which are sized here).
      */
     void
     group_points(const std::vector<PointRecord<dim>>  &unsorted,
                  const std::vector<particle_iterator> &its,
                  const std::vector<unsigned int>      &cells,
-                 const std::vector<unsigned int>      &pieces);
+                 const std::vector<unsigned int>      &pieces,
+                 const std::vector<unsigned int>      &sides = {});
+
+    /** Whether record @p r is a surface point of the pieces whose faces are separated. */
+    bool
+    separates(const PointRecord<dim> &r) const
+    {
+      return r.kind != PointKind::volume && r.piece >= 0 && !separation_pieces_.empty() &&
+             separation_pieces_[r.piece];
+    }
+
+    /**
+     * The material neighbours of the records @p unsorted (separate_faces()), from the
+     * properties of their particles @p its.
+     */
+    PointGraph
+    material_neighbours(const std::vector<PointRecord<dim>>  &unsorted,
+                        const std::vector<particle_iterator> &its) const;
+
+    /**
+     * Move each separated surface point of @p unsorted whose cell and piece hold none of its
+     * neighbouring volume points to those of its nearest one (in the initial configuration).
+     */
+    void
+    anchor_surface_points(const std::vector<PointRecord<dim>> &unsorted,
+                          const PointGraph                    &graph,
+                          std::vector<unsigned int>           &cells,
+                          std::vector<unsigned int>           &pieces) const;
+
+    /**
+     * On the blocks of the first grouping, the parts of every separated function's support:
+     * sets the copies of the step in the spaces and returns, per unsorted point, its side
+     * (0: no copy; own_u_dofs_ and side_lists_ hold the others' lists).
+     */
+    std::vector<unsigned int>
+    separate_supports(const PointGraph &graph);
+
+    /**
+     * Per sorted point, the copies it uses: (position in its block's u DoFs, copy's DoF), from
+     * the parts of every separated function's support (separate_faces()).
+     */
+    std::vector<std::vector<std::pair<unsigned int, unsigned int>>>
+    copies_of_points(const PointGraph &graph, std::vector<unsigned int> &copy_of);
+
+    /**
+     * Whether a path over neighbouring surface points of @p graph, no longer than @p reach in
+     * the initial configuration, joins a point of @p from to one of @p to (unsorted indices).
+     */
+    bool
+    near_along_surface(const PointGraph                &graph,
+                       const std::vector<unsigned int> &from,
+                       const std::vector<unsigned int> &to,
+                       const double                     reach) const;
 
     /** The block of the points of piece @p u_piece of @p u_cell, from point @p first on. */
     PointBlock
@@ -354,6 +486,15 @@ namespace GelMPM
     std::vector<bool>                   classification_;
     std::vector<bool>                   leaf_classification_, pattern_leaf_classification_;
     std::vector<unsigned int>           cell_holder_;
+    // Separated faces: the pieces (empty: off), the blocks' own lists of u DoFs, the list of each
+    // (cell, piece, side), the sorted points' unsorted indices, and the step's separation (the
+    // copies and the blocks' lists, flattened) against the sparsity pattern's.
+    std::vector<bool>                                                   separation_pieces_;
+    std::vector<std::vector<unsigned int>>                              own_u_dofs_;
+    std::map<std::tuple<unsigned int, unsigned int, unsigned int>, int> side_lists_;
+    std::vector<unsigned int>                                           order_, sorted_of_;
+    double                    separation_along_surface_ = 0.;
+    std::vector<unsigned int> separation_, pattern_separation_;
   };
 } // namespace GelMPM
 

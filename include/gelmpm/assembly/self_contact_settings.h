@@ -40,6 +40,9 @@ namespace GelMPM
     /** At the start of a step, a point up to this far (in the same cells) behind a segment is its
      * pair (a penetration the penalty left); farther it is the other face of a thin body. */
     double largest_depth = 0.25;
+    /** Whether parts of the material that share a displacement function's support without being
+     * connected there take copies of it (PointCache::separate_faces()). */
+    bool separate_faces = true;
 
     bool
     enabled() const

@@ -64,7 +64,8 @@ namespace GelMPM
      * the classification of @p u and @p mu, the @p volume_points per displacement cell that the
      * classification was made from, and the fields of @p solution, which holds the increment du
      * then mu in the layout of DiscreteSpaces (index dim*i + c for component c of u DoF i,
-     * dim*u.n_dofs() + j for mu DoF j).
+     * n_u + j for mu DoF j, n_u = solution.size() - mu.n_dofs(): copies of u functions may
+     * follow u's own, DiscreteSpaces::set_u_copies(); the grid shows u's own functions).
      */
     void
     record(const ExtendedBSplineSpace<dim> &u,

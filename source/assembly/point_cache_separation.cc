@@ -1,0 +1,423 @@
+// The separation of faces that share the background grid's functions (PointCache::
+// separate_faces(), doc/method.md, "Two faces on one grid"): which points of a function's support
+// are one piece of material, and the copies of the function for the others.
+#include <gelmpm/assembly/point_cache.h>
+#include <gelmpm/core/collective.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <numeric>
+#include <queue>
+#include <stdexcept>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace GelMPM
+{
+  namespace Separation
+  {
+    /** Union-find over the points of one support. */
+    struct Parts
+    {
+      std::vector<unsigned int> parent;
+
+      explicit Parts(const unsigned int n)
+        : parent(n)
+      {
+        std::iota(parent.begin(), parent.end(), 0u);
+      }
+
+      unsigned int
+      root(unsigned int i)
+      {
+        while (parent[i] != i)
+          i = parent[i] = parent[parent[i]];
+        return i;
+      }
+
+      void
+      join(const unsigned int a, const unsigned int b)
+      {
+        const unsigned int ra = root(a), rb = root(b);
+        // The smaller index is the root: the parts do not depend on the order of the joins.
+        if (ra != rb)
+          parent[std::max(ra, rb)] = std::min(ra, rb);
+      }
+    };
+
+
+    /** What a part of a support holds. */
+    struct Part
+    {
+      unsigned int points            = 0;
+      bool         separated_surface = false;
+      double       weight            = 0.;
+    };
+  } // namespace Separation
+
+
+  template <int dim>
+  void
+  PointCache<dim>::separate_faces(std::vector<bool> pieces, const double along_surface)
+  {
+    separation_along_surface_ = along_surface;
+    if (Collective::is_parallel(communicator) &&
+        std::find(pieces.begin(), pieces.end(), true) != pieces.end())
+      throw std::logic_error("PointCache::separate_faces: one MPI rank only");
+    if (std::find(pieces.begin(), pieces.end(), true) == pieces.end())
+      pieces.clear();
+    separation_pieces_ = std::move(pieces);
+  }
+
+
+  template <int dim>
+  PointGraph
+  PointCache<dim>::material_neighbours(const std::vector<PointRecord<dim>>  &unsorted,
+                                       const std::vector<particle_iterator> &its) const
+  {
+    using Layout                  = PropertyLayout<dim>;
+    const unsigned int          n = unsorted.size();
+    std::vector<double>         spacing(n);
+    std::vector<Tensor<1, dim>> normal_0(n);
+    double                      largest = 0.;
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const auto   properties = its[i]->get_properties();
+        const auto  &r          = unsorted[i];
+        const double revolved = (spaces.axisymmetric() && r.X0[0] > 0.) ? 2. * M_PI * r.X0[0] : 1.;
+        const double measure  = properties[Layout::measure_0] / revolved;
+        if (r.kind == PointKind::volume)
+          spacing[i] = std::pow(measure, 1. / dim);
+        else
+          {
+            for (unsigned int d = 0; d < dim; ++d)
+              normal_0[i][d] = properties[Layout::normal_area_0 + d];
+            normal_0[i] /= normal_0[i].norm();
+            spacing[i] = std::pow(measure, 1. / (dim - 1));
+          }
+        largest = std::max(largest, spacing[i]);
+      }
+    // Buckets of the largest reach in X_0: a point's neighbours lie in its own and the 3^dim - 1
+    // buckets round it.
+    const double reach     = 1.5 * largest;
+    const auto   bucket_of = [reach](const dealii::Point<dim> &X) {
+      std::array<std::int64_t, dim> b;
+      for (unsigned int d = 0; d < dim; ++d)
+        b[d] = static_cast<std::int64_t>(std::floor(X[d] / reach));
+      return b;
+    };
+    const auto key = [](const std::array<std::int64_t, dim> &b) {
+      std::uint64_t k = 0;
+      for (unsigned int d = 0; d < dim; ++d)
+        k = k * 2097152u + static_cast<std::uint64_t>(b[d] + 1048576);
+      return k;
+    };
+    std::unordered_map<std::uint64_t, std::vector<unsigned int>> buckets;
+    for (unsigned int i = 0; i < n; ++i)
+      buckets[key(bucket_of(unsorted[i].X0))].push_back(i);
+
+    // A surface point faces away from the material: nothing in front of it is its neighbour.
+    const auto connected = [&](const unsigned int a, const unsigned int b) {
+      const Tensor<1, dim> d = unsorted[b].X0 - unsorted[a].X0;
+      if (d.norm() > 1.5 * std::max(spacing[a], spacing[b]))
+        return false;
+      const bool surface_a = unsorted[a].kind != PointKind::volume,
+                 surface_b = unsorted[b].kind != PointKind::volume;
+      if (surface_a && surface_b)
+        return normal_0[a] * normal_0[b] > 0.;
+      const double front = 0.25 * std::max(spacing[a], spacing[b]);
+      if (surface_a)
+        return d * normal_0[a] <= front;
+      if (surface_b)
+        return -d * normal_0[b] <= front;
+      return true;
+    };
+    PointGraph graph;
+    graph.offsets.reserve(n + 1);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const auto home = bucket_of(unsorted[i].X0);
+        for (unsigned int neighbour = 0; neighbour < std::pow(3, dim); ++neighbour)
+          {
+            auto         b    = home;
+            unsigned int rest = neighbour;
+            for (unsigned int d = 0; d < dim; ++d, rest /= 3)
+              b[d] += static_cast<std::int64_t>(rest % 3) - 1;
+            const auto bucket = buckets.find(key(b));
+            if (bucket == buckets.end())
+              continue;
+            for (const unsigned int j : bucket->second)
+              if (j != i && connected(i, j))
+                graph.targets.push_back(j);
+          }
+        // Sorted: the parts are built in the same order whatever the buckets' order.
+        std::sort(graph.targets.begin() + graph.offsets.back(), graph.targets.end());
+        graph.offsets.push_back(graph.targets.size());
+      }
+    return graph;
+  }
+
+
+  template <int dim>
+  void
+  PointCache<dim>::anchor_surface_points(const std::vector<PointRecord<dim>> &unsorted,
+                                         const PointGraph                    &graph,
+                                         std::vector<unsigned int>           &cells,
+                                         std::vector<unsigned int>           &pieces) const
+  {
+    // A face that has come within a cell of another lies in the other's cells: evaluated there
+    // it would take the other part's functions (and their copies would not reach it).
+    for (unsigned int i = 0; i < unsorted.size(); ++i)
+      {
+        if (!separates(unsorted[i]))
+          continue;
+        const auto [begin, end] = graph.neighbours(i);
+        bool         at_home    = false;
+        unsigned int nearest    = dealii::numbers::invalid_unsigned_int;
+        double       distance   = std::numeric_limits<double>::max();
+        for (auto j = begin; j != end && !at_home; ++j)
+          {
+            if (unsorted[*j].kind != PointKind::volume)
+              continue;
+            at_home        = cells[*j] == cells[i] && pieces[*j] == pieces[i];
+            const double d = (unsorted[*j].X0 - unsorted[i].X0).norm();
+            if (d < distance)
+              {
+                distance = d;
+                nearest  = *j;
+              }
+          }
+        if (!at_home && nearest != dealii::numbers::invalid_unsigned_int)
+          {
+            cells[i]  = cells[nearest];
+            pieces[i] = pieces[nearest];
+          }
+      }
+  }
+
+
+  template <int dim>
+  std::vector<std::vector<std::pair<unsigned int, unsigned int>>>
+  PointCache<dim>::copies_of_points(const PointGraph &graph, std::vector<unsigned int> &copy_of)
+  {
+    const unsigned int n_points = points_.size();
+    const unsigned int n_dofs   = spaces.u().n_dofs();
+    sorted_of_.resize(n_points);
+    for (unsigned int p = 0; p < n_points; ++p)
+      sorted_of_[order_[p]] = p;
+    // The functions of the blocks with a separated surface point, and the blocks of their
+    // supports.
+    std::vector<bool> candidate(n_dofs, false);
+    for (const PointBlock &b : blocks_)
+      for (unsigned int p = b.first; p < b.end; ++p)
+        if (separates(points_[p]))
+          {
+            for (const unsigned int d : u_dofs(b))
+              candidate[d] = true;
+            break;
+          }
+    std::vector<std::vector<unsigned int>> support(n_dofs);
+    for (unsigned int b = 0; b < blocks_.size(); ++b)
+      for (const unsigned int d : u_dofs(blocks_[b]))
+        if (candidate[d])
+          support[d].push_back(b);
+
+    std::vector<std::vector<std::pair<unsigned int, unsigned int>>> copies(n_points);
+    std::vector<unsigned int> local(n_points), stamp(n_points, 0), members, position;
+    for (unsigned int d = 0; d < n_dofs; ++d)
+      {
+        if (!candidate[d])
+          continue;
+        members.clear();
+        position.clear();
+        for (const unsigned int b : support[d])
+          {
+            const auto        &dofs = u_dofs(blocks_[b]);
+            const unsigned int a    = std::find(dofs.begin(), dofs.end(), d) - dofs.begin();
+            for (unsigned int p = blocks_[b].first; p < blocks_[b].end; ++p)
+              {
+                local[p] = members.size();
+                stamp[p] = d + 1;
+                members.push_back(p);
+                position.push_back(a);
+              }
+          }
+        Separation::Parts parts(members.size());
+        for (unsigned int m = 0; m < members.size(); ++m)
+          {
+            const auto [begin, end] = graph.neighbours(order_[members[m]]);
+            for (auto j = begin; j != end; ++j)
+              if (const unsigned int q = sorted_of_[*j]; stamp[q] == d + 1)
+                parts.join(m, local[q]);
+          }
+        std::vector<Separation::Part> part(members.size());
+        double                        total = 0.;
+        for (unsigned int m = 0; m < members.size(); ++m)
+          {
+            const auto &r    = points_[members[m]];
+            auto       &into = part[parts.root(m)];
+            ++into.points;
+            into.separated_surface |= separates(r);
+            if (r.kind == PointKind::volume)
+              {
+                const double w = r.measure * std::abs(u_values[r.u_offset + position[m]]);
+                into.weight += w;
+                total += w;
+              }
+          }
+        // Parts that are a face of their own: the part of most points keeps the function (the
+        // first of them in the points' order if several).
+        std::vector<unsigned int> faces;
+        for (unsigned int m = 0; m < members.size(); ++m)
+          if (parts.root(m) == m && part[m].separated_surface && part[m].weight > 0.01 * total)
+            faces.push_back(m);
+        if (faces.size() < 2)
+          continue;
+        const unsigned int keeper =
+          *std::max_element(faces.begin(),
+                            faces.end(),
+                            [&part](const unsigned int a, const unsigned int b) {
+                              return part[a].points < part[b].points;
+                            });
+        // The surface points of each face, to tell how far apart the faces are along the surface.
+        const auto surface_of = [&](const unsigned int face) {
+          std::vector<unsigned int> surface;
+          for (unsigned int m = 0; m < members.size(); ++m)
+            if (parts.root(m) == face && separates(points_[members[m]]))
+              surface.push_back(order_[members[m]]);
+          return surface;
+        };
+        const auto keeper_surface = surface_of(keeper);
+        for (const unsigned int face : faces)
+          {
+            // Two faces close along the surface are the flanks next to a fold's tip, where the
+            // self-contact finds no pairs ('Minimum arc length'): there the grid keeps them
+            // together.
+            if (face == keeper || near_along_surface(graph,
+                                                     surface_of(face),
+                                                     keeper_surface,
+                                                     separation_along_surface_))
+              continue;
+            const unsigned int copy = n_dofs + copy_of.size();
+            copy_of.push_back(d);
+            for (unsigned int m = 0; m < members.size(); ++m)
+              if (parts.root(m) == face)
+                copies[members[m]].emplace_back(position[m], copy);
+          }
+      }
+    return copies;
+  }
+
+
+  template <int dim>
+  bool
+  PointCache<dim>::near_along_surface(const PointGraph                &graph,
+                                      const std::vector<unsigned int> &from,
+                                      const std::vector<unsigned int> &to,
+                                      const double                     reach) const
+  {
+    // Shortest paths from the points of @p from over neighbouring surface points, their lengths
+    // in the initial configuration, no farther than @p reach. (Points are unsorted indices.)
+    std::unordered_map<unsigned int, double> distance;
+    using Entry = std::pair<double, unsigned int>;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+    for (const unsigned int i : from)
+      {
+        distance[i] = 0.;
+        queue.emplace(0., i);
+      }
+    const std::unordered_set<unsigned int> targets(to.begin(), to.end());
+    const auto &record = [this](const unsigned int i) -> const PointRecord<dim> & {
+      return points_[sorted_of_[i]];
+    };
+    while (!queue.empty())
+      {
+        const auto [d, i] = queue.top();
+        queue.pop();
+        if (d > distance[i])
+          continue;
+        if (targets.count(i) > 0)
+          return true;
+        const auto [begin, end] = graph.neighbours(i);
+        for (auto j = begin; j != end; ++j)
+          {
+            if (record(*j).kind == PointKind::volume)
+              continue;
+            const double next = d + (record(*j).X0 - record(i).X0).norm();
+            if (next > reach)
+              continue;
+            const auto known = distance.find(*j);
+            if (known == distance.end() || next < known->second)
+              {
+                distance[*j] = next;
+                queue.emplace(next, *j);
+              }
+          }
+      }
+    return false;
+  }
+
+
+  template <int dim>
+  std::vector<unsigned int>
+  PointCache<dim>::separate_supports(const PointGraph &graph)
+  {
+    std::vector<unsigned int> copy_of;
+    const auto                copies = copies_of_points(graph, copy_of);
+    spaces.set_u_copies(copy_of);
+    // The sides of a block: its points with one list of copies each.
+    std::vector<unsigned int> sides(points_.size(), 0);
+    for (const PointBlock &b : blocks_)
+      {
+        std::vector<const std::vector<std::pair<unsigned int, unsigned int>> *> lists;
+        for (unsigned int p = b.first; p < b.end; ++p)
+          {
+            if (copies[p].empty())
+              continue;
+            const auto known = std::find_if(lists.begin(), lists.end(), [&](const auto *list) {
+              return *list == copies[p];
+            });
+            sides[order_[p]] = (known - lists.begin()) + 1;
+            if (known != lists.end())
+              continue;
+            lists.push_back(&copies[p]);
+            std::vector<unsigned int> dofs = u_dofs(b);
+            for (const auto &[a, copy] : copies[p])
+              dofs[a] = copy;
+            side_lists_[{b.u_cell, b.u_piece, static_cast<unsigned int>(lists.size())}] =
+              own_u_dofs_.size();
+            // The step's separation, flattened: the pattern follows it.
+            separation_.insert(separation_.end(), {b.u_cell, b.u_piece});
+            separation_.insert(separation_.end(), dofs.begin(), dofs.end());
+            own_u_dofs_.push_back(std::move(dofs));
+          }
+      }
+    separation_.insert(separation_.end(), copy_of.begin(), copy_of.end());
+    return sides;
+  }
+
+
+#define GELMPM_INSTANTIATE(dim)                                                                             \
+  template void       PointCache<dim>::separate_faces(std::vector<bool>, const double);                     \
+  template PointGraph PointCache<dim>::material_neighbours(const std::vector<PointRecord<dim>> &,           \
+                                                           const std::vector<particle_iterator> &)          \
+    const;                                                                                                  \
+  template void PointCache<dim>::anchor_surface_points(const std::vector<PointRecord<dim>> &,               \
+                                                       const PointGraph &,                                  \
+                                                       std::vector<unsigned int> &,                         \
+                                                       std::vector<unsigned int> &) const;                  \
+  template std::vector<std::vector<std::pair<unsigned int, unsigned int>>>                                  \
+  PointCache<dim>::copies_of_points(const PointGraph &, std::vector<unsigned int> &);                       \
+  template std::vector<unsigned int> PointCache<dim>::separate_supports(const PointGraph &);                \
+  template bool                      PointCache<dim>::near_along_surface(const PointGraph &,                \
+                                                    const std::vector<unsigned int> &, \
+                                                    const std::vector<unsigned int> &, \
+                                                    const double) const;
+  GELMPM_INSTANTIATE(2)
+  GELMPM_INSTANTIATE(3)
+#undef GELMPM_INSTANTIATE
+} // namespace GelMPM
