@@ -6,6 +6,8 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <algorithm>
+
 namespace GelMPM
 {
   template <int dim>
@@ -39,7 +41,10 @@ namespace GelMPM
     if (!sparsity)
       {
         dealii::DynamicSparsityPattern pattern(n, n);
-        const auto                     add_dofs = [&](const std::vector<unsigned int> &dofs) {
+        // Sorted: a block's list of u DoFs is not where copies of functions replace some of its
+        // cell's (PointCache::separate_faces()).
+        const auto add_dofs = [&](std::vector<unsigned int> dofs) {
+          std::sort(dofs.begin(), dofs.end());
           for (const auto i : dofs)
             pattern.add_entries(i, dofs.begin(), dofs.end(), true);
         };

@@ -102,8 +102,10 @@ namespace GelMPM
     if (linear_solver.may_iterate())
       {
         std::vector<NestedBSplineLevel> levels;
-        // On several ranks the iterative solver has the algebraic multigrid only.
-        if (linear_solver.geometric_multigrid() && !Collective::is_parallel(scene.communicator))
+        // On several ranks the iterative solver has the algebraic multigrid only; so has a step
+        // whose faces have copies of functions, which the grids' levels do not know.
+        if (linear_solver.geometric_multigrid() && !Collective::is_parallel(scene.communicator) &&
+            scene.spaces->u_copies().empty())
           {
             // The 1D refinement operators are fixed with the grid: computed once per space.
             if (!nested_grids || &nested_grids->fine_space() != &scene.spaces->u_space())
