@@ -42,7 +42,7 @@ namespace GelMPM
     double largest_depth = 0.25;
     /** Whether parts of the material that share a displacement function's support without being
      * connected there take copies of it (PointCache::separate_faces()). */
-    bool separate_faces = true;
+    bool separate_faces = false;
 
     bool
     enabled() const
