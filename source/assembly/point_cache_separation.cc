@@ -75,16 +75,14 @@ namespace GelMPM
 
 
   template <int dim>
-  PointGraph
-  PointCache<dim>::material_neighbours(const std::vector<PointRecord<dim>>  &unsorted,
-                                       const std::vector<particle_iterator> &its) const
+  void
+  PointCache<dim>::reference_spacing(const std::vector<PointRecord<dim>>  &unsorted,
+                                     const std::vector<particle_iterator> &its,
+                                     std::vector<double>                  &spacing,
+                                     std::vector<Tensor<1, dim>>          &normal_0) const
   {
-    using Layout                  = PropertyLayout<dim>;
-    const unsigned int          n = unsorted.size();
-    std::vector<double>         spacing(n);
-    std::vector<Tensor<1, dim>> normal_0(n);
-    double                      largest = 0.;
-    for (unsigned int i = 0; i < n; ++i)
+    using Layout = PropertyLayout<dim>;
+    for (unsigned int i = 0; i < unsorted.size(); ++i)
       {
         const auto   properties = its[i]->get_properties();
         const auto  &r          = unsorted[i];
@@ -99,8 +97,20 @@ namespace GelMPM
             normal_0[i] /= normal_0[i].norm();
             spacing[i] = std::pow(measure, 1. / (dim - 1));
           }
-        largest = std::max(largest, spacing[i]);
       }
+  }
+
+
+  template <int dim>
+  PointGraph
+  PointCache<dim>::material_neighbours(const std::vector<PointRecord<dim>>  &unsorted,
+                                       const std::vector<particle_iterator> &its) const
+  {
+    const unsigned int          n = unsorted.size();
+    std::vector<double>         spacing(n);
+    std::vector<Tensor<1, dim>> normal_0(n);
+    reference_spacing(unsorted, its, spacing, normal_0);
+    const double largest = *std::max_element(spacing.begin(), spacing.end());
     // Buckets of the largest reach in X_0: a point's neighbours lie in its own and the 3^dim - 1
     // buckets round it.
     const double reach     = 1.5 * largest;
@@ -200,18 +210,41 @@ namespace GelMPM
   }
 
 
-  template <int dim>
-  std::vector<std::vector<std::pair<unsigned int, unsigned int>>>
-  PointCache<dim>::copies_of_points(const PointGraph &graph, std::vector<unsigned int> &copy_of)
+  namespace Separation
   {
-    const unsigned int n_points = points_.size();
-    const unsigned int n_dofs   = spaces.u().n_dofs();
-    sorted_of_.resize(n_points);
-    for (unsigned int p = 0; p < n_points; ++p)
-      sorted_of_[order_[p]] = p;
+    /** The points of one function's support and the parts they fall into. */
+    struct SupportParts
+    {
+      /** The sorted points of the support, and the function's position in each one's list. */
+      std::vector<unsigned int> members, position;
+      Parts                     parts{0};
+      /** Per root member, what its part holds; the sum of the volume points' weights. */
+      std::vector<Part> part;
+      double            total = 0.;
+
+      /** The members of the part of root @p face for which @p take is true. */
+      template <typename Take>
+      std::vector<unsigned int>
+      of_part(const unsigned int face, const Take &take)
+      {
+        std::vector<unsigned int> chosen;
+        for (unsigned int m = 0; m < members.size(); ++m)
+          if (parts.root(m) == face && take(members[m]))
+            chosen.push_back(members[m]);
+        return chosen;
+      }
+    };
+  } // namespace Separation
+
+
+  template <int dim>
+  std::vector<std::vector<unsigned int>>
+  PointCache<dim>::blocks_of_separated_functions() const
+  {
     // The functions of the blocks with a separated surface point, and the blocks of their
-    // supports.
-    std::vector<bool> candidate(n_dofs, false);
+    // supports (empty for the others).
+    const unsigned int n_dofs = spaces.u().n_dofs();
+    std::vector<bool>  candidate(n_dofs, false);
     for (const PointBlock &b : blocks_)
       for (unsigned int p = b.first; p < b.end; ++p)
         if (separates(points_[p]))
@@ -225,91 +258,128 @@ namespace GelMPM
       for (const unsigned int d : u_dofs(blocks_[b]))
         if (candidate[d])
           support[d].push_back(b);
+    return support;
+  }
 
+
+  template <int dim>
+  std::vector<std::vector<std::pair<unsigned int, unsigned int>>>
+  PointCache<dim>::copies_of_points(const PointGraph &graph, std::vector<unsigned int> &copy_of)
+  {
+    const unsigned int n_points = points_.size();
+    const unsigned int n_dofs   = spaces.u().n_dofs();
+    sorted_of_.resize(n_points);
+    for (unsigned int p = 0; p < n_points; ++p)
+      sorted_of_[order_[p]] = p;
+    const auto support = blocks_of_separated_functions();
     std::vector<std::vector<std::pair<unsigned int, unsigned int>>> copies(n_points);
-    std::vector<unsigned int> local(n_points), stamp(n_points, 0), members, position;
+    std::vector<unsigned int> local(n_points), stamp(n_points, 0);
+    const auto                separated = [this](const unsigned int p) {
+      return separates(points_[p]);
+    };
     for (unsigned int d = 0; d < n_dofs; ++d)
       {
-        if (!candidate[d])
+        if (support[d].empty())
           continue;
-        members.clear();
-        position.clear();
-        for (const unsigned int b : support[d])
-          {
-            const auto        &dofs = u_dofs(blocks_[b]);
-            const unsigned int a    = std::find(dofs.begin(), dofs.end(), d) - dofs.begin();
-            for (unsigned int p = blocks_[b].first; p < blocks_[b].end; ++p)
-              {
-                local[p] = members.size();
-                stamp[p] = d + 1;
-                members.push_back(p);
-                position.push_back(a);
-              }
-          }
-        Separation::Parts parts(members.size());
-        for (unsigned int m = 0; m < members.size(); ++m)
-          {
-            const auto [begin, end] = graph.neighbours(order_[members[m]]);
-            for (auto j = begin; j != end; ++j)
-              if (const unsigned int q = sorted_of_[*j]; stamp[q] == d + 1)
-                parts.join(m, local[q]);
-          }
-        std::vector<Separation::Part> part(members.size());
-        double                        total = 0.;
-        for (unsigned int m = 0; m < members.size(); ++m)
-          {
-            const auto &r    = points_[members[m]];
-            auto       &into = part[parts.root(m)];
-            ++into.points;
-            into.separated_surface |= separates(r);
-            if (r.kind == PointKind::volume)
-              {
-                const double w = r.measure * std::abs(u_values[r.u_offset + position[m]]);
-                into.weight += w;
-                total += w;
-              }
-          }
-        // Parts that are a face of their own: the part of most points keeps the function (the
-        // first of them in the points' order if several).
-        std::vector<unsigned int> faces;
-        for (unsigned int m = 0; m < members.size(); ++m)
-          if (parts.root(m) == m && part[m].separated_surface && part[m].weight > 0.01 * total)
-            faces.push_back(m);
+        auto       parts = parts_of_support(d, support[d], graph, local, stamp);
+        const auto faces = faces_of_support(parts);
         if (faces.size() < 2)
           continue;
+        // The part of most points keeps the function (the first of them in the points' order if
+        // several); each other face takes a copy, but for the flanks next to a fold's tip, close
+        // along the surface, where the self-contact finds no pairs ('Minimum arc length'): there
+        // the grid keeps them together.
         const unsigned int keeper =
           *std::max_element(faces.begin(),
                             faces.end(),
-                            [&part](const unsigned int a, const unsigned int b) {
-                              return part[a].points < part[b].points;
+                            [&parts](const unsigned int a, const unsigned int b) {
+                              return parts.part[a].points < parts.part[b].points;
                             });
-        // The surface points of each face, to tell how far apart the faces are along the surface.
-        const auto surface_of = [&](const unsigned int face) {
-          std::vector<unsigned int> surface;
-          for (unsigned int m = 0; m < members.size(); ++m)
-            if (parts.root(m) == face && separates(points_[members[m]]))
-              surface.push_back(order_[members[m]]);
-          return surface;
+        const auto unsorted = [this](std::vector<unsigned int> sorted) {
+          for (auto &p : sorted)
+            p = order_[p];
+          return sorted;
         };
-        const auto keeper_surface = surface_of(keeper);
+        const auto keeper_surface = unsorted(parts.of_part(keeper, separated));
         for (const unsigned int face : faces)
           {
-            // Two faces close along the surface are the flanks next to a fold's tip, where the
-            // self-contact finds no pairs ('Minimum arc length'): there the grid keeps them
-            // together.
             if (face == keeper || near_along_surface(graph,
-                                                     surface_of(face),
+                                                     unsorted(parts.of_part(face, separated)),
                                                      keeper_surface,
                                                      separation_along_surface_))
               continue;
             const unsigned int copy = n_dofs + copy_of.size();
             copy_of.push_back(d);
-            for (unsigned int m = 0; m < members.size(); ++m)
-              if (parts.root(m) == face)
-                copies[members[m]].emplace_back(position[m], copy);
+            for (unsigned int m = 0; m < parts.members.size(); ++m)
+              if (parts.parts.root(m) == face)
+                copies[parts.members[m]].emplace_back(parts.position[m], copy);
           }
       }
     return copies;
+  }
+
+
+  template <int dim>
+  Separation::SupportParts
+  PointCache<dim>::parts_of_support(const unsigned int               d,
+                                    const std::vector<unsigned int> &blocks,
+                                    const PointGraph                &graph,
+                                    std::vector<unsigned int>       &local,
+                                    std::vector<unsigned int>       &stamp) const
+  {
+    Separation::SupportParts support;
+    auto &[members, position, parts, part, total] = support;
+    for (const unsigned int b : blocks)
+      {
+        const auto        &dofs = u_dofs(blocks_[b]);
+        const unsigned int a    = std::find(dofs.begin(), dofs.end(), d) - dofs.begin();
+        for (unsigned int p = blocks_[b].first; p < blocks_[b].end; ++p)
+          {
+            local[p] = members.size();
+            stamp[p] = d + 1;
+            members.push_back(p);
+            position.push_back(a);
+          }
+      }
+    // Joined by neighbours that are in the support too (stamped with this function).
+    parts = Separation::Parts(members.size());
+    for (unsigned int m = 0; m < members.size(); ++m)
+      {
+        const auto [begin, end] = graph.neighbours(order_[members[m]]);
+        for (auto j = begin; j != end; ++j)
+          if (const unsigned int q = sorted_of_[*j]; stamp[q] == d + 1)
+            parts.join(m, local[q]);
+      }
+    part.assign(members.size(), Separation::Part());
+    for (unsigned int m = 0; m < members.size(); ++m)
+      {
+        const auto &r    = points_[members[m]];
+        auto       &into = part[parts.root(m)];
+        ++into.points;
+        into.separated_surface |= separates(r);
+        if (r.kind == PointKind::volume)
+          {
+            const double w = r.measure * std::abs(u_values[r.u_offset + position[m]]);
+            into.weight += w;
+            total += w;
+          }
+      }
+    return support;
+  }
+
+
+  template <int dim>
+  std::vector<unsigned int>
+  PointCache<dim>::faces_of_support(Separation::SupportParts &support) const
+  {
+    // A face of its own: a part with a separated surface point and more than 1 % of the weight
+    // (slivers cut off by the edge of the support have none of the first or little of the second).
+    std::vector<unsigned int> faces;
+    for (unsigned int m = 0; m < support.members.size(); ++m)
+      if (support.parts.root(m) == m && support.part[m].separated_surface &&
+          support.part[m].weight > 0.01 * support.total)
+        faces.push_back(m);
+    return faces;
   }
 
 

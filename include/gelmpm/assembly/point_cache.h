@@ -109,6 +109,12 @@ namespace GelMPM
   };
 
 
+  namespace Separation
+  {
+    struct SupportParts;
+  }
+
+
   /** Per point, the indices of its material neighbours (compressed rows). */
   struct PointGraph
   {
@@ -428,6 +434,17 @@ namespace GelMPM
                         const std::vector<particle_iterator> &its) const;
 
     /**
+     * Per record of @p unsorted, its spacing in the initial configuration (V_0^{1/dim},
+     * A_0^{1/(dim-1)}, revolved measures divided by 2 pi R_0) and, for surface points, the unit
+     * N_0 (material_neighbours()).
+     */
+    void
+    reference_spacing(const std::vector<PointRecord<dim>>  &unsorted,
+                      const std::vector<particle_iterator> &its,
+                      std::vector<double>                  &spacing,
+                      std::vector<dealii::Tensor<1, dim>>  &normal_0) const;
+
+    /**
      * Move each separated surface point of @p unsorted whose cell and piece hold none of its
      * neighbouring volume points to those of its nearest one (in the initial configuration).
      */
@@ -451,6 +468,26 @@ namespace GelMPM
      */
     std::vector<std::vector<std::pair<unsigned int, unsigned int>>>
     copies_of_points(const PointGraph &graph, std::vector<unsigned int> &copy_of);
+
+    /** Per u DoF whose support holds a separated surface point, the blocks of its support. */
+    std::vector<std::vector<unsigned int>>
+    blocks_of_separated_functions() const;
+
+    /**
+     * The points of the support of u DoF @p d (the points of @p blocks) and the parts they fall
+     * into, joined by neighbours of @p graph; @p local and @p stamp are scratch arrays over the
+     * points.
+     */
+    Separation::SupportParts
+    parts_of_support(const unsigned int               d,
+                     const std::vector<unsigned int> &blocks,
+                     const PointGraph                &graph,
+                     std::vector<unsigned int>       &local,
+                     std::vector<unsigned int>       &stamp) const;
+
+    /** The parts of @p support that are faces of their own (separate_faces()). */
+    std::vector<unsigned int>
+    faces_of_support(Separation::SupportParts &support) const;
 
     /**
      * Whether a path over neighbouring surface points of @p graph, no longer than @p reach in
