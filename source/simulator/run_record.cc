@@ -202,6 +202,8 @@ namespace GelMPM
                                "self_contact_area",
                                "self_contact_penetration"})
         columns.push_back(name);
+    if (scene.contact.self_contact.enabled() && scene.contact.self_contact.separate_faces)
+      columns.push_back("self_contact_copies");
     for (const auto &c : obstacle_columns())
       columns.push_back(c);
     for (const auto &c : observables.columns())
@@ -371,6 +373,8 @@ namespace GelMPM
     statistics_file.set("self_contact_force", state.force);
     statistics_file.set("self_contact_area", state.area);
     statistics_file.set("self_contact_penetration", state.penetration);
+    if (scene.contact.self_contact.separate_faces)
+      statistics_file.set("self_contact_copies", scene.system->point_cache().n_function_copies());
     if (state.points > 0 && !self_touching)
       {
         write_event("self_contact", current_time(), 0);
