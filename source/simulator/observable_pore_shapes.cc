@@ -241,6 +241,14 @@ namespace GelMPM
         std::sort(ordered[k].begin(), ordered[k].end(), [](const auto &a, const auto &b) {
           return a.first < b.first;
         });
+        // A part of a pore cut by the grid's edge whose arc crosses the angle +-pi (a half pore
+        // on the right edge) runs from -pi to -pi/2 and from pi/2 to pi: start it after its gap,
+        // or the chord across the gap reads as a crease.
+        std::size_t start = 0;
+        for (std::size_t i = 0; i + 1 < ordered[k].size(); ++i)
+          if (ordered[k][i + 1].first - ordered[k][i].first > 0.5 * M_PI)
+            start = i + 1;
+        std::rotate(ordered[k].begin(), ordered[k].begin() + start, ordered[k].end());
         std::vector<dealii::Point<2>> polyline;
         for (const auto &entry : ordered[k])
           polyline.push_back(entry.second);
