@@ -1,3 +1,4 @@
+#include <gelmpm/assembly/face_separation.h>
 #include <gelmpm/assembly/point_cache.h>
 #include <gelmpm/core/collective.h>
 #include <gelmpm/core/format_point.h>
@@ -61,6 +62,64 @@ namespace GelMPM
 
 
   template <int dim>
+  PointCache<dim>::~PointCache() = default;
+
+
+  template <int dim>
+  void
+  PointCache<dim>::separate_faces(std::vector<bool> pieces, const double along_surface)
+  {
+    const bool any = std::find(pieces.begin(), pieces.end(), true) != pieces.end();
+    if (any && Collective::is_parallel(communicator))
+      throw std::logic_error("PointCache::separate_faces: one MPI rank only");
+    separation = any ? std::make_unique<FaceSeparation<dim>>(std::move(pieces),
+                                                             along_surface,
+                                                             spaces.axisymmetric())
+                     : nullptr;
+  }
+
+
+  template <int dim>
+  std::vector<unsigned int>
+  PointCache<dim>::separate_supports()
+  {
+    std::vector<unsigned int> copy_of;
+    const auto                copies =
+      separation->copies_of_points({points_, blocks_, order_, u_values, spaces.u()}, copy_of);
+    spaces.set_u_copies(copy_of);
+    // The sides of a block: its points with one list of copies each.
+    std::vector<unsigned int> sides(points_.size(), 0);
+    for (const PointBlock &b : blocks_)
+      {
+        std::vector<const std::vector<std::pair<unsigned int, unsigned int>> *> lists;
+        for (unsigned int p = b.first; p < b.end; ++p)
+          {
+            if (copies[p].empty())
+              continue;
+            const auto known = std::find_if(lists.begin(), lists.end(), [&](const auto *list) {
+              return *list == copies[p];
+            });
+            sides[order_[p]] = (known - lists.begin()) + 1;
+            if (known != lists.end())
+              continue;
+            lists.push_back(&copies[p]);
+            std::vector<unsigned int> dofs = u_dofs(b);
+            for (const auto &[a, copy] : copies[p])
+              dofs[a] = copy;
+            side_lists_[{b.u_cell, b.u_piece, static_cast<unsigned int>(lists.size())}] =
+              own_u_dofs_.size();
+            // The step's separation, flattened: the pattern follows it.
+            separation_.insert(separation_.end(), {b.u_cell, b.u_piece});
+            separation_.insert(separation_.end(), dofs.begin(), dofs.end());
+            own_u_dofs_.push_back(std::move(dofs));
+          }
+      }
+    separation_.insert(separation_.end(), copy_of.begin(), copy_of.end());
+    return sides;
+  }
+
+
+  template <int dim>
   void
   PointCache<dim>::gather(dealii::Particles::ParticleHandler<dim> &particle_handler)
   {
@@ -91,7 +150,7 @@ namespace GelMPM
     own_u_dofs_.clear();
     side_lists_.clear();
     separation_.clear();
-    if (separation_pieces_.empty())
+    if (!separation)
       {
         group_points(unsorted, its, cells, pieces);
         evaluate_shape_functions();
@@ -100,11 +159,11 @@ namespace GelMPM
     // Separated faces: the parts of each support are judged on the cells' own functions, then
     // the points are grouped again with the copies they use.
     spaces.set_u_copies({});
-    const PointGraph graph = material_neighbours(unsorted, its);
-    anchor_surface_points(unsorted, graph, cells, pieces);
+    separation->find_neighbours(unsorted, its);
+    separation->anchor_surface_points(unsorted, cells, pieces);
     group_points(unsorted, its, cells, pieces);
     evaluate_shape_functions();
-    const auto sides = separate_supports(graph);
+    const auto sides = separate_supports();
     if (spaces.u_copies().empty())
       return;
     group_points(unsorted, its, cells, pieces, sides);

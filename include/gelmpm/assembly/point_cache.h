@@ -16,6 +16,7 @@
 #include <deal.II/particles/particle_handler.h>
 
 #include <map>
+#include <memory>
 #include <optional>
 #include <tuple>
 #include <vector>
@@ -109,25 +110,8 @@ namespace GelMPM
   };
 
 
-  namespace Separation
-  {
-    struct SupportParts;
-  }
-
-
-  /** Per point, the indices of its material neighbours (compressed rows). */
-  struct PointGraph
-  {
-    std::vector<unsigned int> offsets{0};
-    std::vector<unsigned int> targets;
-
-    /** The neighbours of point @p i. */
-    std::pair<const unsigned int *, const unsigned int *>
-    neighbours(const unsigned int i) const
-    {
-      return {targets.data() + offsets[i], targets.data() + offsets[i + 1]};
-    }
-  };
+  template <int dim>
+  class FaceSeparation;
 
 
   /**
@@ -154,6 +138,8 @@ namespace GelMPM
                const BoundaryConditions<dim> &boundary_conditions,
                DiscreteSpaces<dim>           &spaces,
                const MPI_Comm                 communicator);
+
+    ~PointCache();
 
     /**
      * Gather the points of @p particle_handler: classify the cells and rebuild the extended
@@ -274,23 +260,9 @@ namespace GelMPM
 
     /**
      * Separate the faces of the material from the next gather() on ('Contact/Self contact/
-     * Separate faces', doc/method.md, "Two faces on one grid"); @p pieces flags the boundary
-     * pieces whose surface points take part (empty: off, the default).
-     *
-     * Two points are material neighbours when their distance in the initial configuration is
-     * at most 1.5 times the larger of their spacings, a surface point never with a point in
-     * front of it nor with a surface point facing it (N_0 . N_0 < 0). For each extended u
-     * function whose support holds a surface point of @p pieces, the points of its support
-     * (the blocks whose DoFs include it) fall into parts connected by neighbours within the
-     * support. Where two or more parts hold such a surface point and more than 1 % of the
-     * function's weight sum V_n |N| over the volume points, the part of most points keeps the
-     * function and each other one takes a copy (DiscreteSpaces::set_u_copies()); the rest
-     * (slivers cut off by the edge of the support) keep the function, and so does a part whose
-     * surface points lie within @p along_surface of the keeper's along the surface (a path over
-     * neighbouring surface points in the initial configuration): the flanks next to a fold's
-     * tip, which the self-contact does not pair ('Minimum arc length'). A surface point of
-     * @p pieces is evaluated in the cell (leaf) of one of its neighbouring volume points, so
-     * that it does not take the functions of another part lying in its cell.
+     * Separate faces', FaceSeparation, doc/method.md, "Two faces on one grid"); @p pieces flags
+     * the boundary pieces whose surface points take part (empty or none: off, the default), and
+     * faces closer than @p along_surface along the surface stay together. One MPI rank.
      */
     void
     separate_faces(std::vector<bool> pieces, const double along_surface = 0.);
@@ -417,87 +389,13 @@ namespace GelMPM
                  const std::vector<unsigned int>      &pieces,
                  const std::vector<unsigned int>      &sides = {});
 
-    /** Whether record @p r is a surface point of the pieces whose faces are separated. */
-    bool
-    separates(const PointRecord<dim> &r) const
-    {
-      return r.kind != PointKind::volume && r.piece >= 0 && !separation_pieces_.empty() &&
-             separation_pieces_[r.piece];
-    }
-
     /**
-     * The material neighbours of the records @p unsorted (separate_faces()), from the
-     * properties of their particles @p its.
-     */
-    PointGraph
-    material_neighbours(const std::vector<PointRecord<dim>>  &unsorted,
-                        const std::vector<particle_iterator> &its) const;
-
-    /**
-     * Per record of @p unsorted, its spacing in the initial configuration (V_0^{1/dim},
-     * A_0^{1/(dim-1)}, revolved measures divided by 2 pi R_0) and, for surface points, the unit
-     * N_0 (material_neighbours()).
-     */
-    void
-    reference_spacing(const std::vector<PointRecord<dim>>  &unsorted,
-                      const std::vector<particle_iterator> &its,
-                      std::vector<double>                  &spacing,
-                      std::vector<dealii::Tensor<1, dim>>  &normal_0) const;
-
-    /**
-     * Move each separated surface point of @p unsorted whose cell and piece hold none of its
-     * neighbouring volume points to those of its nearest one (in the initial configuration).
-     */
-    void
-    anchor_surface_points(const std::vector<PointRecord<dim>> &unsorted,
-                          const PointGraph                    &graph,
-                          std::vector<unsigned int>           &cells,
-                          std::vector<unsigned int>           &pieces) const;
-
-    /**
-     * On the blocks of the first grouping, the parts of every separated function's support:
-     * sets the copies of the step in the spaces and returns, per unsorted point, its side
+     * On the blocks of the first grouping, the copies of the functions that separated faces
+     * share (FaceSeparation): sets them in the spaces and returns, per unsorted point, its side
      * (0: no copy; own_u_dofs_ and side_lists_ hold the others' lists).
      */
     std::vector<unsigned int>
-    separate_supports(const PointGraph &graph);
-
-    /**
-     * Per sorted point, the copies it uses: (position in its block's u DoFs, copy's DoF), from
-     * the parts of every separated function's support (separate_faces()).
-     */
-    std::vector<std::vector<std::pair<unsigned int, unsigned int>>>
-    copies_of_points(const PointGraph &graph, std::vector<unsigned int> &copy_of);
-
-    /** Per u DoF whose support holds a separated surface point, the blocks of its support. */
-    std::vector<std::vector<unsigned int>>
-    blocks_of_separated_functions() const;
-
-    /**
-     * The points of the support of u DoF @p d (the points of @p blocks) and the parts they fall
-     * into, joined by neighbours of @p graph; @p local and @p stamp are scratch arrays over the
-     * points.
-     */
-    Separation::SupportParts
-    parts_of_support(const unsigned int               d,
-                     const std::vector<unsigned int> &blocks,
-                     const PointGraph                &graph,
-                     std::vector<unsigned int>       &local,
-                     std::vector<unsigned int>       &stamp) const;
-
-    /** The parts of @p support that are faces of their own (separate_faces()). */
-    std::vector<unsigned int>
-    faces_of_support(Separation::SupportParts &support) const;
-
-    /**
-     * Whether a path over neighbouring surface points of @p graph, no longer than @p reach in
-     * the initial configuration, joins a point of @p from to one of @p to (unsorted indices).
-     */
-    bool
-    near_along_surface(const PointGraph                &graph,
-                       const std::vector<unsigned int> &from,
-                       const std::vector<unsigned int> &to,
-                       const double                     reach) const;
+    separate_supports();
 
     /** The block of the points of piece @p u_piece of @p u_cell, from point @p first on. */
     PointBlock
@@ -523,14 +421,13 @@ namespace GelMPM
     std::vector<bool>                   classification_;
     std::vector<bool>                   leaf_classification_, pattern_leaf_classification_;
     std::vector<unsigned int>           cell_holder_;
-    // Separated faces: the pieces (empty: off), the blocks' own lists of u DoFs, the list of each
-    // (cell, piece, side), the sorted points' unsorted indices, and the step's separation (the
-    // copies and the blocks' lists, flattened) against the sparsity pattern's.
-    std::vector<bool>                                                   separation_pieces_;
+    // Separated faces (null: off), the blocks' own lists of u DoFs, the list of each (cell,
+    // piece, side), the sorted points' unsorted indices, and the step's separation (the copies and
+    // the blocks' lists, flattened) against the sparsity pattern's.
+    std::unique_ptr<FaceSeparation<dim>>                                separation;
     std::vector<std::vector<unsigned int>>                              own_u_dofs_;
     std::map<std::tuple<unsigned int, unsigned int, unsigned int>, int> side_lists_;
-    std::vector<unsigned int>                                           order_, sorted_of_;
-    double                    separation_along_surface_ = 0.;
+    std::vector<unsigned int>                                           order_;
     std::vector<unsigned int> separation_, pattern_separation_;
   };
 } // namespace GelMPM

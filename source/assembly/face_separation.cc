@@ -1,8 +1,4 @@
-// The separation of faces that share the background grid's functions (PointCache::
-// separate_faces(), doc/method.md, "Two faces on one grid"): which points of a function's support
-// are one piece of material, and the copies of the function for the others.
-#include <gelmpm/assembly/point_cache.h>
-#include <gelmpm/core/collective.h>
+#include <gelmpm/assembly/face_separation.h>
 
 #include <algorithm>
 #include <array>
@@ -61,33 +57,29 @@ namespace GelMPM
 
 
   template <int dim>
-  void
-  PointCache<dim>::separate_faces(std::vector<bool> pieces, const double along_surface)
-  {
-    separation_along_surface_ = along_surface;
-    if (Collective::is_parallel(communicator) &&
-        std::find(pieces.begin(), pieces.end(), true) != pieces.end())
-      throw std::logic_error("PointCache::separate_faces: one MPI rank only");
-    if (std::find(pieces.begin(), pieces.end(), true) == pieces.end())
-      pieces.clear();
-    separation_pieces_ = std::move(pieces);
-  }
+  FaceSeparation<dim>::FaceSeparation(std::vector<bool> pieces,
+                                      const double      along_surface,
+                                      const bool        axisymmetric)
+    : pieces(std::move(pieces))
+    , along_surface(along_surface)
+    , axisymmetric(axisymmetric)
+  {}
 
 
   template <int dim>
   void
-  PointCache<dim>::reference_spacing(const std::vector<PointRecord<dim>>  &unsorted,
-                                     const std::vector<particle_iterator> &its,
-                                     std::vector<double>                  &spacing,
-                                     std::vector<Tensor<1, dim>>          &normal_0) const
+  FaceSeparation<dim>::reference_spacing(const std::vector<PointRecord<dim>>  &unsorted,
+                                         const std::vector<particle_iterator> &its,
+                                         std::vector<double>                  &spacing,
+                                         std::vector<Tensor<1, dim>>          &normal_0) const
   {
     using Layout = PropertyLayout<dim>;
     for (unsigned int i = 0; i < unsorted.size(); ++i)
       {
         const auto   properties = its[i]->get_properties();
         const auto  &r          = unsorted[i];
-        const double revolved = (spaces.axisymmetric() && r.X0[0] > 0.) ? 2. * M_PI * r.X0[0] : 1.;
-        const double measure  = properties[Layout::measure_0] / revolved;
+        const double revolved   = (axisymmetric && r.X0[0] > 0.) ? 2. * M_PI * r.X0[0] : 1.;
+        const double measure    = properties[Layout::measure_0] / revolved;
         if (r.kind == PointKind::volume)
           spacing[i] = std::pow(measure, 1. / dim);
         else
@@ -102,9 +94,9 @@ namespace GelMPM
 
 
   template <int dim>
-  PointGraph
-  PointCache<dim>::material_neighbours(const std::vector<PointRecord<dim>>  &unsorted,
-                                       const std::vector<particle_iterator> &its) const
+  void
+  FaceSeparation<dim>::find_neighbours(const std::vector<PointRecord<dim>>  &unsorted,
+                                       const std::vector<particle_iterator> &its)
   {
     const unsigned int          n = unsorted.size();
     std::vector<double>         spacing(n);
@@ -146,7 +138,7 @@ namespace GelMPM
         return -d * normal_0[b] <= front;
       return true;
     };
-    PointGraph graph;
+    graph = PointGraph();
     graph.offsets.reserve(n + 1);
     for (unsigned int i = 0; i < n; ++i)
       {
@@ -168,16 +160,14 @@ namespace GelMPM
         std::sort(graph.targets.begin() + graph.offsets.back(), graph.targets.end());
         graph.offsets.push_back(graph.targets.size());
       }
-    return graph;
   }
 
 
   template <int dim>
   void
-  PointCache<dim>::anchor_surface_points(const std::vector<PointRecord<dim>> &unsorted,
-                                         const PointGraph                    &graph,
-                                         std::vector<unsigned int>           &cells,
-                                         std::vector<unsigned int>           &pieces) const
+  FaceSeparation<dim>::anchor_surface_points(const std::vector<PointRecord<dim>> &unsorted,
+                                             std::vector<unsigned int>           &cells,
+                                             std::vector<unsigned int>           &pieces) const
   {
     // A face that has come within a cell of another lies in the other's cells: evaluated there
     // it would take the other part's functions (and their copies would not reach it).
@@ -239,23 +229,23 @@ namespace GelMPM
 
   template <int dim>
   std::vector<std::vector<unsigned int>>
-  PointCache<dim>::blocks_of_separated_functions() const
+  FaceSeparation<dim>::blocks_of_separated_functions(const Grouping &g) const
   {
     // The functions of the blocks with a separated surface point, and the blocks of their
     // supports (empty for the others).
-    const unsigned int n_dofs = spaces.u().n_dofs();
+    const unsigned int n_dofs = g.u.n_dofs();
     std::vector<bool>  candidate(n_dofs, false);
-    for (const PointBlock &b : blocks_)
+    for (const PointBlock &b : g.blocks)
       for (unsigned int p = b.first; p < b.end; ++p)
-        if (separates(points_[p]))
+        if (separates(g.points[p]))
           {
-            for (const unsigned int d : u_dofs(b))
+            for (const unsigned int d : g.u.cell_dofs(b.u_cell, b.u_piece))
               candidate[d] = true;
             break;
           }
     std::vector<std::vector<unsigned int>> support(n_dofs);
-    for (unsigned int b = 0; b < blocks_.size(); ++b)
-      for (const unsigned int d : u_dofs(blocks_[b]))
+    for (unsigned int b = 0; b < g.blocks.size(); ++b)
+      for (const unsigned int d : g.u.cell_dofs(g.blocks[b].u_cell, g.blocks[b].u_piece))
         if (candidate[d])
           support[d].push_back(b);
     return support;
@@ -264,24 +254,24 @@ namespace GelMPM
 
   template <int dim>
   std::vector<std::vector<std::pair<unsigned int, unsigned int>>>
-  PointCache<dim>::copies_of_points(const PointGraph &graph, std::vector<unsigned int> &copy_of)
+  FaceSeparation<dim>::copies_of_points(const Grouping &g, std::vector<unsigned int> &copy_of)
   {
-    const unsigned int n_points = points_.size();
-    const unsigned int n_dofs   = spaces.u().n_dofs();
-    sorted_of_.resize(n_points);
+    const unsigned int n_points = g.points.size();
+    const unsigned int n_dofs   = g.u.n_dofs();
+    sorted_of.resize(n_points);
     for (unsigned int p = 0; p < n_points; ++p)
-      sorted_of_[order_[p]] = p;
-    const auto support = blocks_of_separated_functions();
+      sorted_of[g.order[p]] = p;
+    const auto support = blocks_of_separated_functions(g);
     std::vector<std::vector<std::pair<unsigned int, unsigned int>>> copies(n_points);
     std::vector<unsigned int> local(n_points), stamp(n_points, 0);
-    const auto                separated = [this](const unsigned int p) {
-      return separates(points_[p]);
+    const auto                separated = [&](const unsigned int p) {
+      return separates(g.points[p]);
     };
     for (unsigned int d = 0; d < n_dofs; ++d)
       {
         if (support[d].empty())
           continue;
-        auto       parts = parts_of_support(d, support[d], graph, local, stamp);
+        auto       parts = parts_of_support(g, d, support[d], local, stamp);
         const auto faces = faces_of_support(parts);
         if (faces.size() < 2)
           continue;
@@ -295,18 +285,16 @@ namespace GelMPM
                             [&parts](const unsigned int a, const unsigned int b) {
                               return parts.part[a].points < parts.part[b].points;
                             });
-        const auto unsorted = [this](std::vector<unsigned int> sorted) {
+        const auto unsorted = [&g](std::vector<unsigned int> sorted) {
           for (auto &p : sorted)
-            p = order_[p];
+            p = g.order[p];
           return sorted;
         };
         const auto keeper_surface = unsorted(parts.of_part(keeper, separated));
         for (const unsigned int face : faces)
           {
-            if (face == keeper || near_along_surface(graph,
-                                                     unsorted(parts.of_part(face, separated)),
-                                                     keeper_surface,
-                                                     separation_along_surface_))
+            if (face == keeper ||
+                near_along_surface(g, unsorted(parts.of_part(face, separated)), keeper_surface))
               continue;
             const unsigned int copy = n_dofs + copy_of.size();
             copy_of.push_back(d);
@@ -321,19 +309,19 @@ namespace GelMPM
 
   template <int dim>
   Separation::SupportParts
-  PointCache<dim>::parts_of_support(const unsigned int               d,
-                                    const std::vector<unsigned int> &blocks,
-                                    const PointGraph                &graph,
-                                    std::vector<unsigned int>       &local,
-                                    std::vector<unsigned int>       &stamp) const
+  FaceSeparation<dim>::parts_of_support(const Grouping                  &g,
+                                        const unsigned int               d,
+                                        const std::vector<unsigned int> &blocks,
+                                        std::vector<unsigned int>       &local,
+                                        std::vector<unsigned int>       &stamp) const
   {
     Separation::SupportParts support;
     auto &[members, position, parts, part, total] = support;
     for (const unsigned int b : blocks)
       {
-        const auto        &dofs = u_dofs(blocks_[b]);
+        const auto        &dofs = g.u.cell_dofs(g.blocks[b].u_cell, g.blocks[b].u_piece);
         const unsigned int a    = std::find(dofs.begin(), dofs.end(), d) - dofs.begin();
-        for (unsigned int p = blocks_[b].first; p < blocks_[b].end; ++p)
+        for (unsigned int p = g.blocks[b].first; p < g.blocks[b].end; ++p)
           {
             local[p] = members.size();
             stamp[p] = d + 1;
@@ -345,21 +333,21 @@ namespace GelMPM
     parts = Separation::Parts(members.size());
     for (unsigned int m = 0; m < members.size(); ++m)
       {
-        const auto [begin, end] = graph.neighbours(order_[members[m]]);
+        const auto [begin, end] = graph.neighbours(g.order[members[m]]);
         for (auto j = begin; j != end; ++j)
-          if (const unsigned int q = sorted_of_[*j]; stamp[q] == d + 1)
+          if (const unsigned int q = sorted_of[*j]; stamp[q] == d + 1)
             parts.join(m, local[q]);
       }
     part.assign(members.size(), Separation::Part());
     for (unsigned int m = 0; m < members.size(); ++m)
       {
-        const auto &r    = points_[members[m]];
+        const auto &r    = g.points[members[m]];
         auto       &into = part[parts.root(m)];
         ++into.points;
         into.separated_surface |= separates(r);
         if (r.kind == PointKind::volume)
           {
-            const double w = r.measure * std::abs(u_values[r.u_offset + position[m]]);
+            const double w = r.measure * std::abs(g.u_values[r.u_offset + position[m]]);
             into.weight += w;
             total += w;
           }
@@ -370,7 +358,7 @@ namespace GelMPM
 
   template <int dim>
   std::vector<unsigned int>
-  PointCache<dim>::faces_of_support(Separation::SupportParts &support) const
+  FaceSeparation<dim>::faces_of_support(Separation::SupportParts &support) const
   {
     // A face of its own: a part with a separated surface point and more than 1 % of the weight
     // (slivers cut off by the edge of the support have none of the first or little of the second).
@@ -385,13 +373,12 @@ namespace GelMPM
 
   template <int dim>
   bool
-  PointCache<dim>::near_along_surface(const PointGraph                &graph,
-                                      const std::vector<unsigned int> &from,
-                                      const std::vector<unsigned int> &to,
-                                      const double                     reach) const
+  FaceSeparation<dim>::near_along_surface(const Grouping                  &g,
+                                          const std::vector<unsigned int> &from,
+                                          const std::vector<unsigned int> &to) const
   {
     // Shortest paths from the points of @p from over neighbouring surface points, their lengths
-    // in the initial configuration, no farther than @p reach. (Points are unsorted indices.)
+    // in the initial configuration, no farther than along_surface. (Points are unsorted indices.)
     std::unordered_map<unsigned int, double> distance;
     using Entry = std::pair<double, unsigned int>;
     std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
@@ -401,8 +388,8 @@ namespace GelMPM
         queue.emplace(0., i);
       }
     const std::unordered_set<unsigned int> targets(to.begin(), to.end());
-    const auto &record = [this](const unsigned int i) -> const PointRecord<dim> & {
-      return points_[sorted_of_[i]];
+    const auto &record = [&](const unsigned int i) -> const PointRecord<dim> & {
+      return g.points[sorted_of[i]];
     };
     while (!queue.empty())
       {
@@ -418,7 +405,7 @@ namespace GelMPM
             if (record(*j).kind == PointKind::volume)
               continue;
             const double next = d + (record(*j).X0 - record(i).X0).norm();
-            if (next > reach)
+            if (next > along_surface)
               continue;
             const auto known = distance.find(*j);
             if (known == distance.end() || next < known->second)
@@ -432,62 +419,6 @@ namespace GelMPM
   }
 
 
-  template <int dim>
-  std::vector<unsigned int>
-  PointCache<dim>::separate_supports(const PointGraph &graph)
-  {
-    std::vector<unsigned int> copy_of;
-    const auto                copies = copies_of_points(graph, copy_of);
-    spaces.set_u_copies(copy_of);
-    // The sides of a block: its points with one list of copies each.
-    std::vector<unsigned int> sides(points_.size(), 0);
-    for (const PointBlock &b : blocks_)
-      {
-        std::vector<const std::vector<std::pair<unsigned int, unsigned int>> *> lists;
-        for (unsigned int p = b.first; p < b.end; ++p)
-          {
-            if (copies[p].empty())
-              continue;
-            const auto known = std::find_if(lists.begin(), lists.end(), [&](const auto *list) {
-              return *list == copies[p];
-            });
-            sides[order_[p]] = (known - lists.begin()) + 1;
-            if (known != lists.end())
-              continue;
-            lists.push_back(&copies[p]);
-            std::vector<unsigned int> dofs = u_dofs(b);
-            for (const auto &[a, copy] : copies[p])
-              dofs[a] = copy;
-            side_lists_[{b.u_cell, b.u_piece, static_cast<unsigned int>(lists.size())}] =
-              own_u_dofs_.size();
-            // The step's separation, flattened: the pattern follows it.
-            separation_.insert(separation_.end(), {b.u_cell, b.u_piece});
-            separation_.insert(separation_.end(), dofs.begin(), dofs.end());
-            own_u_dofs_.push_back(std::move(dofs));
-          }
-      }
-    separation_.insert(separation_.end(), copy_of.begin(), copy_of.end());
-    return sides;
-  }
-
-
-#define GELMPM_INSTANTIATE(dim)                                                                             \
-  template void       PointCache<dim>::separate_faces(std::vector<bool>, const double);                     \
-  template PointGraph PointCache<dim>::material_neighbours(const std::vector<PointRecord<dim>> &,           \
-                                                           const std::vector<particle_iterator> &)          \
-    const;                                                                                                  \
-  template void PointCache<dim>::anchor_surface_points(const std::vector<PointRecord<dim>> &,               \
-                                                       const PointGraph &,                                  \
-                                                       std::vector<unsigned int> &,                         \
-                                                       std::vector<unsigned int> &) const;                  \
-  template std::vector<std::vector<std::pair<unsigned int, unsigned int>>>                                  \
-  PointCache<dim>::copies_of_points(const PointGraph &, std::vector<unsigned int> &);                       \
-  template std::vector<unsigned int> PointCache<dim>::separate_supports(const PointGraph &);                \
-  template bool                      PointCache<dim>::near_along_surface(const PointGraph &,                \
-                                                    const std::vector<unsigned int> &, \
-                                                    const std::vector<unsigned int> &, \
-                                                    const double) const;
-  GELMPM_INSTANTIATE(2)
-  GELMPM_INSTANTIATE(3)
-#undef GELMPM_INSTANTIATE
+  template class FaceSeparation<2>;
+  template class FaceSeparation<3>;
 } // namespace GelMPM
