@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <queue>
 #include <stdexcept>
@@ -263,6 +264,7 @@ namespace GelMPM
       sorted_of[g.order[p]] = p;
     const auto support = blocks_of_separated_functions(g);
     std::vector<std::vector<std::pair<unsigned int, unsigned int>>> copies(n_points);
+    std::vector<WeakCopy>                                           weak;
     std::vector<unsigned int> local(n_points), stamp(n_points, 0);
     const auto                separated = [&](const unsigned int p) {
       return separates(g.points[p]);
@@ -301,9 +303,176 @@ namespace GelMPM
             for (unsigned int m = 0; m < parts.members.size(); ++m)
               if (parts.parts.root(m) == face)
                 copies[parts.members[m]].emplace_back(parts.position[m], copy);
+            if (parts.part[face].weight < weak_share * parts.total && !g.u.refined())
+              weak.push_back({copy,
+                              d,
+                              parts.of_part(face,
+                                            [](unsigned int) {
+                                              return true;
+                                            }),
+                              {},
+                              parts.total});
+            for (unsigned int m = 0; m < parts.members.size() && !weak.empty(); ++m)
+              if (weak.back().copy == copy && parts.parts.root(m) != face)
+                weak.back().others.push_back(parts.members[m]);
           }
       }
+    tie_weak_copies(g, copies, copy_of.size(), weak);
     return copies;
+  }
+
+
+  template <int dim>
+  void
+  FaceSeparation<dim>::tie_weak_copies(
+    const Grouping                                                        &g,
+    const std::vector<std::vector<std::pair<unsigned int, unsigned int>>> &copies,
+    const unsigned int                                                     n_copies,
+    const std::vector<WeakCopy>                                           &weak)
+  {
+    ties_.clear();
+    control_point_of_dof.assign(g.u.n_dofs(), dealii::numbers::invalid_unsigned_int);
+    for (unsigned int i = 0; i < g.u.n_control_points(); ++i)
+      if (const unsigned int dof = g.u.dof_of_control_point(i); dof < g.u.n_dofs())
+        control_point_of_dof[dof] = i;
+    std::vector<bool> weak_copies(n_copies, false);
+    for (const auto &w : weak)
+      weak_copies[w.copy - g.u.n_dofs()] = true;
+    for (const auto &w : weak)
+      {
+        CopyTie tie;
+        if (tie_weak_copy(g, copies, weak_copies, w, tie))
+          ties_.push_back(std::move(tie));
+      }
+  }
+
+
+  template <int dim>
+  std::vector<unsigned int>
+  FaceSeparation<dim>::reached_from_face(const Grouping &g, const WeakCopy &weak) const
+  {
+    // Breadth first over material neighbours from the face, never into the support's other
+    // parts, no farther than 2(q+1) cells from the face's centre.
+    const auto &space = g.u.space();
+    double      h     = 0.;
+    for (unsigned int d = 0; d < dim; ++d)
+      h = std::max(h, space.cell_size(d));
+    const double       reach = 2. * (space.degree() + 1) * h;
+    dealii::Point<dim> centre;
+    for (const unsigned int m : weak.members)
+      centre += g.points[m].x / static_cast<double>(weak.members.size());
+    std::vector<unsigned char> state(g.points.size(), 0);
+    for (const unsigned int o : weak.others)
+      state[o] = 2;
+    std::vector<unsigned int> queue;
+    for (const unsigned int m : weak.members)
+      {
+        state[m] = 1;
+        queue.push_back(m);
+      }
+    for (unsigned int k = 0; k < queue.size(); ++k)
+      {
+        const auto [begin, end] = graph.neighbours(g.order[queue[k]]);
+        for (auto j = begin; j != end; ++j)
+          if (const unsigned int p = sorted_of[*j];
+              state[p] == 0 && (g.points[p].x - centre).norm() <= reach)
+            {
+              state[p] = 1;
+              queue.push_back(p);
+            }
+      }
+    return queue;
+  }
+
+
+  template <int dim>
+  bool
+  FaceSeparation<dim>::tie_weak_copy(
+    const Grouping                                                        &g,
+    const std::vector<std::vector<std::pair<unsigned int, unsigned int>>> &copies,
+    const std::vector<bool>                                               &weak_copies,
+    const WeakCopy                                                        &weak,
+    CopyTie                                                               &tie) const
+  {
+    const auto                          &space  = g.u.space();
+    const int                            q      = space.degree();
+    const unsigned int                   n_dofs = g.u.n_dofs();
+    std::map<unsigned int, unsigned int> reached, blocks_of_cell;
+    for (const unsigned int p : reached_from_face(g, weak))
+      ++reached[g.points[p].block];
+    for (const auto &b : g.blocks)
+      ++blocks_of_cell[b.u_cell];
+    const auto kk = space.function_multi_index(control_point_of_dof[weak.function]);
+    // The donor: a block wholly reached, alone in an interior cell, whose versions are no weak
+    // copies; the nearest to the function as the extension picks its block (eq. (54)).
+    double best_distance = std::numeric_limits<double>::max(), best_centre = best_distance;
+    int    best = -1;
+    std::array<int, dim> best_corner{};
+    for (const auto &[b, n] : reached)
+      {
+        const PointBlock &block = g.blocks[b];
+        if (n != block.end - block.first || blocks_of_cell[block.u_cell] != 1 ||
+            g.u.cell_kind(block.u_cell) != CellKind::interior)
+          continue;
+        bool usable = true;
+        for (const auto &[position, copy] : copies[block.first])
+          usable &= !weak_copies[copy - n_dofs];
+        if (!usable)
+          continue;
+        std::array<int, dim> corner;
+        corner.fill(std::numeric_limits<int>::max());
+        for (const unsigned int dof : g.u.cell_dofs(block.u_cell))
+          {
+            const auto m = space.function_multi_index(control_point_of_dof[dof]);
+            for (unsigned int d = 0; d < dim; ++d)
+              corner[d] = std::min(corner[d], static_cast<int>(m[d]));
+          }
+        double distance = 0., centre = 0.;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const int k   = kk[d];
+            const int gap = std::max({0, corner[d] - k, k - (corner[d] + q)});
+            distance += gap * gap;
+            centre += (k - corner[d] - 0.5 * q) * (k - corner[d] - 0.5 * q);
+          }
+        if (distance < best_distance - 1e-12 ||
+            (distance < best_distance + 1e-12 && centre < best_centre - 1e-12))
+          {
+            best          = b;
+            best_corner   = corner;
+            best_distance = distance;
+            best_centre   = centre;
+          }
+      }
+    if (best < 0)
+      return false;
+    const PointBlock &donor = g.blocks[best];
+    const auto       &dofs  = g.u.cell_dofs(donor.u_cell);
+    tie.copy                = weak.copy;
+    tie.cell                = g.blocks[g.points[weak.members.front()].block].u_cell;
+    tie.donor_cell          = donor.u_cell;
+    tie.donors.clear();
+    for (unsigned int a = 0; a < dofs.size(); ++a)
+      {
+        const auto m = space.function_multi_index(control_point_of_dof[dofs[a]]);
+        double     E = 1.;
+        for (unsigned int d = 0; d < dim; ++d)
+          for (int s = best_corner[d]; s <= best_corner[d] + q; ++s)
+            if (s != static_cast<int>(m[d]))
+              E *= static_cast<double>(static_cast<int>(kk[d]) - s) / (static_cast<int>(m[d]) - s);
+        unsigned int version = dofs[a];
+        for (const auto &[position, copy] : copies[donor.first])
+          if (position == a)
+            version = copy;
+        if (version == weak.copy)
+          return false;
+        tie.donors.emplace_back(version, E);
+      }
+    double h = 0.;
+    for (unsigned int d = 0; d < dim; ++d)
+      h = std::max(h, space.cell_size(d));
+    tie.stiffness = g.points[weak.members.front()].gel->shear_modulus() * weak.total / (h * h);
+    return true;
   }
 
 

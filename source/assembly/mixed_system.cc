@@ -265,6 +265,10 @@ namespace GelMPM
           if (hold)
             r.seal = seal;
         }
+    // Self-contact is 2D only (its assembler exists for dim = 2).
+    if constexpr (dim == 2)
+      if (const auto *self = terms.self_contact())
+        changed += self->hold_active_pairs(cache, solution, hold);
     return dealii::Utilities::MPI::sum(changed, communicator);
   }
 
@@ -273,6 +277,9 @@ namespace GelMPM
   void
   MixedSystem<dim>::release_switches()
   {
+    if constexpr (dim == 2)
+      if (const auto *self = terms.self_contact())
+        self->release_active_pairs();
     for (auto &r : cache.points())
       r.seal = -1;
   }

@@ -80,6 +80,15 @@ namespace GelMPM
 
 
   template <int dim>
+  const std::vector<CopyTie> &
+  PointCache<dim>::copy_ties() const
+  {
+    static const std::vector<CopyTie> none;
+    return separation && !spaces.u_copies().empty() ? separation->ties() : none;
+  }
+
+
+  template <int dim>
   std::vector<unsigned int>
   PointCache<dim>::separate_supports()
   {

@@ -233,6 +233,7 @@ namespace GelMPM
     std::vector<std::pair<unsigned int, unsigned int>> &pairs) const
   {
     pairs_ = find_pairs(cache);
+    held_.clear();
     // The pattern couples the unknowns of a block (a leaf) with each other only: two points of
     // different blocks need their cells coupled, also when both blocks are leaves of one cell of
     // a refined grid (the pair (c, c) then couples all of the cell's pieces).
@@ -247,6 +248,76 @@ namespace GelMPM
               pairs.emplace_back(cache.blocks()[blocks[k]].u_cell,
                                  cache.blocks()[blocks[l]].u_cell);
       }
+    for (const CopyTie &tie : cache.copy_ties())
+      pairs.emplace_back(tie.cell, tie.donor_cell);
+  }
+
+
+  template <int dim>
+  unsigned int
+  SelfContactAssembler<dim>::hold_active_pairs(const PointCache<dim>        &cache,
+                                               const dealii::Vector<double> &solution,
+                                               const bool                    hold) const
+  {
+    std::vector<PointSegmentGap> gaps;
+    const auto                   active = active_pairs(cache, solution, gaps, false);
+    // Per group of a point's pairs, its active pair at @p solution or -1.
+    std::vector<int> now;
+    for (unsigned int k = 0, a = 0; k < pairs_.size();)
+      {
+        const unsigned int point = pairs_[k].point;
+        int                which = -1;
+        for (; k < pairs_.size() && pairs_[k].point == point; ++k)
+          if (a < active.size() && active[a] == static_cast<int>(k))
+            {
+              which = k;
+              ++a;
+            }
+        now.push_back(which);
+      }
+    unsigned int changed = 0;
+    if (!held_.empty())
+      for (unsigned int g = 0; g < now.size(); ++g)
+        changed += now[g] != held_[g];
+    if (hold)
+      held_ = std::move(now);
+    return changed;
+  }
+
+
+  template <int dim>
+  void
+  SelfContactAssembler<dim>::assemble_copy_ties(const PointCache<dim>        &cache,
+                                                const dealii::Vector<double> &solution,
+                                                const bool                    with_matrix,
+                                                std::vector<AssemblyCopy>    &copies) const
+  {
+    // kappa/2 |u_c - sum_j E_j u_j|^2 per component: a = (1, -E_1, ...), R = kappa a (a . u),
+    // K = kappa a (x) a.
+    for (const CopyTie &tie : cache.copy_ties())
+      for (unsigned int i = 0; i < dim; ++i)
+        {
+          std::vector<std::pair<unsigned int, double>> a = {{dim * tie.copy + i, 1.}};
+          for (const auto &[dof, E] : tie.donors)
+            a.emplace_back(dim * dof + i, -E);
+          double misfit = 0.;
+          for (const auto &[row, weight] : a)
+            misfit += weight * solution(row);
+          AssemblyCopy copy;
+          for (const auto &[row, weight] : a)
+            copy.dofs.push_back(row);
+          copy.residual.reinit(a.size());
+          if (with_matrix)
+            copy.matrix.reinit(a.size(), a.size());
+          for (unsigned int k = 0; k < a.size(); ++k)
+            {
+              copy.residual(k) = tie.stiffness * a[k].second * misfit;
+              if (with_matrix)
+                for (unsigned int l = 0; l < a.size(); ++l)
+                  copy.matrix(k, l) = tie.stiffness * a[k].second * a[l].second;
+            }
+          copies.push_back(std::move(copy));
+        }
   }
 
 
@@ -254,12 +325,14 @@ namespace GelMPM
   std::vector<int>
   SelfContactAssembler<dim>::active_pairs(const PointCache<dim>        &cache,
                                           const dealii::Vector<double> &solution,
-                                          std::vector<PointSegmentGap> &gaps) const
+                                          std::vector<PointSegmentGap> &gaps,
+                                          const bool                    use_held) const
   {
     gaps.resize(pairs_.size());
     std::vector<int> active;
-    // The pairs of a point follow each other; its active pair is the deepest it lies behind.
-    for (unsigned int k = 0; k < pairs_.size();)
+    // The pairs of a point follow each other; its active pair is the deepest it lies behind, or
+    // the one held (hold_active_pairs()).
+    for (unsigned int k = 0, group = 0; k < pairs_.size(); ++group)
       {
         const unsigned int point   = pairs_[k].point;
         const Point<dim>   x_s     = current_position(cache, point, solution);
@@ -273,6 +346,8 @@ namespace GelMPM
                 gaps[k].xi <= 1. + end_tolerance && (deepest < 0 || gaps[k].g < gaps[deepest].g))
               deepest = k;
           }
+        if (use_held && !held_.empty())
+          deepest = held_[group];
         if (deepest >= 0)
           active.push_back(deepest);
       }
@@ -288,6 +363,7 @@ namespace GelMPM
                                                     const bool                 with_matrix,
                                                     std::vector<AssemblyCopy> &copies) const
   {
+    assemble_copy_ties(cache, solution, with_matrix, copies);
     std::vector<PointSegmentGap> gaps;
     for (const int k : active_pairs(cache, solution, gaps))
       {

@@ -174,6 +174,21 @@ namespace
       report("the copies are unknowns",
              system.spaces().n_u_dofs() == tied.scene->system->spaces().n_u_dofs() + 2 * n_copies);
     ok &= report("the next setup keeps the pattern", !system.setup(apart.scene->particles));
+    const auto &ties = system.point_cache().copy_ties();
+    std::cout << "  " << ties.size()
+              << " copies tied to their face's functions (a quarter of the weight or less)"
+              << std::endl;
+    // Lagrange extrapolation (eq. (54)) reproduces constants: the weights sum to 1.
+    double sum_error = 0.;
+    for (const auto &tie : ties)
+      {
+        double sum = 0.;
+        for (const auto &[dof, E] : tie.donors)
+          sum += E;
+        sum_error = std::max(sum_error, std::abs(sum - 1.));
+      }
+    ok &= report("weak copies tied, their weights summing to 1 (1e-12)",
+                 !ties.empty() && sum_error < 1e-12);
     system.set_boundary_values(0.5, 0.);
 
     // The upper block alone moved rigidly.

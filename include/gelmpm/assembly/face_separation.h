@@ -105,7 +105,47 @@ namespace GelMPM
     std::vector<std::vector<std::pair<unsigned int, unsigned int>>>
     copies_of_points(const Grouping &grouping, std::vector<unsigned int> &copy_of);
 
+    /** The ties of the weak copies of the last copies_of_points(). */
+    const std::vector<CopyTie> &
+    ties() const
+    {
+      return ties_;
+    }
+
+    /** A face's share of a function's weight below which its copy is tied (CopyTie). */
+    static constexpr double weak_share = 0.25;
+
   private:
+    /** A copy whose face holds less than weak_share of its function's weight. */
+    struct WeakCopy
+    {
+      unsigned int              copy, function;
+      std::vector<unsigned int> members, others;
+      double                    total;
+    };
+
+    /**
+     * The tie of @p weak (its face's members and the support's other points, sorted indices) to
+     * the nearest interior cell reached from its face without crossing the other points, given
+     * the copies @p copies each point uses; false where no such cell lies within 2(q+1) cells.
+     */
+    void
+    tie_weak_copies(const Grouping                                                        &grouping,
+                    const std::vector<std::vector<std::pair<unsigned int, unsigned int>>> &copies,
+                    const unsigned int                                                     n_copies,
+                    const std::vector<WeakCopy>                                           &weak);
+
+    /** The sorted points reached from @p weak's face (tie_weak_copy()). */
+    std::vector<unsigned int>
+    reached_from_face(const Grouping &grouping, const WeakCopy &weak) const;
+
+    bool
+    tie_weak_copy(const Grouping                                                        &grouping,
+                  const std::vector<std::vector<std::pair<unsigned int, unsigned int>>> &copies,
+                  const std::vector<bool> &weak_copies,
+                  const WeakCopy          &weak,
+                  CopyTie                 &tie) const;
+
     /**
      * Per record of @p unsorted, its spacing in the initial configuration (V_0^{1/dim},
      * A_0^{1/(dim-1)}, revolved measures divided by 2 pi R_0) and, for surface points, the unit
@@ -151,6 +191,8 @@ namespace GelMPM
     // The step's neighbours (unsorted indices) and, per unsorted record, its sorted index.
     PointGraph                graph;
     std::vector<unsigned int> sorted_of;
+    std::vector<CopyTie>      ties_;
+    std::vector<unsigned int> control_point_of_dof;
   };
 } // namespace GelMPM
 

@@ -113,6 +113,26 @@ namespace GelMPM
   template <int dim>
   class FaceSeparation;
 
+  /**
+   * @brief A weak copy tied to its face's own functions: the copy's coefficient is pulled
+   * towards the Lagrange extrapolation, eq. (54), of the functions of the nearest interior cell
+   * of its face (the versions that face uses), by the energy kappa/2 |u_copy - sum_j E_j u_j|^2
+   * per component. A face that holds only the tail of a function (its part below a quarter of the
+   * function's weight) would otherwise get an unknown of almost no stiffness, which Newton moves
+   * arbitrarily far (doc/method.md, "Two faces on one grid"); the tie vanishes for fields that are
+   * polynomials of the degree on the face, as the extension of cut cells does.
+   */
+  struct CopyTie
+  {
+    /** The copy's u DoF and a cell whose points use it. */
+    unsigned int copy, cell;
+    /** The donor cell and its functions' DoFs (the face's versions) with their weights E_j. */
+    unsigned int                                 donor_cell;
+    std::vector<std::pair<unsigned int, double>> donors;
+    /** kappa: G times the function's weight sum V_n |N| over h^2 (its stiffness's scale). */
+    double stiffness;
+  };
+
 
   /**
    * @brief The per-step cache of material-point data (doc/architecture.md, "A per-step cache of
@@ -266,6 +286,10 @@ namespace GelMPM
      */
     void
     separate_faces(std::vector<bool> pieces, const double along_surface = 0.);
+
+    /** The ties of this step's weak copies (FaceSeparation::ties()); none without copies. */
+    const std::vector<CopyTie> &
+    copy_ties() const;
 
     /** Copies of displacement functions made by separate_faces() this step. */
     unsigned int

@@ -122,6 +122,24 @@ namespace GelMPM
     State
     state(const PointCache<dim> &cache, const dealii::Vector<double> &solution) const;
 
+    /**
+     * Hold each point's active pair (or none) at its value at @p solution (with @p hold false
+     * only compare): the switches of semi-smooth Newton, which can otherwise cycle where a point
+     * slides off the end of its segment (MixedSystem::freeze_switches()). How many changed
+     * against those held.
+     */
+    unsigned int
+    hold_active_pairs(const PointCache<dim>        &cache,
+                      const dealii::Vector<double> &solution,
+                      const bool                    hold) const;
+
+    /** Let the active pairs follow the iterate again. */
+    void
+    release_active_pairs() const
+    {
+      held_.clear();
+    }
+
     /** The number of pairs of the step. */
     unsigned int
     n_pairs() const;
@@ -132,6 +150,13 @@ namespace GelMPM
     {
       unsigned int point, a, b;
     };
+
+    /** The ties of the weak copies (CopyTie), at @p solution. */
+    void
+    assemble_copy_ties(const PointCache<dim>        &cache,
+                       const dealii::Vector<double> &solution,
+                       const bool                    with_matrix,
+                       std::vector<AssemblyCopy>    &copies) const;
 
     /** The pairs of the points of @p cache at x_n. */
     std::vector<Pair>
@@ -147,7 +172,8 @@ namespace GelMPM
     std::vector<int>
     active_pairs(const PointCache<dim>        &cache,
                  const dealii::Vector<double> &solution,
-                 std::vector<PointSegmentGap> &gaps) const;
+                 std::vector<PointSegmentGap> &gaps,
+                 const bool                    use_held = true) const;
 
     /** beta_s at the point @p r. */
     double
@@ -159,6 +185,8 @@ namespace GelMPM
     /** The pairs of the step, sorted by point (found at setup, where the couplings are asked:
      * they are the couplings). */
     mutable std::vector<Pair> pairs_;
+    /** Per point with pairs (in their order), the active pair held, -1 none; empty: not held. */
+    mutable std::vector<int> held_;
   };
 } // namespace GelMPM
 
