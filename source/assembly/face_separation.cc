@@ -317,7 +317,7 @@ namespace GelMPM
                 weak.back().others.push_back(parts.members[m]);
           }
       }
-    tie_weak_copies(g, copies, copy_of.size(), weak);
+    tie_weak_copies(g, copies, copy_of, weak);
     return copies;
   }
 
@@ -325,24 +325,61 @@ namespace GelMPM
   template <int dim>
   void
   FaceSeparation<dim>::tie_weak_copies(
-    const Grouping                                                        &g,
-    const std::vector<std::vector<std::pair<unsigned int, unsigned int>>> &copies,
-    const unsigned int                                                     n_copies,
-    const std::vector<WeakCopy>                                           &weak)
+    const Grouping                                                  &g,
+    std::vector<std::vector<std::pair<unsigned int, unsigned int>>> &copies,
+    std::vector<unsigned int>                                       &copy_of,
+    const std::vector<WeakCopy>                                     &weak)
   {
     ties_.clear();
-    control_point_of_dof.assign(g.u.n_dofs(), dealii::numbers::invalid_unsigned_int);
+    const unsigned int n_dofs = g.u.n_dofs();
+    control_point_of_dof.assign(n_dofs, dealii::numbers::invalid_unsigned_int);
     for (unsigned int i = 0; i < g.u.n_control_points(); ++i)
-      if (const unsigned int dof = g.u.dof_of_control_point(i); dof < g.u.n_dofs())
+      if (const unsigned int dof = g.u.dof_of_control_point(i); dof < n_dofs)
         control_point_of_dof[dof] = i;
-    std::vector<bool> weak_copies(n_copies, false);
+    std::vector<bool> weak_copies(copy_of.size(), false);
     for (const auto &w : weak)
-      weak_copies[w.copy - g.u.n_dofs()] = true;
+      weak_copies[w.copy - n_dofs] = true;
+    // A weak copy without a donor next to it (at a corner of the face, where only a diagonal
+    // extrapolation reaches an interior cell) is no copy: its face keeps the function.
+    std::vector<bool> removed(copy_of.size(), false);
     for (const auto &w : weak)
       {
         CopyTie tie;
         if (tie_weak_copy(g, copies, weak_copies, w, tie))
           ties_.push_back(std::move(tie));
+        else
+          removed[w.copy - n_dofs] = true;
+      }
+    if (std::find(removed.begin(), removed.end(), true) == removed.end())
+      return;
+    std::vector<unsigned int> renumbered(copy_of.size());
+    std::vector<unsigned int> kept;
+    for (unsigned int k = 0; k < copy_of.size(); ++k)
+      if (!removed[k])
+        {
+          renumbered[k] = n_dofs + kept.size();
+          kept.push_back(copy_of[k]);
+        }
+    copy_of            = std::move(kept);
+    const auto new_dof = [&](const unsigned int dof) {
+      return dof < n_dofs ? dof : renumbered[dof - n_dofs];
+    };
+    for (auto &list : copies)
+      {
+        list.erase(std::remove_if(list.begin(),
+                                  list.end(),
+                                  [&](const auto &entry) {
+                                    return removed[entry.second - n_dofs];
+                                  }),
+                   list.end());
+        for (auto &entry : list)
+          entry.second = new_dof(entry.second);
+      }
+    for (auto &tie : ties_)
+      {
+        tie.copy = new_dof(tie.copy);
+        for (auto &donor : tie.donors)
+          donor.first = new_dof(donor.first);
       }
   }
 
@@ -444,7 +481,10 @@ namespace GelMPM
             best_centre   = centre;
           }
       }
-    if (best < 0)
+    // Only a donor next to the function along one direction (weights up to 3 for q = 2): the
+    // diagonal extrapolation to a face's corner amplifies its donors' motion (weights up to 9)
+    // and Newton did not converge with it.
+    if (best < 0 || best_distance > 1. + 1e-12)
       return false;
     const PointBlock &donor = g.blocks[best];
     const auto       &dofs  = g.u.cell_dofs(donor.u_cell);

@@ -1,5 +1,6 @@
 #include <gelmpm/assembly/self_contact.h>
 #include <gelmpm/core/input_error.h>
+#include <gelmpm/core/non_physical_state.h>
 #include <gelmpm/geometry/surface_geometry.h>
 #include <gelmpm/particles/property_layout.h>
 
@@ -365,7 +366,17 @@ namespace GelMPM
   {
     assemble_copy_ties(cache, solution, with_matrix, copies);
     std::vector<PointSegmentGap> gaps;
-    for (const int k : active_pairs(cache, solution, gaps))
+    const auto                   active = active_pairs(cache, solution, gaps);
+    // An iterate with a point farther behind a segment than a pair may start: not a state the
+    // penalty leaves (sigma_n / beta_s) but a Newton update that overshot, whose forces would
+    // throw the next one farther; the line search damps it as it damps a J <= 1.
+    const double depth = settings.largest_depth * this->spaces.h_u(0);
+    for (const int k : active)
+      if (-gaps[k].g > depth)
+        throw NonPhysicalState("a surface point of the self-contact lies " +
+                               std::to_string(-gaps[k].g) +
+                               " behind the surface, beyond 'Contact/Self contact/Largest depth'");
+    for (const int k : active)
       {
         const Pair             &pair  = pairs_[k];
         const PointSegmentGap  &gap   = gaps[k];

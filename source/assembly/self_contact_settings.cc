@@ -68,7 +68,10 @@ namespace GelMPM
                       "In cells of the background grid as given (as 'Search distance'): at the "
                       "start of a step a point up to this far behind a "
                       "segment is still its pair (a penetration the penalty left); farther "
-                      "behind it is taken for the other face of a thin body.");
+                      "behind it is taken for the other face of a thin body. A Newton iterate "
+                      "that puts an active point farther behind its segment is no state the "
+                      "penalty leaves: the line search damps the update as it damps one to J <= "
+                      "1.");
     prm.leave_subsection();
   }
 

@@ -129,11 +129,15 @@ namespace GelMPM
      * the nearest interior cell reached from its face without crossing the other points, given
      * the copies @p copies each point uses; false where no such cell lies within 2(q+1) cells.
      */
+    /**
+     * Tie each copy of @p weak (CopyTie); a weak copy that cannot be tied is removed from
+     * @p copies and @p copy_of (its face keeps the function) and the copies are numbered anew.
+     */
     void
-    tie_weak_copies(const Grouping                                                        &grouping,
-                    const std::vector<std::vector<std::pair<unsigned int, unsigned int>>> &copies,
-                    const unsigned int                                                     n_copies,
-                    const std::vector<WeakCopy>                                           &weak);
+    tie_weak_copies(const Grouping                                                  &grouping,
+                    std::vector<std::vector<std::pair<unsigned int, unsigned int>>> &copies,
+                    std::vector<unsigned int>                                       &copy_of,
+                    const std::vector<WeakCopy>                                     &weak);
 
     /** The sorted points reached from @p weak's face (tie_weak_copy()). */
     std::vector<unsigned int>
