@@ -456,6 +456,7 @@ namespace GelMPM
           state.force       = s.force;
           state.area        = s.area;
           state.penetration = s.penetration;
+          state.deepest_X0  = s.deepest_X0;
         }
     return state;
   }

@@ -438,6 +438,8 @@ namespace GelMPM
         ++state.points;
         state.force += point.measure * penalty(point) * -gaps[k].g;
         state.area += 0.5 * point.measure;
+        if (-gaps[k].g >= state.penetration)
+          state.deepest_X0 = point.X0;
         state.penetration = std::max(state.penetration, -gaps[k].g);
       }
     return state;

@@ -145,6 +145,20 @@ namespace GelMPM
 
 
   template <int dim>
+  unsigned int
+  PoreShapes<dim>::pore_of(const dealii::Point<dim> &X0) const
+  {
+    if (pore_centres.empty())
+      return 0;
+    unsigned int nearest = 0;
+    for (unsigned int k = 1; k < pore_centres.size(); ++k)
+      if (X0.distance(pore_centres[k]) < X0.distance(pore_centres[nearest]))
+        nearest = k;
+    return nearest + 1;
+  }
+
+
+  template <int dim>
   std::vector<std::pair<std::string, unsigned int>>
   PoreShapes<dim>::new_events(const dealii::Particles::ParticleHandler<dim> &particles)
   {

@@ -377,8 +377,12 @@ namespace GelMPM
       statistics_file.set("self_contact_copies", scene.system->point_cache().n_function_copies());
     if (state.points > 0 && !self_touching)
       {
-        write_event("self_contact", current_time(), 0);
-        log << "  event: self_contact of the gel's surface at t/tau_d = " << current_time() << '\n';
+        // The pore of the deepest point where pores are observed (their walls' first contact).
+        const unsigned int pore = observables.pore_of(state.deepest_X0);
+        write_event("self_contact", current_time(), pore);
+        log << "  event: self_contact of the gel's surface"
+            << (pore > 0 ? " (pore " + std::to_string(pore) + ")" : "")
+            << " at t/tau_d = " << current_time() << '\n';
       }
     self_touching = state.points > 0;
   }

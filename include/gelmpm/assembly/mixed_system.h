@@ -304,6 +304,8 @@ namespace GelMPM
       double area = 0.;
       /** The largest penetration of a point behind the surface. */
       double penetration = 0.;
+      /** The initial position of that point. */
+      dealii::Point<dim> deepest_X0;
     };
 
     /** The self-contact of @p solution with the step's pairs (all zero when off). */

@@ -116,6 +116,8 @@ namespace GelMPM
       double area = 0.;
       /** The largest penetration -g of an active point (0 if none). */
       double penetration = 0.;
+      /** The initial position of that point (which pore or piece touches). */
+      dealii::Point<2> deepest_X0;
     };
 
     /** The self-contact of @p solution with the step's pairs (@p cache of the last setup). */

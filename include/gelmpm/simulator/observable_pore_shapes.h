@@ -64,6 +64,11 @@ namespace GelMPM
     std::vector<std::pair<std::string, unsigned int>>
     new_events(const dealii::Particles::ParticleHandler<dim> &particles);
 
+    /** The pore (from 1) whose centre lies nearest to the initial position @p X0, as a pore
+     * takes its points; 0 without pores. */
+    unsigned int
+    pore_of(const dealii::Point<dim> &X0) const;
+
     /** The events seen so far, for a checkpoint (the archive's fields, no class record). */
     template <class Archive>
     void

@@ -92,6 +92,13 @@ namespace GelMPM
     std::vector<std::pair<std::string, unsigned int>>
     new_events(const dealii::Particles::ParticleHandler<dim> &particles);
 
+    /** With 'Pore piece': PoreShapes::pore_of(); 0 otherwise. */
+    unsigned int
+    pore_of(const dealii::Point<dim> &X0) const
+    {
+      return pores ? pores->pore_of(X0) : 0;
+    }
+
     /** Whether new_events() can report anything (then the simulator writes events.csv). */
     bool
     writes_events() const;
