@@ -25,7 +25,12 @@ run it reads statistics.csv, events.csv and the profiles surface_top-*.csv and r
 
   /usr/bin/python3 contrib/benchmarks/creasing_film.py [--gelmpm build/gelmpm] [--output DIR]
       [--cells 16,20,32] [--dips 0.02,0.005] [--end-time 12] [--levels 0,1,2,3 --box BOX]
-      [--band W]
+      [--band W] [--set ENTRY=VALUE ...]
+
+--set passes further settings to every run, e.g. the self-contact of doc/method.md, "Two faces on
+one grid": --set "Contact/Self contact/Method=penalty" --set "Contact/Self contact/Penalty=100"
+--set "Contact/Self contact/Separate faces=true"; the table then gives the time at which the
+flanks first touch (the 'self_contact' event).
 
 With --levels, each grid is also run refined that many times in --box (default: round the dip
 and the path of the top while the film swells), the finest spacing h/2^levels there; with
@@ -106,7 +111,7 @@ def output_times(directory):
     return dict(sorted(times.items()))
 
 
-def run(gelmpm, cells, dip, end_time, directory, reuse, levels=0, box="", band=0.0):
+def run(gelmpm, cells, dip, end_time, directory, reuse, levels=0, box="", band=0.0, extra=()):
     h = 1.0 / cells
     args = [gelmpm, os.path.join(TOP, "prm", "creasing_film.prm"),
             "--set", f"Output/Directory={directory}",
@@ -116,6 +121,8 @@ def run(gelmpm, cells, dip, end_time, directory, reuse, levels=0, box="", band=0
             "--set", f"Geometry/Level set constants=d={dip}, w=0.1",
             "--set", f"Time stepping/End time={end_time}",
             "--set", "Observables/Volume ratio range=true"]
+    for setting in extra:
+        args += ["--set", setting]
     if levels > 0 and band > 0:
         args += ["--set", f"Background grid/Refinement band={band}",
                  "--set", "Background grid/Refinement band pieces=top",
@@ -143,6 +150,9 @@ def run(gelmpm, cells, dip, end_time, directory, reuse, levels=0, box="", band=0
     events = [r for r in read_csv(os.path.join(directory, "events.csv"))
               if r["event"] == "crease_top"]
     t_crease = float(events[0]["t_over_tau_d"]) if events else math.nan
+    touches = [r for r in read_csv(os.path.join(directory, "events.csv"))
+               if r["event"] == "self_contact"]
+    t_touch = float(touches[0]["t_over_tau_d"]) if touches else math.nan
     t_fold = math.nan
     for index, t_output in output_times(directory).items():
         if profile_folds(os.path.join(directory, f"surface_top-{index:05d}.csv"), h):
@@ -150,7 +160,8 @@ def run(gelmpm, cells, dip, end_time, directory, reuse, levels=0, box="", band=0
             break
     J_before = max((J for ti, J in zip(t, J_max) if not ti > t_crease), default=math.nan)
     return dict(cells=cells, levels=levels, dip=dip, t_end=t[-1], reached=returncode == 0,
-                t_45=t_45, t_fold=t_fold, t_crease=t_crease,
+                t_45=t_45, t_fold=t_fold, t_crease=t_crease, t_touch=t_touch,
+                relief=float(stats[-1]["top_relief"]), folds=int(float(stats[-1]["top_folds"])),
                 J_max_before=J_before, J_max=max(J_max), wall=wall)
 
 
@@ -173,6 +184,9 @@ def main():
     parser.add_argument("--band", type=float, default=0.0,
                         help="with --levels: refine within this distance of the top's current "
                              "surface instead of --box")
+    parser.add_argument("--set", action="append", default=[], metavar="ENTRY=VALUE",
+                        help="a further --set for every run (repeatable), e.g. "
+                             "'Contact/Self contact/Method=penalty'")
     parser.add_argument("--plot", action="store_true")
     parser.add_argument("--reuse", action="store_true",
                         help="analyse the runs already in --output instead of running them")
@@ -185,7 +199,8 @@ def main():
                               for l in a.levels.split(",")]:
             directory = os.path.join(a.output, f"h{cells}_d{dip}" +
                                      (f"_L{levels}" if levels > 0 else ""))
-            r = run(a.gelmpm, cells, dip, a.end_time, directory, a.reuse, levels, a.box, a.band)
+            r = run(a.gelmpm, cells, dip, a.end_time, directory, a.reuse, levels, a.box, a.band,
+                    a.set)
             r["directory"] = directory
             results.append(r)
             print(f"h = H/{cells}, {levels} levels, dip {dip}: t_45 {r['t_45']:.3f}, fold {r['t_fold']:.2f}, "
@@ -194,14 +209,16 @@ def main():
 
     J_free = free_swelling_J(0.0)
     lines = ["| h | levels | dip / H | t_45 (s) | visible fold (s) | first crease event (s) | "
-             "J_max before / whole run | reached t/tau_d | wall |",
-             "|---|---|---|---|---|---|---|---|---|"]
+             "J_max before / whole run | flanks touch (self_contact) | reached t/tau_d | "
+             "relief, folds at the end | wall |",
+             "|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in results:
         lines.append(
             f"| H/{r['cells']} | {r['levels']} | {r['dip']} | {r['t_45']:.2f} ({stretch_at(r['t_45']):.3f}) | "
             f"{r['t_fold']:.1f} ({stretch_at(r['t_fold']):.3f}) | "
             f"{r['t_crease']:.2f} ({stretch_at(r['t_crease']):.3f}) | "
-            f"{r['J_max_before']:.2f} / {r['J_max']:.2f} | {r['t_end']:.2f} | {r['wall']:.0f} s |")
+            f"{r['J_max_before']:.2f} / {r['J_max']:.2f} | {r['t_touch']:.2f} | {r['t_end']:.2f} | "
+            f"{r['relief']:.3f}, {r['folds']} | {r['wall']:.0f} s |")
     lines.append("")
     lines.append(f"Times in tau_d; s in brackets. Plane-strain free swelling at mu = 0: "
                  f"J = {J_free:.3f}. s = 2.4 is reached at t = "

@@ -423,13 +423,13 @@ namespace GelMPM
 
 
   template <int dim>
-  bool
-  FaceSeparation<dim>::tie_weak_copy(
+  int
+  FaceSeparation<dim>::donor_block(
     const Grouping                                                        &g,
     const std::vector<std::vector<std::pair<unsigned int, unsigned int>>> &copies,
     const std::vector<bool>                                               &weak_copies,
     const WeakCopy                                                        &weak,
-    CopyTie                                                               &tie) const
+    std::array<int, dim>                                                  &best_corner) const
   {
     const auto                          &space  = g.u.space();
     const int                            q      = space.degree();
@@ -440,18 +440,15 @@ namespace GelMPM
     for (const auto &b : g.blocks)
       ++blocks_of_cell[b.u_cell];
     const auto kk = space.function_multi_index(control_point_of_dof[weak.function]);
-    // The donor: a block wholly reached, alone in an interior cell, whose versions are no weak
-    // copies; the nearest to the function as the extension picks its block (eq. (54)).
+    // A block wholly reached, alone in an interior cell, whose versions are no weak copies; the
+    // nearest to the function as the extension picks its block (eq. (54)).
     double best_distance = std::numeric_limits<double>::max(), best_centre = best_distance;
     int    best = -1;
-    std::array<int, dim> best_corner{};
     for (const auto &[b, n] : reached)
       {
         const PointBlock &block = g.blocks[b];
-        if (n != block.end - block.first || blocks_of_cell[block.u_cell] != 1 ||
-            g.u.cell_kind(block.u_cell) != CellKind::interior)
-          continue;
-        bool usable = true;
+        bool usable = n == block.end - block.first && blocks_of_cell[block.u_cell] == 1 &&
+                      g.u.cell_kind(block.u_cell) == CellKind::interior;
         for (const auto &[position, copy] : copies[block.first])
           usable &= !weak_copies[copy - n_dofs];
         if (!usable)
@@ -484,8 +481,26 @@ namespace GelMPM
     // Only a donor next to the function along one direction (weights up to 3 for q = 2): the
     // diagonal extrapolation to a face's corner amplifies its donors' motion (weights up to 9)
     // and Newton did not converge with it.
-    if (best < 0 || best_distance > 1. + 1e-12)
+    return best_distance > 1. + 1e-12 ? -1 : best;
+  }
+
+
+  template <int dim>
+  bool
+  FaceSeparation<dim>::tie_weak_copy(
+    const Grouping                                                        &g,
+    const std::vector<std::vector<std::pair<unsigned int, unsigned int>>> &copies,
+    const std::vector<bool>                                               &weak_copies,
+    const WeakCopy                                                        &weak,
+    CopyTie                                                               &tie) const
+  {
+    std::array<int, dim> corner;
+    const int            best = donor_block(g, copies, weak_copies, weak, corner);
+    if (best < 0)
       return false;
+    const auto       &space = g.u.space();
+    const int         q     = space.degree();
+    const auto        kk    = space.function_multi_index(control_point_of_dof[weak.function]);
     const PointBlock &donor = g.blocks[best];
     const auto       &dofs  = g.u.cell_dofs(donor.u_cell);
     tie.copy                = weak.copy;
@@ -494,10 +509,11 @@ namespace GelMPM
     tie.donors.clear();
     for (unsigned int a = 0; a < dofs.size(); ++a)
       {
+        // Tensor-product Lagrange extrapolation in the index, eq. (54).
         const auto m = space.function_multi_index(control_point_of_dof[dofs[a]]);
         double     E = 1.;
         for (unsigned int d = 0; d < dim; ++d)
-          for (int s = best_corner[d]; s <= best_corner[d] + q; ++s)
+          for (int s = corner[d]; s <= corner[d] + q; ++s)
             if (s != static_cast<int>(m[d]))
               E *= static_cast<double>(static_cast<int>(kk[d]) - s) / (static_cast<int>(m[d]) - s);
         unsigned int version = dofs[a];

@@ -100,6 +100,7 @@ namespace
                                   R"(
             set Pieces = lower_top, upper_bottom
             set Search distance = 3
+            set Penalty = 1000
             # The pressed states lie 0.05 = 0.4 h deep: within what an iterate may reach.
             set Largest depth = 0.5
           end

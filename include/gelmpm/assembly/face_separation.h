@@ -7,6 +7,7 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/particles/particle_handler.h>
 
+#include <array>
 #include <utility>
 #include <vector>
 
@@ -138,6 +139,17 @@ namespace GelMPM
                     std::vector<std::vector<std::pair<unsigned int, unsigned int>>> &copies,
                     std::vector<unsigned int>                                       &copy_of,
                     const std::vector<WeakCopy>                                     &weak);
+
+    /**
+     * The block whose cell's functions @p weak is extrapolated from (tie_weak_copy()), its
+     * cell's lowest function multi-index into @p corner; -1 if none lies next to the function.
+     */
+    int
+    donor_block(const Grouping                                                        &grouping,
+                const std::vector<std::vector<std::pair<unsigned int, unsigned int>>> &copies,
+                const std::vector<bool>                                               &weak_copies,
+                const WeakCopy                                                        &weak,
+                std::array<int, dim> &corner) const;
 
     /** The sorted points reached from @p weak's face (tie_weak_copy()). */
     std::vector<unsigned int>

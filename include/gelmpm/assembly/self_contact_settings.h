@@ -28,7 +28,7 @@ namespace GelMPM
 
     Method method = Method::none;
     /** gamma_s: beta_s = gamma_s G / h_u. */
-    double penalty = 1000.;
+    double penalty = 100.;
     /** The pieces whose surface points touch each other (empty: every free piece). */
     std::vector<std::string> pieces;
     /** A point and a segment closer than this (in cells of the grid as given, 'Background
@@ -42,7 +42,7 @@ namespace GelMPM
     double largest_depth = 0.25;
     /** Whether parts of the material that share a displacement function's support without being
      * connected there take copies of it (PointCache::separate_faces()). */
-    bool separate_faces = false;
+    bool separate_faces = true;
 
     bool
     enabled() const
