@@ -8,6 +8,7 @@
 #include <gelmpm/io/statistics_file.h>
 #include <gelmpm/simulator/simulator.h>
 
+#include <fstream>
 #include <iostream>
 #include <map>
 #include <sstream>
@@ -81,6 +82,28 @@ namespace GelMPMTests
     std::cout << "bracket at most " << width
               << " tau_d wide: " << (t_unstable - t_stable <= width * (1. + 1e-9)) << std::endl;
     return {t_stable, t_unstable};
+  }
+
+
+  /** The times (t_over_tau_d) of the rows of @p event in the events.csv of @p directory. */
+  inline std::vector<double>
+  event_times(const std::string &directory, const std::string &event)
+  {
+    std::ifstream       in(directory + "/events.csv");
+    std::string         line;
+    std::vector<double> times;
+    std::getline(in, line);
+    while (std::getline(in, line))
+      {
+        std::istringstream fields(line);
+        std::string        name, time, t_over_tau_d;
+        std::getline(fields, name, ',');
+        std::getline(fields, time, ',');
+        std::getline(fields, t_over_tau_d, ',');
+        if (name == event)
+          times.push_back(std::stod(t_over_tau_d));
+      }
+    return times;
   }
 } // namespace GelMPMTests
 

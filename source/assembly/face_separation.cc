@@ -342,10 +342,14 @@ namespace GelMPM
     // A weak copy without a donor next to it (at a corner of the face, where only a diagonal
     // extrapolation reaches an interior cell) is no copy: its face keeps the function.
     std::vector<bool> removed(copy_of.size(), false);
+    DonorSearch       search;
+    search.state.assign(g.points.size(), 0);
+    for (const auto &b : g.blocks)
+      ++search.blocks_of_cell[b.u_cell];
     for (const auto &w : weak)
       {
         CopyTie tie;
-        if (tie_weak_copy(g, copies, weak_copies, w, tie))
+        if (tie_weak_copy(g, copies, weak_copies, w, search, tie))
           ties_.push_back(std::move(tie));
         else
           removed[w.copy - n_dofs] = true;
@@ -386,7 +390,9 @@ namespace GelMPM
 
   template <int dim>
   std::vector<unsigned int>
-  FaceSeparation<dim>::reached_from_face(const Grouping &g, const WeakCopy &weak) const
+  FaceSeparation<dim>::reached_from_face(const Grouping             &g,
+                                         const WeakCopy             &weak,
+                                         std::vector<unsigned char> &state) const
   {
     // Breadth first over material neighbours from the face, never into the support's other
     // parts, no farther than 2(q+1) cells from the face's centre.
@@ -398,7 +404,6 @@ namespace GelMPM
     dealii::Point<dim> centre;
     for (const unsigned int m : weak.members)
       centre += g.points[m].x / static_cast<double>(weak.members.size());
-    std::vector<unsigned char> state(g.points.size(), 0);
     for (const unsigned int o : weak.others)
       state[o] = 2;
     std::vector<unsigned int> queue;
@@ -418,6 +423,11 @@ namespace GelMPM
               queue.push_back(p);
             }
       }
+    // The scratch back to unseen for the next copy.
+    for (const unsigned int p : queue)
+      state[p] = 0;
+    for (const unsigned int o : weak.others)
+      state[o] = 0;
     return queue;
   }
 
@@ -429,16 +439,15 @@ namespace GelMPM
     const std::vector<std::vector<std::pair<unsigned int, unsigned int>>> &copies,
     const std::vector<bool>                                               &weak_copies,
     const WeakCopy                                                        &weak,
+    DonorSearch                                                           &search,
     std::array<int, dim>                                                  &best_corner) const
   {
     const auto                          &space  = g.u.space();
     const int                            q      = space.degree();
     const unsigned int                   n_dofs = g.u.n_dofs();
-    std::map<unsigned int, unsigned int> reached, blocks_of_cell;
-    for (const unsigned int p : reached_from_face(g, weak))
+    std::map<unsigned int, unsigned int> reached;
+    for (const unsigned int p : reached_from_face(g, weak, search.state))
       ++reached[g.points[p].block];
-    for (const auto &b : g.blocks)
-      ++blocks_of_cell[b.u_cell];
     const auto kk = space.function_multi_index(control_point_of_dof[weak.function]);
     // A block wholly reached, alone in an interior cell, whose versions are no weak copies; the
     // nearest to the function as the extension picks its block (eq. (54)).
@@ -447,7 +456,7 @@ namespace GelMPM
     for (const auto &[b, n] : reached)
       {
         const PointBlock &block = g.blocks[b];
-        bool usable = n == block.end - block.first && blocks_of_cell[block.u_cell] == 1 &&
+        bool usable = n == block.end - block.first && search.blocks_of_cell[block.u_cell] == 1 &&
                       g.u.cell_kind(block.u_cell) == CellKind::interior;
         for (const auto &[position, copy] : copies[block.first])
           usable &= !weak_copies[copy - n_dofs];
@@ -492,10 +501,11 @@ namespace GelMPM
     const std::vector<std::vector<std::pair<unsigned int, unsigned int>>> &copies,
     const std::vector<bool>                                               &weak_copies,
     const WeakCopy                                                        &weak,
+    DonorSearch                                                           &search,
     CopyTie                                                               &tie) const
   {
     std::array<int, dim> corner;
-    const int            best = donor_block(g, copies, weak_copies, weak, corner);
+    const int            best = donor_block(g, copies, weak_copies, weak, search, corner);
     if (best < 0)
       return false;
     const auto       &space = g.u.space();

@@ -31,13 +31,13 @@
 #include <string>
 
 #include "matrix_entries.h"
+#include "two_blocks.h"
 
 using namespace dealii;
 
 namespace
 {
-  const std::vector<std::string> pieces = {"lower_top", "upper_bottom", "rest"};
-  constexpr double               split  = 0.775; // y between the blocks
+  constexpr double split = 0.775; // y between the blocks
 
   bool
   report(const std::string &what, const bool ok)
@@ -47,64 +47,16 @@ namespace
   }
 
 
-  /** The two blocks' scene, self-contact on, faces separated (@p separate) or not. */
-  struct TwoBlocks
+  /** The two blocks 0.05 apart, self-contact on, faces separated (@p separate) or not. */
+  struct TwoBlocks : two_blocks::TwoBlocks
   {
-    ParameterHandler                  prm;
-    std::unique_ptr<GelMPM::Scene<2>> scene;
-
     TwoBlocks(const bool separate, const bool axisymmetric, const std::string &boxes = "")
-    {
-      GelMPM::Scene<2>::declare_parameters(prm, pieces);
-      prm.parse_input_from_string(std::string(R"(
-        subsection Background grid
-          set Coordinate system = )") +
-                                  (axisymmetric ? "axisymmetric" : "Cartesian") + R"(
-          set Lower corner = )" + (axisymmetric ? "0" : "-0.25") +
-                                  R"(, -0.25
-          set Upper corner = 1.25, 2
-          set Cells = )" + (axisymmetric ? "10" : "12") +
-                                  R"(, 18
-          set Refinement boxes = )" +
-                                  boxes +
-                                  R"(
-        end
-        subsection Discretisation
-          set Extended B-splines = )" +
-                                  (boxes.empty() ? "true" : "false") + R"(
-        end
-        subsection Geometry
-          set Boxes = 0, 0 : 1, 0.75; 0, 0.8 : 1, 1.55
-        end
-        subsection Material points
-          set Points per cell = 3
-        end
-        subsection Boundary conditions
-          subsection lower_top
-            set Selector = ny > 0.5 && y < 0.775
-          end
-          subsection upper_bottom
-            set Selector = ny < -0.5 && y > 0.775
-          end
-          subsection rest
-            set Selector = x > 1e-6
-          end
-        end
-        subsection Contact
-          subsection Self contact
-            set Method = penalty
-            set Pieces = lower_top, upper_bottom
-            set Separate faces = )" +
-                                  (separate ? "true" : "false") +
-                                  R"(
-          end
-        end)");
-      scene = std::make_unique<GelMPM::Scene<2>>(prm, pieces);
-      scene->create_material_points();
-      scene->create_system();
-      scene->system->setup(scene->particles);
-      scene->system->set_boundary_values(0.5, 0.);
-    }
+      : two_blocks::TwoBlocks(0.8,
+                              axisymmetric,
+                              boxes,
+                              std::string("set Method = penalty\nset Separate faces = ") +
+                                (separate ? "true" : "false"))
+    {}
   };
 
 

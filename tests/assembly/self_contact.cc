@@ -35,12 +35,12 @@
 #include <string>
 
 #include "matrix_entries.h"
+#include "two_blocks.h"
 
 using namespace dealii;
 
 namespace
 {
-  const std::vector<std::string> pieces = {"lower_top", "upper_bottom", "rest"};
 
   bool
   report(const std::string &what, const bool ok)
@@ -50,67 +50,19 @@ namespace
   }
 
 
-  /** The two blocks' scene, with self-contact by @p method, axisymmetric or not. */
-  struct TwoBlocks
+  /** The two blocks 0.25 apart, with self-contact by @p method, axisymmetric or not. */
+  struct TwoBlocks : two_blocks::TwoBlocks
   {
-    ParameterHandler                  prm;
-    std::unique_ptr<GelMPM::Scene<2>> scene;
-
     TwoBlocks(const std::string &method, const bool axisymmetric, const std::string &boxes = "")
-    {
-      GelMPM::Scene<2>::declare_parameters(prm, pieces);
-      prm.parse_input_from_string(std::string(R"(
-        subsection Background grid
-          set Coordinate system = )") +
-                                  (axisymmetric ? "axisymmetric" : "Cartesian") + R"(
-          set Lower corner = )" + (axisymmetric ? "0" : "-0.25") +
-                                  R"(, -0.25
-          set Upper corner = 1.25, 2
-          set Cells = )" + (axisymmetric ? "10" : "12") +
-                                  R"(, 18
-          set Refinement boxes = )" +
-                                  boxes + R"(
-        end
-        subsection Discretisation
-          set Extended B-splines = )" +
-                                  (boxes.empty() ? "true" : "false") + R"(
-        end
-        subsection Geometry
-          set Boxes = 0, 0 : 1, 0.75; 0, 1 : 1, 1.75
-        end
-        subsection Material points
-          set Points per cell = 3
-        end
-        subsection Boundary conditions
-          # The facing sides (flat: no corner touches); the rest not the axis of an
-          # axisymmetric scene, which has no area.
-          subsection lower_top
-            set Selector = ny > 0.5 && y < 0.875
-          end
-          subsection upper_bottom
-            set Selector = ny < -0.5 && y > 0.875
-          end
-          subsection rest
-            set Selector = x > 1e-6
-          end
-        end
-        subsection Contact
-          subsection Self contact
-            set Method = )" + method +
-                                  R"(
-            set Pieces = lower_top, upper_bottom
-            set Search distance = 3
-            set Penalty = 1000
-            # The pressed states lie 0.05 = 0.4 h deep: within what an iterate may reach.
-            set Largest depth = 0.5
-          end
-        end)");
-      scene = std::make_unique<GelMPM::Scene<2>>(prm, pieces);
-      scene->create_material_points();
-      scene->create_system();
-      scene->system->setup(scene->particles);
-      scene->system->set_boundary_values(0.5, 0.);
-    }
+      : two_blocks::TwoBlocks(1.,
+                              axisymmetric,
+                              boxes,
+                              // The pressed states lie 0.05 = 0.4 h deep: within what an iterate
+                              // may reach.
+                              "set Method = " + method +
+                                "\nset Search distance = 3\nset Penalty = 1000\n"
+                                "set Largest depth = 0.5")
+    {}
   };
 
 

@@ -12,7 +12,6 @@
 #include <deal.II/base/mpi.h>
 
 #include <algorithm>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -36,20 +35,8 @@ namespace
   double
   first_event(const std::string &directory, const std::string &event)
   {
-    std::ifstream in(directory + "/events.csv");
-    std::string   line;
-    std::getline(in, line);
-    while (std::getline(in, line))
-      {
-        std::istringstream fields(line);
-        std::string        name, time, t_over_tau_d;
-        std::getline(fields, name, ',');
-        std::getline(fields, time, ',');
-        std::getline(fields, t_over_tau_d, ',');
-        if (name == event)
-          return std::stod(t_over_tau_d);
-      }
-    return -1.;
+    const auto times = GelMPMTests::event_times(directory, event);
+    return times.empty() ? -1. : times.front();
   }
 
 

@@ -30,9 +30,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -50,28 +48,6 @@ namespace
     if (!ok)
       std::cout << "  (" << value << " against " << expected << ")" << std::endl;
     return ok;
-  }
-
-
-  /** The rows of @p file whose first field is @p event, as their t_over_tau_d. */
-  std::vector<double>
-  event_times(const std::string &file, const std::string &event)
-  {
-    std::ifstream       in(file);
-    std::string         line;
-    std::vector<double> times;
-    std::getline(in, line);
-    while (std::getline(in, line))
-      {
-        std::istringstream fields(line);
-        std::string        name, time, t_over_tau_d;
-        std::getline(fields, name, ',');
-        std::getline(fields, time, ',');
-        std::getline(fields, t_over_tau_d, ',');
-        if (name == event)
-          times.push_back(std::stod(t_over_tau_d));
-      }
-    return times;
   }
 
 
@@ -127,7 +103,7 @@ namespace
            penetration > 0. && penetration < 1e-3 * h,
            penetration,
            1e-3 * h);
-    const auto times = event_times(directory + "/events.csv", "self_contact");
+    const auto times = GelMPMTests::event_times(directory, "self_contact");
     report(name + ": one self_contact event, after the first step",
            times.size() == 1 && std::abs(times[0] - 1e-3) < 1e-9,
            times.empty() ? -1. : times[0],

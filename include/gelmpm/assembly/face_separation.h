@@ -8,6 +8,7 @@
 #include <deal.II/particles/particle_handler.h>
 
 #include <array>
+#include <map>
 #include <utility>
 #include <vector>
 
@@ -125,11 +126,16 @@ namespace GelMPM
       double                    total;
     };
 
-    /**
-     * The tie of @p weak (its face's members and the support's other points, sorted indices) to
-     * the nearest interior cell reached from its face without crossing the other points, given
-     * the copies @p copies each point uses; false where no such cell lies within 2(q+1) cells.
-     */
+    /** What the donor search of one step shares over its weak copies. */
+    struct DonorSearch
+    {
+      /** Per cell, the number of blocks in it. */
+      std::map<unsigned int, unsigned int> blocks_of_cell;
+      /** Per sorted point, 0 unseen, 1 reached, 2 barred: reached_from_face()'s scratch, left
+       * all 0. */
+      std::vector<unsigned char> state;
+    };
+
     /**
      * Tie each copy of @p weak (CopyTie); a weak copy that cannot be tied is removed from
      * @p copies and @p copy_of (its face keeps the function) and the copies are numbered anew.
@@ -141,6 +147,19 @@ namespace GelMPM
                     const std::vector<WeakCopy>                                     &weak);
 
     /**
+     * The tie of @p weak (its face's members and the support's other points, sorted indices) to
+     * the nearest interior cell reached from its face without crossing the other points, given
+     * the copies @p copies each point uses; false where no such cell lies next to the function.
+     */
+    bool
+    tie_weak_copy(const Grouping                                                        &grouping,
+                  const std::vector<std::vector<std::pair<unsigned int, unsigned int>>> &copies,
+                  const std::vector<bool> &weak_copies,
+                  const WeakCopy          &weak,
+                  DonorSearch             &search,
+                  CopyTie                 &tie) const;
+
+    /**
      * The block whose cell's functions @p weak is extrapolated from (tie_weak_copy()), its
      * cell's lowest function multi-index into @p corner; -1 if none lies next to the function.
      */
@@ -149,18 +168,17 @@ namespace GelMPM
                 const std::vector<std::vector<std::pair<unsigned int, unsigned int>>> &copies,
                 const std::vector<bool>                                               &weak_copies,
                 const WeakCopy                                                        &weak,
+                DonorSearch                                                           &search,
                 std::array<int, dim> &corner) const;
 
-    /** The sorted points reached from @p weak's face (tie_weak_copy()). */
+    /**
+     * The sorted points reached from @p weak's face over material neighbours, never into the
+     * support's other parts, within 2(q+1) cells of the face's centre; @p state the scratch.
+     */
     std::vector<unsigned int>
-    reached_from_face(const Grouping &grouping, const WeakCopy &weak) const;
-
-    bool
-    tie_weak_copy(const Grouping                                                        &grouping,
-                  const std::vector<std::vector<std::pair<unsigned int, unsigned int>>> &copies,
-                  const std::vector<bool> &weak_copies,
-                  const WeakCopy          &weak,
-                  CopyTie                 &tie) const;
+    reached_from_face(const Grouping             &grouping,
+                      const WeakCopy             &weak,
+                      std::vector<unsigned char> &state) const;
 
     /**
      * Per record of @p unsorted, its spacing in the initial configuration (V_0^{1/dim},
