@@ -9,6 +9,8 @@ Runs, alternating so that a change of the machine's load shows in both, --repeat
             ('Refinement band = 0.1', 'Refinement band pieces = top'), unless --no-band;
   front R   the same scene with its box replaced by refinement where the points' mu spans more
             than R ('Refinement mu range', marked anew every step), for each R of --ranges;
+            refined --levels times; with --budgets B1,B2 also once per budget B of unknowns
+            ('Refinement budget', the finest moving levels dropped at a step beyond it);
   material  the same scene with its box replaced by refinement round the material that starts
             at y >= 0.9 ('Refinement material region = 0.9 - y'), with --material;
   uniform   prm/constrained_swelling.prm on 40 x 320 cells with steps growing by 1.05 (the
@@ -17,11 +19,12 @@ each to the scene's end (1713 tau_d) without particle output, and compares Delta
 finite-difference reference gelmpm-swelling-1d (a step of mu at t = 0+). Prints and writes
 <output>/refined.md: per variant the worst |Delta h / Delta h_ref - 1| over the steps with
 t >= 1e-3 tau_d (with its time), Delta h at 1.197e-3 tau_d and at the end, steps, unknowns
-(u + mu) at the first and the last step, and the median wall time with its ratio to the paper
+(u + mu) at the first and the last step and the most at a step, and the median wall time with its ratio to the paper
 setting's.
 
     python3 contrib/benchmarks/constrained_swelling_refined.py [--output DIR] [--repeat N]
-        [--no-uniform] [--no-band] [--ranges 0.01,0.02] [--material] [--end T]
+        [--no-uniform] [--no-band] [--ranges 0.01,0.02] [--levels N] [--budgets B1,B2]
+        [--material] [--end T]
 
 Environment: GELMPM_BUILD_DIR (default: build). Needs only Python's standard library.
 """
@@ -68,7 +71,7 @@ def reference(build, out, end):
 
 
 def run(build, out, name, scene, sets, end):
-    directory = os.path.join(out, name.replace(" ", "_"))
+    directory = os.path.join(out, name.replace(",", "").replace(" ", "_"))
     command = [os.path.join(build, "gelmpm"), "--set", f"Output/Directory={directory}",
                "--set", "Output/Write particles=false", "--set", f"Time stepping/End time={end:g}"]
     for s in sets:
@@ -83,7 +86,7 @@ def run(build, out, name, scene, sets, end):
 
 
 def evaluate(out, name, ref):
-    rows = read_rows(os.path.join(out, name.replace(" ", "_"), "statistics.csv"))[1:]
+    rows = read_rows(os.path.join(out, name.replace(",", "").replace(" ", "_"), "statistics.csv"))[1:]
     worst, worst_t, early = 0., 0., None
     for r in rows:
         t = float(r["t_over_tau_d"])
@@ -97,7 +100,8 @@ def evaluate(out, name, ref):
             "end": float(last["delta_h_over_h0"]) / ref(float(last["t_over_tau_d"])),
             "steps": len(rows),
             "unknowns": (int(rows[0]["n_dofs_u"]) + int(rows[0]["n_dofs_mu"]),
-                         int(last["n_dofs_u"]) + int(last["n_dofs_mu"]))}
+                         int(last["n_dofs_u"]) + int(last["n_dofs_mu"])),
+            "most": max(int(r["n_dofs_u"]) + int(r["n_dofs_mu"]) for r in rows)}
 
 
 def main():
@@ -107,6 +111,8 @@ def main():
     parser.add_argument("--no-uniform", action="store_true")
     parser.add_argument("--no-band", action="store_true")
     parser.add_argument("--ranges", default="", help="mu ranges of the 'front' variants")
+    parser.add_argument("--levels", type=int, default=1, help="levels of the 'front' variants")
+    parser.add_argument("--budgets", default="", help="budgets of unknowns of the 'front' variants")
     parser.add_argument("--material", action="store_true")
     parser.add_argument("--end", type=float, default=1713.)
     args = parser.parse_args()
@@ -116,9 +122,13 @@ def main():
     variants = [v for v in VARIANTS if not (args.no_uniform and v[0] == "uniform")
                 and not (args.no_band and v[0] == "band")]
     for r in [float(x) for x in args.ranges.split(",") if x]:
-        variants.append((f"front {r:g}", "constrained_swelling_refined.prm",
-                         ["Background grid/Refinement boxes=",
-                          f"Background grid/Refinement mu range={r:g}"]))
+        front = ["Background grid/Refinement boxes=", f"Background grid/Refinement mu range={r:g}",
+                 f"Background grid/Refinement levels={args.levels}"]
+        name = f"front {r:g}" + (f", {args.levels} levels" if args.levels > 1 else "")
+        variants.append((name, "constrained_swelling_refined.prm", front))
+        for b in [int(x) for x in args.budgets.split(",") if x]:
+            variants.append((f"{name}, budget {b}", "constrained_swelling_refined.prm",
+                             front + [f"Background grid/Refinement budget={b}"]))
     if args.material:
         variants.append(("material", "constrained_swelling_refined.prm",
                          ["Background grid/Refinement boxes=",
@@ -131,14 +141,14 @@ def main():
                 sys.exit(f"{name} failed with exit status {status}: see {args.output}/{name}.log")
             walls[name].append(wall)
     lines = ["| variant | worst over t ≥ 10⁻³ τ_d | Δh/Δh_ref at 1.197·10⁻³ | at the end | steps "
-             "| unknowns (first → last) | wall (median) | ratio to paper |",
+             "| unknowns (first → last, most) | wall (median) | ratio to paper |",
              "|---|---|---|---|---|---|---|---|"]
     paper_wall = statistics.median(walls["paper"])
     for name, _, _ in variants:
         e = evaluate(args.output, name, ref)
         wall = statistics.median(walls[name])
         lines.append(f"| {name} | {100 * e['worst']:+.2f} % ({e['worst_t']:.3g}) | {e['early']:.4f} "
-                     f"| {e['end']:.5f} | {e['steps']} | {e['unknowns'][0]} → {e['unknowns'][1]} "
+                     f"| {e['end']:.5f} | {e['steps']} | {e['unknowns'][0]} → {e['unknowns'][1]}, {e['most']} "
                      f"| {wall:.1f} s | {wall / paper_wall:.2f} |")
     text = "\n".join(lines) + "\n"
     print(text)

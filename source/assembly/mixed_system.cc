@@ -444,6 +444,18 @@ namespace GelMPM
 
 
   template <int dim>
+  unsigned int
+  MixedSystem<dim>::unseen_self_contacts(const dealii::Vector<double> &solution) const
+  {
+    if constexpr (dim == 2)
+      if (const auto *self = terms.self_contact())
+        return self->unseen_contacts(cache, solution);
+    (void)solution;
+    return 0;
+  }
+
+
+  template <int dim>
   typename MixedSystem<dim>::SelfContactState
   MixedSystem<dim>::self_contact_state(const dealii::Vector<double> &solution) const
   {

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace GelMPM
 {
@@ -141,14 +142,16 @@ namespace GelMPM
 
   template <int dim>
   std::vector<typename SelfContactAssembler<dim>::Pair>
-  SelfContactAssembler<dim>::find_pairs(const PointCache<dim> &cache) const
+  SelfContactAssembler<dim>::find_pairs(const PointCache<dim>        &cache,
+                                        const dealii::Vector<double> *solution) const
   {
     using Layout = PropertyLayout<dim>;
     // In cells of 'Background grid/Cells' at every level: the motion within a step and
     // the spacing of surface points, which refinement does not shorten.
     const double                               h = this->spaces.h_u(0);
     std::vector<SurfaceGeometry::SurfacePoint> surface;
-    const auto                                &points = cache.points();
+    const auto                                &points      = cache.points();
+    double                                     last_motion = 0.;
     for (unsigned int p = 0; p < points.size(); ++p)
       {
         const auto &r = points[p];
@@ -156,13 +159,18 @@ namespace GelMPM
           continue;
         SurfaceGeometry::SurfacePoint s;
         const auto                    properties = cache.particle(p)->get_properties();
+        double                        motion     = 0.;
         for (unsigned int d = 0; d < 2; ++d)
           {
             s.X_0[d]      = r.X0[d];
             s.normal_0[d] = properties[Layout::normal_area_0 + d];
             s.x[d]        = r.x[d] + r.edge_offset[d];
+            motion += dealii::Utilities::fixed_power<2>(properties[Layout::increment + d]);
           }
-        s.index = p;
+        if (solution != nullptr)
+          s.x = current_position(cache, p, *solution);
+        last_motion = std::max(last_motion, std::sqrt(motion));
+        s.index     = p;
         surface.push_back(s);
       }
     // As the observables order a piece: surface points are at most h apart (a cell of the
@@ -190,7 +198,14 @@ namespace GelMPM
       return line.closed[c] ? std::min(s, line.length_0[c] - s) : s;
     };
 
-    const double search = settings.search_distance * h, depth = settings.largest_depth * h,
+    // A point that slides along the other face within the step meets segments that were
+    // farther than the search distance at its start (a rolling tip passes through them
+    // unseen): the search reaches as far as the last step moved the surface, for both faces
+    // and a step that grows by a quarter.
+    // At the end of a step every point behind the surface counts, however deep.
+    const double search     = settings.search_distance * h + 2.5 * last_motion,
+                 depth      = solution == nullptr ? settings.largest_depth * h
+                                                  : std::numeric_limits<double>::infinity(),
                  separation = settings.minimum_arc_length * h;
     std::vector<Pair> found;
     for (unsigned int i = 0; i < line.points.size(); ++i)
@@ -319,6 +334,39 @@ namespace GelMPM
             }
           copies.push_back(std::move(copy));
         }
+  }
+
+
+  template <int dim>
+  unsigned int
+  SelfContactAssembler<dim>::unseen_contacts(const PointCache<dim>        &cache,
+                                             const dealii::Vector<double> &solution) const
+  {
+    std::vector<PointSegmentGap> gaps;
+    std::vector<bool>            seen(cache.points().size(), false);
+    for (const int k : active_pairs(cache, solution, gaps, false))
+      seen[pairs_[k].point] = true;
+    // Passed through: behind the segment at the end, and at the start in front of it or no
+    // deeper than a pair may start (a point of one face lies behind the other face of a thin
+    // body at both ends of the step).
+    const auto start = [&cache](const unsigned int p) {
+      return cache.points()[p].x + cache.points()[p].edge_offset;
+    };
+    const double      depth = settings.largest_depth * this->spaces.h_u(0);
+    std::vector<bool> behind(cache.points().size(), false);
+    for (const Pair &pair : find_pairs(cache, &solution))
+      {
+        const auto gap = point_segment_gap(current_position(cache, pair.point, solution),
+                                           current_position(cache, pair.a, solution),
+                                           current_position(cache, pair.b, solution));
+        if (gap.g < 0. && gap.xi >= -end_tolerance && gap.xi <= 1. + end_tolerance &&
+            point_segment_gap(start(pair.point), start(pair.a), start(pair.b)).g >= -depth)
+          behind[pair.point] = true;
+      }
+    unsigned int n = 0;
+    for (unsigned int p = 0; p < behind.size(); ++p)
+      n += behind[p] && !seen[p];
+    return n;
   }
 
 

@@ -42,9 +42,10 @@ namespace GelMPM
       Patterns::Double(0.),
       "In cells of the background grid as given ('Background grid/Cells'; on a refined grid "
       "its unrefined cells, at every level, as 'Time stepping/Largest increment'): a surface "
-      "point and a segment of the surface closer than this at the start of a step are a pair "
-      "of the step (the pairs, and the sparsity pattern with them, are fixed over the step). A "
-      "motion of more than this within one step passes unseen.");
+      "point and a segment of the surface closer than this, plus 2.5 times the largest motion "
+      "of a surface point in the last step (both faces move, and the step may grow), at the "
+      "start of a step are a pair of the step (the pairs, and the sparsity pattern with them, "
+      "are fixed over the step). A motion of more than that within one step passes unseen.");
     prm.declare_entry("Minimum arc length",
                       "3",
                       Patterns::Double(0.),

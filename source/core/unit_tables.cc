@@ -30,6 +30,7 @@ namespace GelMPM
         {"Background grid/Refinement mu range", Q::chemical_potential},
         {"Background grid/Refinement material region", Q::none, Form::level_set},
         {"Background grid/Refinement levels", Q::none},
+        {"Background grid/Refinement budget", Q::none},
         {"Background grid/Refinement region", Q::none, Form::level_set},
         {"Boundary conditions/Pieces", Q::none},
         {"Boundary conditions/*/Chemical potential", Q::none},

@@ -187,6 +187,18 @@ namespace GelMPM
                       "How many times the cells in 'Refinement boxes', 'Refinement region' and "
                       "'Refinement band' are halved.");
     prm.declare_entry(
+      "Refinement budget",
+      "0",
+      Patterns::Integer(0),
+      "The most unknowns (displacement and chemical potential together) that the moving "
+      "refinement ('Refinement band', 'Refinement mu range', 'Refinement material region') "
+      "may give a step: where a step's marking gives more, its finest level of moving marks "
+      "is dropped (the points there merged back), level by level, until the step is within "
+      "the budget; the next step marks anew. The log's last lines count the steps it "
+      "limited. A grid that exceeds it without moving refinement at the start is an error; "
+      "one that the body outgrows later runs on without moving refinement (counted in the "
+      "log). 0: no limit.");
+    prm.declare_entry(
       "Refinement material region",
       "",
       Patterns::Anything(),
@@ -227,6 +239,7 @@ namespace GelMPM
     refinement_levels                 = prm.get_integer("Refinement levels");
     refinement_band                   = prm.get_double("Refinement band");
     refinement_mu_range               = prm.get_double("Refinement mu range");
+    refinement_budget                 = prm.get_integer("Refinement budget");
     const std::string material_text =
       dealii::Utilities::trim(prm.get("Refinement material region"));
     band_piece_names = dealii::Utilities::split_string_list(prm.get("Refinement band pieces"));
@@ -536,6 +549,22 @@ namespace GelMPM
     const bool changed = marked != moving_marked;
     moving_marked      = std::move(marked);
     return changed;
+  }
+
+
+  template <int dim>
+  bool
+  BackgroundGrid<dim>::drop_finest_moving_level()
+  {
+    for (unsigned int l = moving_marked.size(); l-- > 0;)
+      if (std::find(moving_marked[l].begin(), moving_marked[l].end(), true) !=
+          moving_marked[l].end())
+        {
+          // The finer levels hold no marks: the domains still nest.
+          std::fill(moving_marked[l].begin(), moving_marked[l].end(), false);
+          return true;
+        }
+    return false;
   }
 
 

@@ -62,9 +62,10 @@ namespace GelMPM
         linear_solver.new_pattern();
       });
     };
+    bool changed = false;
     try
       {
-        return new_pattern();
+        changed = new_pattern();
       }
     catch (const InputError &)
       {
@@ -75,8 +76,34 @@ namespace GelMPM
           throw;
         ++n_kept_markings;
         forget_mu_of_other_marking();
-        return new_pattern();
+        changed = new_pattern();
       }
+    return keep_within_budget() || changed;
+  }
+
+
+  template <int dim>
+  bool
+  MaterialPointModel<dim>::keep_within_budget()
+  {
+    const unsigned long budget = scene.grid.refinement_budget;
+    if (budget == 0 || scene.spaces->n_dofs() <= budget)
+      return false;
+    // Coarser levels first dropped would leave finer marks without parents: the finest go.
+    bool dropped = false;
+    while (scene.spaces->n_dofs() > budget && scene.coarsen_moving_refinement())
+      {
+        dropped = true;
+        forget_mu_of_other_marking();
+        scene.system->setup(scene.particles, [this] {
+          linear_solver.new_pattern();
+        });
+      }
+    // A body that has grown beyond the budget on the grid without moving refinement goes on
+    // there: the budget limits the refinement, not the run (counted at the end).
+    n_budget_limited += dropped;
+    n_over_budget += scene.spaces->n_dofs() > budget;
+    return dropped;
   }
 
 
@@ -184,6 +211,19 @@ namespace GelMPM
   MaterialPointModel<dim>::estimates_errors() const
   {
     return true;
+  }
+
+
+  template <int dim>
+  std::string
+  MaterialPointModel<dim>::refusal(const dealii::Vector<double> &solution) const
+  {
+    const unsigned int unseen = scene.system->unseen_self_contacts(solution);
+    if (unseen == 0)
+      return {};
+    return std::to_string(unseen) +
+           " surface point(s) passed through the gel's own surface where the step's "
+           "self-contact pairs did not reach";
   }
 
 
@@ -353,6 +393,22 @@ namespace GelMPM
   MaterialPointModel<dim>::kept_markings() const
   {
     return n_kept_markings;
+  }
+
+
+  template <int dim>
+  unsigned long
+  MaterialPointModel<dim>::budget_limited_steps() const
+  {
+    return n_budget_limited;
+  }
+
+
+  template <int dim>
+  unsigned long
+  MaterialPointModel<dim>::steps_over_budget() const
+  {
+    return n_over_budget;
   }
 
 

@@ -215,6 +215,18 @@ namespace GelMPM
 
   template <int dim>
   bool
+  Scene<dim>::coarsen_moving_refinement()
+  {
+    if (!grid.moves() || !grid.drop_finest_moving_level())
+      return false;
+    spaces->rebuild_hierarchies(grid);
+    merge_points_to_leaves(particles, grid, regions, generator.points_per_cell, *triangulation);
+    return true;
+  }
+
+
+  template <int dim>
+  bool
   Scene<dim>::update_moving_refinement(const double t_begin)
   {
     if (!grid.moves())
@@ -539,6 +551,9 @@ namespace GelMPM
     try
       {
         spaces->reinit(has_material);
+        while (grid.refinement_budget > 0 && spaces->n_dofs() > grid.refinement_budget &&
+               coarsen_moving_refinement())
+          spaces->reinit(has_material);
       }
     catch (const InputError &)
       {
@@ -549,6 +564,12 @@ namespace GelMPM
       {
         throw_unresolved_body(e.what());
       }
+    require(grid.refinement_budget == 0 || spaces->n_dofs() <= grid.refinement_budget,
+            "Background grid/Refinement budget",
+            "is " + std::to_string(grid.refinement_budget) +
+              " unknowns, but the grid without its moving refinement gives " +
+              std::to_string(spaces->n_dofs()) + " at the start",
+            "raise the budget, or refine less by 'Refinement boxes' and 'Refinement region'");
   }
 
 

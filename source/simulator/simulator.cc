@@ -448,6 +448,14 @@ namespace GelMPM
       pcout << ", " << model->kept_markings()
             << " step(s) on the last step's refinement (the new one too thin for the extension "
                "at the body's boundary)";
+    if (loop && model->budget_limited_steps() > 0)
+      pcout << ", " << model->budget_limited_steps()
+            << " step(s) with levels of the moving refinement dropped to keep within "
+               "'Background grid/Refinement budget'";
+    if (loop && model->steps_over_budget() > 0)
+      pcout << ", " << model->steps_over_budget()
+            << " step(s) beyond 'Background grid/Refinement budget' without moving refinement "
+               "(the body outgrew the budget)";
     if (loop && loop->newton().reuse_contraction > 0.)
       {
         // Why the modified Newton iteration factorised, where it did not reuse.

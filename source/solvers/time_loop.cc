@@ -70,6 +70,13 @@ namespace GelMPM
   }
 
 
+  std::string
+  SteppedModel::refusal(const dealii::Vector<double> &) const
+  {
+    return {};
+  }
+
+
   double
   SteppedModel::increment_deviation(const dealii::Vector<double> &, const double) const
   {
@@ -261,6 +268,15 @@ namespace GelMPM
                     << " cells, more than 'Time stepping/Largest increment' = "
                     << time_stepping.largest_increment;
                 report.failure = why.str();
+              }
+          }
+        if (report.converged)
+          {
+            const std::string refused = model.refusal(solution);
+            if (!refused.empty())
+              {
+                report.converged = false;
+                report.failure   = refused;
               }
           }
         if (report.converged && !error_acceptable(solution, step_dt, report.failure))

@@ -312,6 +312,13 @@ namespace GelMPM
     SelfContactState
     self_contact_state(const dealii::Vector<double> &solution) const;
 
+    /**
+     * Surface points behind the surface at @p solution that no pair of the step holds
+     * (SelfContactAssembler::unseen_contacts(); 0 without self-contact).
+     */
+    unsigned int
+    unseen_self_contacts(const dealii::Vector<double> &solution) const;
+
     /** What the boundary of one piece exerts on the body over a step. */
     struct PieceBalance
     {

@@ -142,6 +142,15 @@ namespace GelMPM
       held_.clear();
     }
 
+    /**
+     * The surface points that lie behind the surface at @p solution (the end of the step,
+     * searched anew) without an active pair among the step's: they passed through a face the
+     * step's pairs did not see. A step that leaves some is retaken shorter
+     * (MaterialPointModel::refusal()).
+     */
+    unsigned int
+    unseen_contacts(const PointCache<dim> &cache, const dealii::Vector<double> &solution) const;
+
     /** The number of pairs of the step. */
     unsigned int
     n_pairs() const;
@@ -160,9 +169,13 @@ namespace GelMPM
                        const bool                    with_matrix,
                        std::vector<AssemblyCopy>    &copies) const;
 
-    /** The pairs of the points of @p cache at x_n. */
+    /**
+     * The pairs of the points of @p cache at x_n, or (with @p solution) at the end of the step,
+     * where a point counts however far behind the surface it lies.
+     */
     std::vector<Pair>
-    find_pairs(const PointCache<dim> &cache) const;
+    find_pairs(const PointCache<dim>        &cache,
+               const dealii::Vector<double> *solution = nullptr) const;
 
     /** The current position x_n + du of record @p p for @p solution. */
     dealii::Point<dim>

@@ -77,6 +77,12 @@ namespace GelMPM
      */
     std::vector<std::vector<bool>> moving_marked;
 
+    /**
+     * 'Refinement budget' (0: none): the most unknowns a step's moving refinement may give
+     * (MaterialPointModel::reset_grid() drops its finest levels beyond it).
+     */
+    unsigned long refinement_budget = 0;
+
     /** Whether a band or a mu range is set: the refinement is marked anew every step. */
     bool
     moves() const;
@@ -109,6 +115,13 @@ namespace GelMPM
     mark_moving(const std::vector<dealii::Point<dim>> &surface,
                 const std::vector<std::vector<bool>>  &flagged,
                 const unsigned int                     buffer);
+
+    /**
+     * Clear the moving marks of the finest level that has some (a cell of a finer level has a
+     * marked parent, so the domains still nest). Returns false if there were none.
+     */
+    bool
+    drop_finest_moving_level();
 
     /** Whether some cells are refined. */
     bool

@@ -66,6 +66,9 @@ namespace GelMPM
 
     double
     largest_motion_in_cells(const dealii::Vector<double> &solution) const override;
+    /** A step that leaves surface points through the gel's own surface unseen is refused. */
+    std::string
+    refusal(const dealii::Vector<double> &solution) const override;
 
     bool
     measures_rate_of_change() const override;
@@ -127,6 +130,12 @@ namespace GelMPM
     /** Steps that kept the last step's moving refinement (Scene::keep_last_marking()). */
     unsigned long
     kept_markings() const;
+    /** Steps whose moving refinement lost levels to 'Background grid/Refinement budget'. */
+    unsigned long
+    budget_limited_steps() const;
+    /** Steps whose grid without moving refinement exceeded the budget (the body outgrew it). */
+    unsigned long
+    steps_over_budget() const;
     unsigned long
     repartitions() const;
 
@@ -163,6 +172,15 @@ namespace GelMPM
     bool
     reset_grid();
 
+    /**
+     * Beyond 'Background grid/Refinement budget', drop the finest levels of the moving
+     * refinement (Scene::coarsen_moving_refinement()) and set the grid up again until the
+     * unknowns are within it or no moving level is left (the step then runs on the grid
+     * without moving refinement). Returns whether it set the grid up again (dropped a level).
+     */
+    bool
+    keep_within_budget();
+
     /** Chemical-potential coefficients of every control point of the mu grid, from a solution. */
     void
     store_mu_coefficients(const dealii::Vector<double> &solution);
@@ -192,6 +210,8 @@ namespace GelMPM
     double                  imbalance_after_partition = 1.;
     unsigned long           n_new_patterns            = 0;
     unsigned long           n_kept_markings           = 0;
+    unsigned long           n_budget_limited          = 0;
+    unsigned long           n_over_budget             = 0;
     unsigned long           n_repartitions            = 0;
   };
 } // namespace GelMPM

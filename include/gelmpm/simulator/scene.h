@@ -180,6 +180,14 @@ namespace GelMPM
     bool
     keep_last_marking();
 
+    /**
+     * Drop the finest level of the moving refinement's marks, rebuild the hierarchies and merge
+     * the points of the leaves that coarsen: for a step beyond 'Background grid/Refinement
+     * budget'. Returns false if no moving marks are left to drop.
+     */
+    bool
+    coarsen_moving_refinement();
+
     /** The body's own material (section "Material"), region 0 of regions. */
     FloryRehnerGel<dim> material;
     /** Every gel of the body, by region (MaterialRegions). */

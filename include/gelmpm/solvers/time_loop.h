@@ -134,6 +134,14 @@ namespace GelMPM
     largest_motion_in_cells(const dealii::Vector<double> &solution) const;
 
     /**
+     * Why the converged @p solution of a step is no state of the model, so that the step is
+     * retaken shorter (a surface point that passed through the gel's own surface unseen by the
+     * step's self-contact pairs); empty: accepted. By default empty.
+     */
+    virtual std::string
+    refusal(const dealii::Vector<double> &solution) const;
+
+    /**
      * The largest distance between the motion of @p solution and the last step's motion scaled
      * by @p ratio (the predictor), for 'Time stepping/Displacement tolerance'.
      */
