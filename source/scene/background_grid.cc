@@ -240,6 +240,7 @@ namespace GelMPM
     refinement_band                   = prm.get_double("Refinement band");
     refinement_mu_range               = prm.get_double("Refinement mu range");
     refinement_budget                 = prm.get_integer("Refinement budget");
+    moving_levels                     = refinement_levels;
     const std::string material_text =
       dealii::Utilities::trim(prm.get("Refinement material region"));
     band_piece_names = dealii::Utilities::split_string_list(prm.get("Refinement band pieces"));
@@ -533,11 +534,11 @@ namespace GelMPM
     // parent's box contains it, so the parent is marked too: the domains nest.
     std::vector<std::vector<bool>> marked(refinement_levels);
     for (unsigned int l = 0; l < refinement_levels; ++l)
-      marked[l] = band_cells(l, surface);
+      marked[l] = band_cells(l, l < moving_levels ? surface : std::vector<dealii::Point<dim>>());
     // A cell's points include its children's: the spread of a parent is at least theirs. The
     // cells within 'buffer' cells of a marked one are marked too, at every level: the parent of
     // such a cell lies within 'buffer' cells of the marked cell's parent, so the domains nest.
-    for (unsigned int l = 0; l < flagged.size() && l < refinement_levels; ++l)
+    for (unsigned int l = 0; l < flagged.size() && l < moving_levels; ++l)
       {
         const auto n = pair_cells(l);
         for (unsigned int c = 0; c < flagged[l].size(); ++c)
@@ -562,6 +563,7 @@ namespace GelMPM
         {
           // The finer levels hold no marks: the domains still nest.
           std::fill(moving_marked[l].begin(), moving_marked[l].end(), false);
+          moving_levels = std::min(moving_levels, l);
           return true;
         }
     return false;

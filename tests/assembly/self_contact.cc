@@ -16,6 +16,10 @@
 //   the system's without it) equals the central finite-difference Jacobian of its residual to
 //   1e-6 of its largest entry, and is symmetric to 1e-12 (but for the radial unknowns on the
 //   axis, which the system holds at zero).
+// A converged step is searched again at its end (SelfContactAssembler::unseen_contacts()): with one
+// cell of search the blocks have no pair; the upper block shifted 0.05 through the lower one has
+// points of both faces behind the other face unseen, shifted to 0.05 short of it none, and with
+// the pairs of 3 cells (all active there) none either.
 // The term's checks again in plane strain on a grid refined once over the left half of both
 // faces (plain B-splines: the blocks are too thin for the extension's blocks of interior
 // functions of both levels): pairs between points of different levels and of different leaves
@@ -66,9 +70,11 @@ namespace
   };
 
 
-  /** The upper block shifted down by 0.3, plus @p noise at random; mu_0 (plus noise) for mu. */
+  /**
+   * The upper block shifted down by @p shift, plus @p noise at random; mu_0 (plus noise) for mu.
+   */
   Vector<double>
-  pressed_state(const GelMPM::Scene<2> &scene, const double noise)
+  pressed_state(const GelMPM::Scene<2> &scene, const double noise, const double shift = 0.3)
   {
     const auto                      &spaces   = scene.system->spaces();
     const auto                       greville = spaces.u_dof_greville_points();
@@ -83,7 +89,7 @@ namespace
     // greville[i] of a y-component is its control point's y.
     for (unsigned int i = 1; i < spaces.n_u_dofs(); i += 2)
       if (greville[i] > 0.875)
-        state(i) -= 0.3;
+        state(i) -= shift;
     scene.system->hold_axis(state);
     return state;
   }
@@ -209,6 +215,35 @@ namespace
     ok &= report("symmetric to 1e-12", asymmetry <= 1e-12 * largest);
     return ok;
   }
+
+
+  bool
+  check_unseen()
+  {
+    std::cout << "a face passed unseen (plane strain)" << std::endl;
+    // One cell of search: across the gap of two cells the step has no pair.
+    two_blocks::TwoBlocks blocks(1.,
+                                 false,
+                                 "",
+                                 "set Method = penalty\nset Search distance = 1\n"
+                                 "set Largest depth = 0.5");
+    const auto           &system = *blocks.scene->system;
+    const auto           *term =
+      dynamic_cast<const GelMPM::SelfContactAssembler<2> *>(system.assemblers().back());
+    bool               ok      = report("no pairs at the setup", term->n_pairs() == 0);
+    const unsigned int through = system.unseen_self_contacts(pressed_state(*blocks.scene, 0.));
+    const unsigned int short_of =
+      system.unseen_self_contacts(pressed_state(*blocks.scene, 0., 0.2));
+    std::cout << "  points through the other face unseen: " << through << " (0.05 through), "
+              << short_of << " (0.05 short of it)" << std::endl;
+    ok &=
+      report("the upper block 0.05 through the lower: points of both faces unseen", through > 0);
+    ok &= report("0.05 short of it: none", short_of == 0);
+    TwoBlocks  seen("penalty", false);
+    const auto n_seen = seen.scene->system->unseen_self_contacts(pressed_state(*seen.scene, 0.));
+    ok &= report("with the step's pairs (3 cells of search) active there: none", n_seen == 0);
+    return ok;
+  }
 } // namespace
 
 
@@ -220,6 +255,7 @@ main(int argc, char **argv)
   ok &= check_term(false);
   ok &= check_term(true);
   ok &= check_term(false, "0, 0.25 : 0.5, 1.5");
+  ok &= check_unseen();
   std::cout << (ok ? "self-contact checks passed" : "SELF-CONTACT CHECKS FAILED") << std::endl;
   return ok ? 0 : 1;
 }

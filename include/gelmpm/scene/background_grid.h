@@ -82,6 +82,11 @@ namespace GelMPM
      * (MaterialPointModel::reset_grid() drops its finest levels beyond it).
      */
     unsigned long refinement_budget = 0;
+    /**
+     * The levels the moving refinement marks: 'Refinement levels', lowered for the rest of the
+     * run by drop_finest_moving_level().
+     */
+    unsigned int moving_levels = 0;
 
     /** Whether a band or a mu range is set: the refinement is marked anew every step. */
     bool
@@ -118,7 +123,10 @@ namespace GelMPM
 
     /**
      * Clear the moving marks of the finest level that has some (a cell of a finer level has a
-     * marked parent, so the domains still nest). Returns false if there were none.
+     * marked parent, so the domains still nest), and mark no finer levels than the remaining
+     * ones for the rest of the run: a refinement that gained and lost a level every step would
+     * split and merge its points every step, and merged points lose their children's
+     * differences. Returns false if there were none.
      */
     bool
     drop_finest_moving_level();

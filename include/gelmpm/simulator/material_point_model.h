@@ -140,14 +140,14 @@ namespace GelMPM
     repartitions() const;
 
     /**
-     * Boost serialization: the mu coefficients, which of them hold a value, and the band's
-     * marking they belong to.
+     * Boost serialization: the mu coefficients, which of them hold a value, the band's
+     * marking they belong to, and the levels the budget left the moving refinement.
      */
     template <class Archive>
     void
     serialize(Archive &ar, const unsigned int)
     {
-      ar &mu_coefficients &mu_known &mu_marking;
+      ar &mu_coefficients &mu_known &mu_marking &scene.grid.moving_levels;
     }
 
   private:
