@@ -150,8 +150,7 @@ namespace GelMPM
     // the spacing of surface points, which refinement does not shorten.
     const double                               h = this->spaces.h_u(0);
     std::vector<SurfaceGeometry::SurfacePoint> surface;
-    const auto                                &points      = cache.points();
-    double                                     last_motion = 0.;
+    const auto                                &points = cache.points();
     for (unsigned int p = 0; p < points.size(); ++p)
       {
         const auto &r = points[p];
@@ -159,18 +158,15 @@ namespace GelMPM
           continue;
         SurfaceGeometry::SurfacePoint s;
         const auto                    properties = cache.particle(p)->get_properties();
-        double                        motion     = 0.;
         for (unsigned int d = 0; d < 2; ++d)
           {
             s.X_0[d]      = r.X0[d];
             s.normal_0[d] = properties[Layout::normal_area_0 + d];
             s.x[d]        = r.x[d] + r.edge_offset[d];
-            motion += dealii::Utilities::fixed_power<2>(properties[Layout::increment + d]);
           }
         if (solution != nullptr)
           s.x = current_position(cache, p, *solution);
-        last_motion = std::max(last_motion, std::sqrt(motion));
-        s.index     = p;
+        s.index = p;
         surface.push_back(s);
       }
     // As the observables order a piece: surface points are at most h apart (a cell of the
@@ -198,12 +194,8 @@ namespace GelMPM
       return line.closed[c] ? std::min(s, line.length_0[c] - s) : s;
     };
 
-    // A point that slides along the other face within the step meets segments that were
-    // farther than the search distance at its start (a rolling tip passes through them
-    // unseen): the search reaches as far as the last step moved the surface, for both faces
-    // and a step that grows by a quarter.
     // At the end of a step every point behind the surface counts, however deep.
-    const double search     = settings.search_distance * h + 2.5 * last_motion,
+    const double search     = settings.search_distance * h,
                  depth      = solution == nullptr ? settings.largest_depth * h
                                                   : std::numeric_limits<double>::infinity(),
                  separation = settings.minimum_arc_length * h;

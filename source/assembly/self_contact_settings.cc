@@ -42,10 +42,20 @@ namespace GelMPM
       Patterns::Double(0.),
       "In cells of the background grid as given ('Background grid/Cells'; on a refined grid "
       "its unrefined cells, at every level, as 'Time stepping/Largest increment'): a surface "
-      "point and a segment of the surface closer than this, plus 2.5 times the largest motion "
-      "of a surface point in the last step (both faces move, and the step may grow), at the "
-      "start of a step are a pair of the step (the pairs, and the sparsity pattern with them, "
-      "are fixed over the step). A motion of more than that within one step passes unseen.");
+      "point and a segment of the surface closer than this at the start of a step are a pair "
+      "of the step (the pairs, and the sparsity pattern with them, are fixed over the step). A "
+      "point that passes through a segment it is not paired with is not seen in that step "
+      "('Retake unseen passes').");
+    prm.declare_entry(
+      "Retake unseen passes",
+      "true",
+      Patterns::Bool(),
+      "At the end of every step that the error control accepts the surface is searched again "
+      "for points that lie behind a segment they were in front of at the start and that no "
+      "pair of the step holds: they passed through the other face unseen. true: such a step is "
+      "retaken with the step times 'Time stepping/Cut factor'. false: it is accepted, and the "
+      "log's last lines count such steps and points (doc/method.md, \"Pairs, fixed over a "
+      "step\").");
     prm.declare_entry("Minimum arc length",
                       "3",
                       Patterns::Double(0.),
@@ -83,13 +93,14 @@ namespace GelMPM
   SelfContactSettings::parse_parameters(dealii::ParameterHandler &prm, const unsigned int dim)
   {
     prm.enter_subsection("Self contact");
-    method             = prm.get("Method") == "penalty" ? Method::penalty : Method::none;
-    penalty            = prm.get_double("Penalty");
-    pieces             = dealii::Utilities::split_string_list(prm.get("Pieces"), ',');
-    search_distance    = prm.get_double("Search distance");
-    minimum_arc_length = prm.get_double("Minimum arc length");
-    largest_depth      = prm.get_double("Largest depth");
-    separate_faces     = prm.get_bool("Separate faces");
+    method               = prm.get("Method") == "penalty" ? Method::penalty : Method::none;
+    penalty              = prm.get_double("Penalty");
+    pieces               = dealii::Utilities::split_string_list(prm.get("Pieces"), ',');
+    search_distance      = prm.get_double("Search distance");
+    minimum_arc_length   = prm.get_double("Minimum arc length");
+    largest_depth        = prm.get_double("Largest depth");
+    separate_faces       = prm.get_bool("Separate faces");
+    retake_unseen_passes = prm.get_bool("Retake unseen passes");
     prm.leave_subsection();
     if (!enabled())
       return;

@@ -218,6 +218,8 @@ namespace GelMPM
   std::string
   MaterialPointModel<dim>::refusal(const dealii::Vector<double> &solution) const
   {
+    if (!scene.contact.self_contact.retake_unseen_passes)
+      return {};
     const unsigned int unseen = scene.system->unseen_self_contacts(solution);
     if (unseen == 0)
       return {};
@@ -312,6 +314,7 @@ namespace GelMPM
   {
     dealii::TimerOutput::Scope scope(timer, "update");
     const auto                 n_before = scene.particles.n_global_particles();
+    count_unseen_passes(solution);
     try
       {
         scene.system->update_particles(solution);
@@ -401,6 +404,26 @@ namespace GelMPM
   MaterialPointModel<dim>::budget_limited_steps() const
   {
     return n_budget_limited;
+  }
+
+
+  template <int dim>
+  void
+  MaterialPointModel<dim>::count_unseen_passes(const dealii::Vector<double> &solution)
+  {
+    if (!scene.contact.self_contact.enabled() || scene.contact.self_contact.retake_unseen_passes)
+      return;
+    const unsigned int unseen = scene.system->unseen_self_contacts(solution);
+    n_unseen_steps += unseen > 0;
+    n_unseen_points += unseen;
+  }
+
+
+  template <int dim>
+  std::pair<unsigned long, unsigned long>
+  MaterialPointModel<dim>::unseen_passes() const
+  {
+    return {n_unseen_steps, n_unseen_points};
   }
 
 

@@ -452,6 +452,12 @@ namespace GelMPM
       pcout << ", " << model->budget_limited_steps()
             << " step(s) with levels of the moving refinement dropped to keep within "
                "'Background grid/Refinement budget'";
+    if (loop && model->unseen_passes().first > 0)
+      pcout << ", " << model->unseen_passes().first << " step(s) in which "
+            << model->unseen_passes().second
+            << " surface point(s) passed through the gel's own surface unseen by the step's "
+               "self-contact pairs ('Contact/Self contact/Retake unseen passes = true' retakes "
+               "them shorter)";
     if (loop && model->steps_over_budget() > 0)
       pcout << ", " << model->steps_over_budget()
             << " step(s) beyond 'Background grid/Refinement budget' without moving refinement "

@@ -270,15 +270,6 @@ namespace GelMPM
                 report.failure = why.str();
               }
           }
-        if (report.converged)
-          {
-            const std::string refused = model.refusal(solution);
-            if (!refused.empty())
-              {
-                report.converged = false;
-                report.failure   = refused;
-              }
-          }
         if (report.converged && !error_acceptable(solution, step_dt, report.failure))
           {
             log << "    step " << control_.step() + 1 << " at t = " << t_begin
@@ -287,6 +278,17 @@ namespace GelMPM
             for (auto *observer : observers)
               observer->attempt_rejected();
             continue;
+          }
+        // Only a step that the error control accepts: one it retakes anyway is no state of
+        // the run, and refusing it first would change the retaken step's size.
+        if (report.converged)
+          {
+            const std::string refused = model.refusal(solution);
+            if (!refused.empty())
+              {
+                report.converged = false;
+                report.failure   = refused;
+              }
           }
         if (!report.converged)
           {

@@ -43,6 +43,9 @@ namespace GelMPM
     /** Whether parts of the material that share a displacement function's support without being
      * connected there take copies of it (PointCache::separate_faces()). */
     bool separate_faces = true;
+    /** Whether a converged step through which a surface point passed the other face unseen by
+     * its pairs is retaken shorter ('Retake unseen passes'); otherwise such steps are counted. */
+    bool retake_unseen_passes = true;
 
     bool
     enabled() const

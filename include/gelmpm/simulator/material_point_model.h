@@ -13,6 +13,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace GelMPM
@@ -66,7 +67,10 @@ namespace GelMPM
 
     double
     largest_motion_in_cells(const dealii::Vector<double> &solution) const override;
-    /** A step that leaves surface points through the gel's own surface unseen is refused. */
+    /**
+     * With 'Contact/Self contact/Retake unseen passes', a step that leaves surface points
+     * through the gel's own surface unseen by its pairs is refused.
+     */
     std::string
     refusal(const dealii::Vector<double> &solution) const override;
 
@@ -136,6 +140,12 @@ namespace GelMPM
     /** Steps whose grid without moving refinement exceeded the budget (the body outgrew it). */
     unsigned long
     steps_over_budget() const;
+    /**
+     * Accepted steps in which surface points passed through the gel's own surface unseen by the
+     * step's pairs, and those points (without 'Retake unseen passes').
+     */
+    std::pair<unsigned long, unsigned long>
+    unseen_passes() const;
     unsigned long
     repartitions() const;
 
@@ -181,6 +191,10 @@ namespace GelMPM
     bool
     keep_within_budget();
 
+    /** Count the points of the accepted @p solution that passed through a face unseen. */
+    void
+    count_unseen_passes(const dealii::Vector<double> &solution);
+
     /** Chemical-potential coefficients of every control point of the mu grid, from a solution. */
     void
     store_mu_coefficients(const dealii::Vector<double> &solution);
@@ -212,6 +226,8 @@ namespace GelMPM
     unsigned long           n_kept_markings           = 0;
     unsigned long           n_budget_limited          = 0;
     unsigned long           n_over_budget             = 0;
+    unsigned long           n_unseen_steps            = 0;
+    unsigned long           n_unseen_points           = 0;
     unsigned long           n_repartitions            = 0;
   };
 } // namespace GelMPM
