@@ -1,35 +1,47 @@
-# gelmpm_pickup_cases(LIBRARIES <library>...)
+# gelmpm_pickup_cases(LIBRARIES <library>... [VTU_READER] [COSTS <case> <seconds>...])
 #
-# The tests of one module directory as the cases of one program. Every foo.cc beside foo.output in
-# the calling directory is a test named <module>/foo.release, run and compared as deal.II's
-# DEAL_II_PICKUP_TESTS runs and compares it (deal.II's run_test.sh: the program's stdout and stderr
-# against foo.output by numdiff, absolute 1e-6, relative 1e-8, a non-zero exit status fails the
-# test; a test is not run again while neither its program nor foo.output changed). What differs is
-# the compilation: deal.II compiles every foo.cc into a program of its own, which for a translation
-# unit that includes the simulator costs 15-20 s of compile and link, mostly spent reading the
-# same deal.II headers again; here the cases of a module are compiled once, as one translation unit
-# (<module>_cases.cc in the build directory), into one program <module>.cases that runs the case
-# named by its first argument.
+# The tests of one module directory as cases of a shared test program. Every foo.cc beside
+# foo.output in the calling directory is a test named <module>/foo.release, run and compared as
+# deal.II's DEAL_II_PICKUP_TESTS runs and compares it (deal.II's run_test.sh: the program's stdout
+# and stderr against foo.output by numdiff, absolute 1e-6, relative 1e-8, a non-zero exit status
+# fails the test). What differs is the compilation: deal.II compiles every foo.cc into a program of
+# its own, which for a translation unit that includes the simulator costs 15-20 s of compile and
+# link, mostly spent reading the same deal.II headers again and instantiating the same templates;
+# here the cases of several modules are compiled once, as one translation unit, into one program
+# that runs the case named by its first argument (<module>/foo).
+#
+# The modules of GELMPM_UNIT_TEST_MODULES (tests/CMakeLists.txt) share the program unit_cases, the
+# others run_cases (doc/architecture.md, "Tests", has the measurements that chose two programs).
+# gelmpm_pickup_cases() only records a module's cases and defines its tests;
+# gelmpm_add_case_programs(), called once after every module, writes each program's translation
+# unit and defines the program and the test that builds it.
 #
 # The translation unit includes every header that one of the cases includes, then each foo.cc
-# inside a namespace of its own (gelmpm_case_foo), so that the helpers of two cases never meet and
-# each case's main() becomes gelmpm_case_foo::main(); the case's own #include lines are then no-ops
-# (every header has an include guard). A foo.cc therefore stays an ordinary program with its own
-# main() that compiles on its own, and its failure is reported under its own name.
+# inside a namespace of its own (gelmpm_case_<module>_foo), so that the helpers of two cases never
+# meet and each case's main() becomes gelmpm_case_<module>_foo::main(); the case's own #include
+# lines are then no-ops (every header has an include guard). SOURCE_DIR is defined, around each
+# case, as the case's own source directory. A foo.cc therefore stays an ordinary program with its
+# own main() that compiles on its own, and its failure is reported under its own name.
 #
-# The program is built by the test <module>/cases.build (a ctest fixture that every case of the
-# module requires, so that two cases never build it at the same time, and a compile error fails
+# A program is built by the test cases/<program>.build (a ctest fixture that every case of the
+# program requires, so that two cases never build it at the same time, and a compile error fails
 # that test and leaves the cases not run). ctest -R <module>/foo runs the build first.
+#
+# VTU_READER: the cases read .vtu files through Python's VTK (tests/vtu_reader.h).
 #
 # COSTS <case> <seconds>...: the measured run time of the longer cases, as ctest's COST, so that
 # with -j 2 they start first (ctest uses Testing/Temporary/CTestCostData.txt once a run has written
-# it; a fresh build directory has none). The program's build gets the sum of its cases' costs, so
-# that the builds whose cases take longest come first (a build always precedes its cases).
+# it; a fresh build directory has none). A program's build gets the sum of its cases' costs, so
+# that the build whose cases take longest comes first (a build always precedes its cases).
 function(gelmpm_pickup_cases)
-  cmake_parse_arguments(ARG "" "" "LIBRARIES;COSTS" ${ARGN})
+  cmake_parse_arguments(ARG "VTU_READER" "" "LIBRARIES;COSTS" ${ARGN})
   get_filename_component(_module ${CMAKE_CURRENT_SOURCE_DIR} NAME)
   string(TOLOWER ${CMAKE_BUILD_TYPE} _suffix)
-  set(_program ${_module}.cases)
+  if(_module IN_LIST GELMPM_UNIT_TEST_MODULES)
+    set(_program unit_cases)
+  else()
+    set(_program run_cases)
+  endif()
 
   file(GLOB _outputs CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.output)
   set(_cases)
@@ -44,98 +56,31 @@ function(gelmpm_pickup_cases)
     return()
   endif()
 
-  # The headers of all cases, first (a header given in quotes by its absolute path).
-  set(_includes)
   foreach(_case ${_cases})
-    file(STRINGS ${CMAKE_CURRENT_SOURCE_DIR}/${_case}.cc _lines REGEX "^#include ")
-    foreach(_line ${_lines})
-      if(_line MATCHES "^#include \"(.*)\"")
-        get_filename_component(_header ${CMAKE_CURRENT_SOURCE_DIR}/${CMAKE_MATCH_1} ABSOLUTE)
-        set(_line "#include \"${_header}\"")
-      endif()
-      list(APPEND _includes "${_line}")
-    endforeach()
+    set_property(GLOBAL APPEND PROPERTY GELMPM_CASES_${_program} "${_module}/${_case}")
   endforeach()
-  list(REMOVE_DUPLICATES _includes)
-  list(SORT _includes)
-
-  set(_text "// Generated by tests/cmake/gelmpm_pickup_cases.cmake from tests/${_module}/*.cc: do not edit.\n")
-  foreach(_line ${_includes})
-    string(APPEND _text "${_line}\n")
-  endforeach()
-  string(APPEND _text "\n#include <cstring>\n#include <iostream>\n\n")
-  foreach(_case ${_cases})
-    string(APPEND _text "namespace gelmpm_case_${_case}\n{\n"
-                        "#include \"${CMAKE_CURRENT_SOURCE_DIR}/${_case}.cc\"\n}\n\n")
-  endforeach()
-  # A case's main() takes (argc, argv) or nothing.
-  string(APPEND _text "namespace\n{\n"
-                      "  [[maybe_unused]] int\n  run_case(int (*case_main)(int, char **), int argc, char **argv)\n"
-                      "  {\n    return case_main(argc, argv);\n  }\n\n"
-                      "  [[maybe_unused]] int\n  run_case(int (*case_main)(), int, char **)\n"
-                      "  {\n    return case_main();\n  }\n} // namespace\n\n")
-  string(APPEND _text "int\nmain(int argc, char **argv)\n{\n")
-  foreach(_case ${_cases})
-    string(APPEND _text "  if (argc > 1 && std::strcmp(argv[1], \"${_case}\") == 0)\n"
-                        "    return run_case(&gelmpm_case_${_case}::main, argc - 1, argv + 1);\n")
-  endforeach()
-  string(REPLACE ";" " " _list "${_cases}")
-  string(APPEND _text "  std::cerr << \"usage: \" << argv[0] << \" <case>, one of: ${_list}\" << std::endl;\n"
-                      "  return 2;\n}\n")
-  # Rewritten only when it changes, so that a new configure does not recompile the program.
-  file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/${_module}_cases.cc.new "${_text}")
-  configure_file(${CMAKE_CURRENT_BINARY_DIR}/${_module}_cases.cc.new
-                 ${CMAKE_CURRENT_BINARY_DIR}/${_module}_cases.cc COPYONLY)
-
-  add_executable(${_program} EXCLUDE_FROM_ALL ${CMAKE_CURRENT_BINARY_DIR}/${_module}_cases.cc)
-  deal_ii_setup_target(${_program})
-  gelmpm_use_pch(${_program})
-  target_link_libraries(${_program} ${ARG_LIBRARIES})
-  target_compile_definitions(${_program} PRIVATE SOURCE_DIR="${CMAKE_CURRENT_SOURCE_DIR}")
-  # A case's main() is an ordinary function here: one that ends without a return would be
-  # undefined behaviour, so that is an error.
-  target_compile_options(${_program} PRIVATE -Werror=return-type)
-  set_target_properties(${_program} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
-
-  add_test(NAME ${_module}/cases.build
-           COMMAND ${CMAKE_COMMAND} --build ${CMAKE_BINARY_DIR} --target ${_program})
-  set_tests_properties(${_module}/cases.build PROPERTIES LABELS ${_module}
-                       FIXTURES_SETUP ${_module}_cases TIMEOUT 1200)
+  set_property(GLOBAL APPEND PROPERTY GELMPM_CASES_${_program}_LIBRARIES ${ARG_LIBRARIES})
+  set_property(GLOBAL APPEND PROPERTY GELMPM_CASES_${_program}_DIRECTORIES
+                                      ${CMAKE_CURRENT_SOURCE_DIR})
+  if(ARG_VTU_READER)
+    set_property(GLOBAL PROPERTY GELMPM_CASES_${_program}_VTU_READER TRUE)
+  endif()
 
   set(_scripts ${DEAL_II_PATH}/${DEAL_II_SHARE_RELDIR}/scripts)
   foreach(_case ${_cases})
     set(_test ${_module}/${_case}.${_suffix})
-    set(_target ${_module}.${_case}.${_suffix}.test)
     set(_directory ${CMAKE_CURRENT_BINARY_DIR}/${_case}.${_suffix})
-    set(_comparison ${CMAKE_CURRENT_SOURCE_DIR}/${_case}.output)
-    set(_guard ${_directory}/interrupt_guard)
     file(MAKE_DIRECTORY ${_directory})
-    # As deal.II's: the guard is removed when a run was interrupted, which makes the case run again.
-    add_custom_command(OUTPUT ${_guard} COMMAND touch ${_guard})
-    add_custom_command(OUTPUT ${_directory}/output
-      COMMAND sh ${_scripts}/run_test.sh run "${_test}" $<TARGET_FILE:${_program}> ${_case}
-      COMMAND ${PERL_EXECUTABLE} -pi ${_scripts}/normalize.pl ${_directory}/output
-      WORKING_DIRECTORY ${_directory}
-      DEPENDS ${_program} ${_guard} ${_scripts}/normalize.pl
-      VERBATIM)
-    add_custom_command(OUTPUT ${_directory}/diff
-      COMMAND sh ${_scripts}/run_test.sh diff "${_test}" "${NUMDIFF_EXECUTABLE}" "${_comparison}"
-      WORKING_DIRECTORY ${_directory}
-      DEPENDS ${_directory}/output ${_comparison}
-      VERBATIM)
-    add_custom_target(${_target}
-      COMMAND echo "${_test}: BUILD successful."
-      COMMAND echo "${_test}: RUN successful."
-      COMMAND echo "${_test}: DIFF successful."
-      COMMAND echo "${_test}: PASSED."
-      DEPENDS ${_directory}/diff)
+    # deal.II's run and diff stages, called directly (tests/cmake/run_case.sh): deal.II's
+    # run_test.cmake would start CMake and make for each case to find the program up to date.
     add_test(NAME ${_test}
-      COMMAND ${CMAKE_COMMAND} -DTRGT=${_target} -DTEST=${_test} -DEXPECT=PASSED
-              -DBINARY_DIR=${CMAKE_BINARY_DIR} -DGUARD_FILE=${_guard}
-              -P ${_scripts}/run_test.cmake
-      WORKING_DIRECTORY ${_directory})
+             COMMAND bash ${GELMPM_TESTS_CMAKE_DIR}/run_case.sh ${_test}
+                     $<TARGET_FILE:${_program}> ${_module}/${_case}
+                     ${CMAKE_CURRENT_SOURCE_DIR}/${_case}.output ${NUMDIFF_EXECUTABLE} ${_scripts}
+                     ${PERL_EXECUTABLE}
+             WORKING_DIRECTORY ${_directory})
     set_tests_properties(${_test} PROPERTIES LABELS ${_module} TIMEOUT 600
-                         FIXTURES_REQUIRED ${_module}_cases)
+                         FIXTURES_REQUIRED ${_program})
   endforeach()
   set(_total_cost 10)
   set(_costs ${ARG_COSTS})
@@ -147,5 +92,93 @@ function(gelmpm_pickup_cases)
     set_tests_properties(${_module}/${_case}.${_suffix} PROPERTIES COST ${_seconds})
     math(EXPR _total_cost "${_total_cost} + ${_seconds}")
   endwhile()
-  set_tests_properties(${_module}/cases.build PROPERTIES COST ${_total_cost})
+  set_property(GLOBAL APPEND PROPERTY GELMPM_CASES_${_program}_COST ${_total_cost})
+endfunction()
+
+
+# gelmpm_add_case_programs(): the programs unit_cases and run_cases from the cases recorded by
+# gelmpm_pickup_cases(), and the tests that build them.
+function(gelmpm_add_case_programs)
+  foreach(_program unit_cases run_cases)
+    get_property(_entries GLOBAL PROPERTY GELMPM_CASES_${_program})
+    if(NOT _entries)
+      continue()
+    endif()
+    get_property(_libraries GLOBAL PROPERTY GELMPM_CASES_${_program}_LIBRARIES)
+    get_property(_vtu_reader GLOBAL PROPERTY GELMPM_CASES_${_program}_VTU_READER)
+    get_property(_costs GLOBAL PROPERTY GELMPM_CASES_${_program}_COST)
+    list(REMOVE_DUPLICATES _libraries)
+
+    # The headers of all cases, first (a header given in quotes by its absolute path).
+    set(_includes)
+    foreach(_entry ${_entries})
+      get_filename_component(_module ${_entry} DIRECTORY)
+      set(_source ${CMAKE_CURRENT_SOURCE_DIR}/${_entry}.cc)
+      file(STRINGS ${_source} _lines REGEX "^#include ")
+      foreach(_line ${_lines})
+        if(_line MATCHES "^#include \"(.*)\"")
+          get_filename_component(_header ${CMAKE_CURRENT_SOURCE_DIR}/${_module}/${CMAKE_MATCH_1}
+                                 ABSOLUTE)
+          set(_line "#include \"${_header}\"")
+        endif()
+        list(APPEND _includes "${_line}")
+      endforeach()
+    endforeach()
+    list(REMOVE_DUPLICATES _includes)
+    list(SORT _includes)
+
+    set(_text "// Generated by tests/cmake/gelmpm_pickup_cases.cmake from the cases of tests/*/: do not edit.\n")
+    foreach(_line ${_includes})
+      string(APPEND _text "${_line}\n")
+    endforeach()
+    string(APPEND _text "\n#include <cstring>\n#include <iostream>\n\n")
+    set(_dispatch)
+    set(_list)
+    foreach(_entry ${_entries})
+      get_filename_component(_module ${_entry} DIRECTORY)
+      get_filename_component(_case ${_entry} NAME)
+      set(_namespace gelmpm_case_${_module}_${_case})
+      string(APPEND _text "#define SOURCE_DIR \"${CMAKE_CURRENT_SOURCE_DIR}/${_module}\"\n"
+                          "namespace ${_namespace}\n{\n"
+                          "#include \"${CMAKE_CURRENT_SOURCE_DIR}/${_entry}.cc\"\n}\n"
+                          "#undef SOURCE_DIR\n\n")
+      string(APPEND _dispatch "  if (argc > 1 && std::strcmp(argv[1], \"${_entry}\") == 0)\n"
+                              "    return run_case(&${_namespace}::main, argc - 1, argv + 1);\n")
+      string(APPEND _list " ${_entry}")
+    endforeach()
+    # A case's main() takes (argc, argv) or nothing.
+    string(APPEND _text "namespace\n{\n"
+                        "  [[maybe_unused]] int\n  run_case(int (*case_main)(int, char **), int argc, char **argv)\n"
+                        "  {\n    return case_main(argc, argv);\n  }\n\n"
+                        "  [[maybe_unused]] int\n  run_case(int (*case_main)(), int, char **)\n"
+                        "  {\n    return case_main();\n  }\n} // namespace\n\n")
+    string(APPEND _text "int\nmain(int argc, char **argv)\n{\n${_dispatch}"
+                        "  std::cerr << \"usage: \" << argv[0] << \" <module>/<case>, one of:${_list}\" << std::endl;\n"
+                        "  return 2;\n}\n")
+    # Rewritten only when it changes, so that a new configure does not recompile the program.
+    file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/${_program}.cc.new "${_text}")
+    configure_file(${CMAKE_CURRENT_BINARY_DIR}/${_program}.cc.new
+                   ${CMAKE_CURRENT_BINARY_DIR}/${_program}.cc COPYONLY)
+
+    add_executable(${_program} EXCLUDE_FROM_ALL ${CMAKE_CURRENT_BINARY_DIR}/${_program}.cc)
+    deal_ii_setup_target(${_program})
+    gelmpm_use_pch(${_program})
+    target_link_libraries(${_program} ${_libraries})
+    # A case's main() is an ordinary function here: one that ends without a return would be
+    # undefined behaviour, so that is an error.
+    target_compile_options(${_program} PRIVATE -Werror=return-type)
+    set_target_properties(${_program} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+    if(_vtu_reader)
+      gelmpm_use_vtu_reader(${_program})
+    endif()
+
+    add_test(NAME cases/${_program}.build
+             COMMAND ${CMAKE_COMMAND} --build ${CMAKE_BINARY_DIR} --target ${_program})
+    set(_total_cost 0)
+    foreach(_cost ${_costs})
+      math(EXPR _total_cost "${_total_cost} + ${_cost}")
+    endforeach()
+    set_tests_properties(cases/${_program}.build PROPERTIES LABELS cases FIXTURES_SETUP ${_program}
+                         FIXTURES_REQUIRED gelmpm_build TIMEOUT 1800 COST ${_total_cost})
+  endforeach()
 endfunction()
