@@ -37,6 +37,7 @@ packages=(
   cmake          # build system
   g++            # compiler
   make           # build tool
+  ninja-build    # builds a fresh build directory (better use of two cores than make)
 )
 targets=()
 while (($#)); do
@@ -86,7 +87,10 @@ fi
 # Open MPI refuses to start as root unless told; CI runs as root.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 
+# A fresh build directory is built by Ninja, which schedules the whole build as one graph: the
+# build took 297 s of wall time on two cores against 345 s with make's recursive Makefiles
+# (doc/setup_cost.md). An existing build directory keeps the generator it was configured with.
 if [[ ! -f "${build_dir}/CMakeCache.txt" ]]; then
-  cmake -S "${top}" -B "${build_dir}" -DCMAKE_BUILD_TYPE="${build_type}" >/dev/null
+  cmake -S "${top}" -B "${build_dir}" -G Ninja -DCMAKE_BUILD_TYPE="${build_type}" >/dev/null
 fi
 cmake --build "${build_dir}" -j "${jobs}" "${targets[@]}"

@@ -18,7 +18,7 @@ shift || true
 levels=("$@")
 ((${#levels[@]})) || levels=(2 4 8 16)
 if [[ ! -x "${tool}" ]]; then
-  echo "no ${tool}: build it first (cmake --build build --target gelmpm-fem-column)" >&2
+  echo "no ${tool}: build it first (cmake --build build --target gelmpm-tools)" >&2
   exit 2
 fi
 # Measured on the 2-core machine with other jobs running: 2, 4, 8, 16, 32 cells across took
