@@ -52,13 +52,22 @@ namespace
   }
 
 
-  CaseHeader
-  read_header(const std::string &case_file)
+  /** The lines of @p file. */
+  std::vector<std::string>
+  lines_of(const fs::path &file)
   {
-    std::ifstream            in(case_file, std::ios::binary);
+    std::ifstream            in(file, std::ios::binary);
     std::vector<std::string> lines;
     for (std::string line; std::getline(in, line);)
       lines.push_back(line);
+    return lines;
+  }
+
+
+  CaseHeader
+  read_header(const std::string &case_file)
+  {
+    const auto lines = lines_of(case_file);
     CaseHeader header;
     if (!lines.empty())
       {
@@ -179,17 +188,6 @@ namespace
         std::exit(status);
       }
     return child > 0 ? wait_for(child) : -1;
-  }
-
-
-  std::vector<std::string>
-  lines_of(const fs::path &file)
-  {
-    std::ifstream            in(file, std::ios::binary);
-    std::vector<std::string> lines;
-    for (std::string line; std::getline(in, line);)
-      lines.push_back(line);
-    return lines;
   }
 
 
