@@ -90,7 +90,10 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 # A fresh build directory is built by Ninja, which schedules the whole build as one graph: the
 # build took 297 s of wall time on two cores against 345 s with make's recursive Makefiles
 # (doc/setup_cost.md). An existing build directory keeps the generator it was configured with.
+# (make if ninja is not there, e.g. where the packages were installed by hand).
 if [[ ! -f "${build_dir}/CMakeCache.txt" ]]; then
-  cmake -S "${top}" -B "${build_dir}" -G Ninja -DCMAKE_BUILD_TYPE="${build_type}" >/dev/null
+  generator=()
+  command -v ninja >/dev/null && generator=(-G Ninja)
+  cmake -S "${top}" -B "${build_dir}" "${generator[@]}" -DCMAKE_BUILD_TYPE="${build_type}" >/dev/null
 fi
 cmake --build "${build_dir}" -j "${jobs}" "${targets[@]}"
