@@ -5,7 +5,7 @@
 # with its own main(), and a main() that runs the program named by its key: the key is the first
 # argument (BY argv1: the test programs, tests/cmake/gelmpm_pickup_cases.cmake) or the name the
 # program was started by, without its directory (BY argv0: the tools, started through symbolic
-# links named after them; the program's own name followed by a key as first argument works too).
+# links named after them; started by any other name, the first argument is the key).
 #
 # The translation unit includes every header that one of the sources includes, then each source
 # inside a namespace of its own (gelmpm_multi_<n>), so that the helpers of two sources never
@@ -69,10 +69,11 @@ function(gelmpm_write_multi_call _file)
   string(APPEND _text "int\nmain(int argc, char **argv)\n{\n")
   if(ARG_BY STREQUAL "argv0")
     string(APPEND _text
+           "  const std::string keys =\"${_list} \";\n"
            "  std::string key = argv[0];\n"
            "  key = key.substr(key.find_last_of('/') + 1);\n"
            "  int shift = 0;\n"
-           "  if (argc > 1 && key.find(\"-tools\") != std::string::npos)\n"
+           "  if (keys.find(' ' + key + ' ') == std::string::npos && argc > 1)\n"
            "    key = argv[shift = 1];\n")
   else()
     string(APPEND _text "  const std::string key = argc > 1 ? argv[1] : \"\";\n"

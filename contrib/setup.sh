@@ -87,9 +87,10 @@ fi
 # Open MPI refuses to start as root unless told; CI runs as root.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 
-# A fresh build directory is built by Ninja, which schedules the whole build as one graph: the
-# build took 297 s of wall time on two cores against 345 s with make's recursive Makefiles
-# (doc/setup_cost.md). An existing build directory keeps the generator it was configured with.
+# A fresh build directory is built by Ninja, which schedules the whole build as one graph, where
+# make starts a target's files only once the targets it links are built (doc/architecture.md,
+# "Build time": 297 s of wall time on two cores with Ninja, 345 s with make, measured together
+# with the tools made one program). An existing build directory keeps the generator it was configured with.
 # (make if ninja is not there, e.g. where the packages were installed by hand).
 if [[ ! -f "${build_dir}/CMakeCache.txt" ]]; then
   generator=()

@@ -81,8 +81,8 @@ namespace
   double
   parse_number(const std::string &text, const std::string &option)
   {
-    std::size_t end = 0;
-    double      value;
+    std::size_t end   = 0;
+    double      value = 0.;
     try
       {
         value = std::stod(text, &end);

@@ -11,10 +11,10 @@
 # that runs the case named by its first argument (<module>/foo).
 #
 # The modules of GELMPM_UNIT_TEST_MODULES (tests/CMakeLists.txt) share the program unit_cases, the
-# others run_cases (doc/architecture.md, "Tests", has the measurements that chose two programs).
+# others run_cases (doc/architecture.md, "Tests": their compile times).
 # gelmpm_pickup_cases() only records a module's cases and defines its tests;
 # gelmpm_add_case_programs(), called once after every module, writes each program's translation
-# unit and defines the program and the test that builds it.
+# unit and defines the program; gelmpm_add_test_programs_build() the test that builds them.
 #
 # The translation unit is written by gelmpm_write_multi_call() (cmake/gelmpm_multi_call.cmake):
 # every header that one of the cases includes, then each foo.cc inside a namespace of its own, so
@@ -58,8 +58,6 @@ function(gelmpm_pickup_cases)
     set_property(GLOBAL APPEND PROPERTY GELMPM_CASES_${_program} "${_module}/${_case}")
   endforeach()
   set_property(GLOBAL APPEND PROPERTY GELMPM_CASES_${_program}_LIBRARIES ${ARG_LIBRARIES})
-  set_property(GLOBAL APPEND PROPERTY GELMPM_CASES_${_program}_DIRECTORIES
-                                      ${CMAKE_CURRENT_SOURCE_DIR})
   if(ARG_VTU_READER)
     set_property(GLOBAL PROPERTY GELMPM_CASES_${_program}_VTU_READER TRUE)
   endif()
@@ -92,7 +90,7 @@ endfunction()
 
 
 # gelmpm_add_case_programs(): the programs unit_cases and run_cases from the cases recorded by
-# gelmpm_pickup_cases(), and the tests that build them.
+# gelmpm_pickup_cases(), added to GELMPM_TEST_PROGRAMS.
 function(gelmpm_add_case_programs)
   foreach(_program unit_cases run_cases)
     get_property(_entries GLOBAL PROPERTY GELMPM_CASES_${_program})

@@ -191,6 +191,40 @@ namespace
   }
 
 
+  /**
+   * What is wrong with a refused run: its exit @p status, its @p stderr_lines against the
+   * @p expect ed text, and the files it @p wrote. Empty if nothing.
+   */
+  std::vector<std::string>
+  refusal_failures(const int                       status,
+                   const std::vector<std::string> &stderr_lines,
+                   const std::string              &expect,
+                   const std::vector<std::string> &wrote)
+  {
+    std::vector<std::string> failures;
+    if (status != 2)
+      failures.push_back("exit status " + std::to_string(status) + ", expected 2");
+    bool        found   = false;
+    std::size_t longest = 0, non_empty = 0;
+    for (const auto &line : stderr_lines)
+      {
+        found |= line.find(expect) != std::string::npos;
+        longest = std::max(longest, line.size());
+        non_empty += line.empty() ? 0 : 1;
+      }
+    if (!found)
+      failures.push_back("stderr lacks '" + expect + "'");
+    if (non_empty != 1)
+      failures.push_back("expected exactly one error line, found " + std::to_string(non_empty));
+    if (longest > 1000)
+      failures.push_back("the error line is longer than 1000 characters");
+    if (!wrote.empty())
+      failures.push_back("output was written: " + wrote.front() +
+                         (wrote.size() > 1 ? " and more" : ""));
+    return failures;
+  }
+
+
   /** Run one case; print its result; whether it passed. */
   bool
   run_case(const std::string &case_file, const fs::path &scratch)
@@ -204,7 +238,6 @@ namespace
     const fs::path work      = scratch / name;
     const fs::path argv_file = scratch / (name + ".argv");
     fs::create_directories(work);
-    int status = -1;
     if (failures.empty() && !prepare(work, case_file, header, argv_file))
       failures.push_back("its setup or arguments could not be run by bash");
     std::vector<std::string> stderr_lines;
@@ -214,46 +247,25 @@ namespace
         auto       arguments = read_arguments(argv_file);
         arguments.insert(arguments.begin(), "gelmpm");
         arguments.push_back(header.scene);
-        status       = run_gelmpm(work, arguments);
-        stderr_lines = lines_of(work / "stderr");
-
-        if (status != 2)
-          failures.push_back("exit status " + std::to_string(status) + ", expected 2");
-        bool        found   = false;
-        std::size_t longest = 0, non_empty = 0;
-        for (const auto &line : stderr_lines)
-          {
-            found |= line.find(header.expect) != std::string::npos;
-            longest = std::max(longest, line.size());
-            non_empty += line.empty() ? 0 : 1;
-          }
-        if (!found)
-          failures.push_back("stderr lacks '" + header.expect + "'");
-        if (non_empty != 1)
-          failures.push_back("expected exactly one error line, found " + std::to_string(non_empty));
-        if (longest > 1000)
-          failures.push_back("the error line is longer than 1000 characters");
-        std::vector<std::string> leftovers;
+        const int status = run_gelmpm(work, arguments);
+        stderr_lines     = lines_of(work / "stderr");
+        std::vector<std::string> wrote;
         for (const auto &path : listing(work, {"stdout", "stderr"}))
           if (!before.count(path))
-            leftovers.push_back(path);
-        if (!leftovers.empty())
-          failures.push_back("output was written: " + leftovers.front() +
-                             (leftovers.size() > 1 ? " and more" : ""));
+            wrote.push_back(path);
+        failures = refusal_failures(status, stderr_lines, header.expect, wrote);
       }
 
-    if (failures.empty())
-      std::cout << "input_errors/" << name << ": PASS" << std::endl;
-    else
+    std::cout << "input_errors/" << name << (failures.empty() ? ": PASS" : ": FAIL");
+    if (!failures.empty())
       {
-        std::cout << "input_errors/" << name << ": FAIL";
         for (const auto &failure : failures)
           std::cout << "\n  " << failure;
         std::cout << "\n  stderr:";
         for (const auto &line : stderr_lines)
           std::cout << "\n    " << line.substr(0, 2000);
-        std::cout << std::endl;
       }
+    std::cout << std::endl;
     std::error_code ignored;
     fs::remove_all(work, ignored);
     fs::remove(argv_file, ignored);
