@@ -5,6 +5,9 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <algorithm>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
 #include <cmath>
 #include <map>
 
@@ -33,6 +36,24 @@ namespace GelMPM
 
   namespace
   {
+    /**
+     * What a family's merge needs of one member @p point: its id, its position and its
+     * properties, in this order.
+     */
+    template <int dim, typename Iterator>
+    std::vector<double>
+    family_member(const Iterator &point)
+    {
+      const auto          properties = point->get_properties();
+      std::vector<double> member{static_cast<double>(point->get_id())};
+      const auto          position = position_of(point->get_location(), properties);
+      for (unsigned int d = 0; d < dim; ++d)
+        member.push_back(position[d]);
+      member.insert(member.end(), properties.begin(), properties.end());
+      return member;
+    }
+
+
     /**
      * A unit tangent of the facet with unit normal @p n in 3D: the coordinate axis most nearly
      * in the facet, projected onto it (the first such axis on a tie).
@@ -372,31 +393,67 @@ namespace GelMPM
           continue;
         families[parent_key<dim>(properties, grid, points_per_cell)].push_back(particle);
       }
+    // A family whose points lie on several ranks (siblings on either side of the partition) is
+    // merged from what every rank holds of it: the same merged point as on one rank, instead
+    // of siblings that wait until they share a rank. Each member is sent as its id, position
+    // and properties; the members are taken in the order of their ids on every partition, so
+    // that the sums are added alike and the member of the smallest id keeps the merged point.
+    const MPI_Comm communicator = triangulation.get_communicator();
+    std::map<std::vector<long>, std::vector<std::vector<double>>> spread;
+    if (dealii::Utilities::MPI::n_mpi_processes(communicator) > 1)
+      {
+        std::vector<std::pair<std::vector<long>, std::vector<double>>> partial;
+        for (const auto &[key, members] : families)
+          if (members.size() < (1u << dim))
+            for (const auto &member : members)
+              partial.emplace_back(key, family_member<dim>(member));
+        for (auto &rank : dealii::Utilities::MPI::all_gather(communicator, partial))
+          for (auto &[key, member] : rank)
+            spread[key].push_back(std::move(member));
+      }
     std::vector<Iterator> removed;
     for (auto &[key, members] : families)
       {
-        // Only a whole family, all of whose points lie in leaves coarser than their spacing, on
-        // this rank.
-        if (members.size() != (1u << dim))
+        std::vector<std::vector<double>> gathered;
+        if (members.size() == (1u << dim))
+          for (const auto &member : members)
+            gathered.push_back(family_member<dim>(member));
+        else if (const auto found = spread.find(key);
+                 found != spread.end() && found->second.size() == (1u << dim))
+          gathered = found->second;
+        // Only a whole family, all of whose points lie in leaves coarser than their spacing.
+        if (gathered.empty())
           continue;
+        std::sort(gathered.begin(), gathered.end());
+        std::sort(members.begin(), members.end(), [](const Iterator &a, const Iterator &b) {
+          return a->get_id() < b->get_id();
+        });
         std::vector<std::vector<double>> children;
         std::vector<dealii::Point<dim>>  positions;
-        for (const auto &member : members)
+        for (const auto &member : gathered)
           {
-            const auto properties = member->get_properties();
-            children.emplace_back(properties.begin(), properties.end());
-            positions.push_back(position_of(member->get_location(), properties));
+            dealii::Point<dim> position;
+            for (unsigned int d = 0; d < dim; ++d)
+              position[d] = member[1 + d];
+            positions.push_back(position);
+            children.emplace_back(member.begin() + 1 + dim, member.end());
           }
-        dealii::Point<dim> x;
-        const auto         merged = merged_properties<dim>(children, positions, grid, regions, x);
-        auto               first  = members[0];
-        std::copy(merged.begin(), merged.end(), first->get_properties().begin());
-        dealii::Point<dim> location = x;
-        for (unsigned int d = 0; d < dim; ++d)
-          location[d] -= merged[Layout<dim>::edge_offset + d];
-        first->set_location(location);
-        first->set_reference_location(reference_in<dim>(first->get_surrounding_cell(), location));
-        removed.insert(removed.end(), members.begin() + 1, members.end());
+        const bool keeper_here = static_cast<double>(members[0]->get_id()) == gathered[0][0];
+        if (keeper_here)
+          {
+            dealii::Point<dim> x;
+            const auto merged = merged_properties<dim>(children, positions, grid, regions, x);
+            auto       first  = members[0];
+            std::copy(merged.begin(), merged.end(), first->get_properties().begin());
+            dealii::Point<dim> location = x;
+            for (unsigned int d = 0; d < dim; ++d)
+              location[d] -= merged[Layout<dim>::edge_offset + d];
+            // The merged point may lie in a cell of another rank: sort_into_cells() hands it on.
+            first->set_location(location);
+            first->set_reference_location(
+              reference_in<dim>(first->get_surrounding_cell(), location));
+          }
+        removed.insert(removed.end(), members.begin() + (keeper_here ? 1 : 0), members.end());
       }
     particles.remove_particles(removed);
     const auto total = dealii::Utilities::MPI::sum(static_cast<unsigned long>(removed.size()),

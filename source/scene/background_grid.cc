@@ -136,20 +136,21 @@ namespace GelMPM
                       "and area is that of the revolved body (2 pi R), and u_r = 0 on the axis. "
                       "The grid's 'Lower corner' must then have x = 0: its left edge is the axis "
                       "(doc/axisymmetric.md).");
-    prm.declare_entry("Refinement boxes",
-                      "",
-                      Patterns::Anything(),
-                      "Boxes where the background grid is refined, each 'lower corner : upper "
-                      "corner' (coordinates separated by commas), boxes separated by ';', e.g. "
-                      "'0, 0.75 : 0.2, 1.05'. Every cell pair (cell size 2h, the chemical "
-                      "potential's grid with subdivision) that overlaps a box is halved, "
-                      "'Refinement levels' times; the displacement grid is halved with it, so that "
-                      "mu stays one level coarser than u (truncated hierarchical B-splines, "
-                      "doc/architecture.md). Volume and surface points are as many per cell at "
-                      "every level, and the penalties take each leaf's h. 2D and 3D, with a direct "
-                      "solver ('automatic' keeps MUMPS), on one or several ranks. A box that "
-                      "meets the body's boundary must reach about 2(q+1) cells of its finest "
-                      "level into the body (the extension). Empty: the uniform grid.");
+    prm.declare_entry(
+      "Refinement boxes",
+      "",
+      Patterns::Anything(),
+      "Boxes where the background grid is refined, each 'lower corner : upper "
+      "corner' (coordinates separated by commas), boxes separated by ';', e.g. "
+      "'0, 0.75 : 0.2, 1.05'. Every cell pair (cell size 2h, the chemical "
+      "potential's grid with subdivision) that overlaps a box is halved, "
+      "'Refinement levels' times; the displacement grid is halved with it, so that "
+      "mu stays one level coarser than u (truncated hierarchical B-splines, "
+      "doc/architecture.md). Volume and surface points are as many per cell at "
+      "every level, and the penalties take each leaf's h. 2D and 3D, any linear "
+      "solver (Krylov with the algebraic multigrid), on one or several ranks. A box that "
+      "meets the body's boundary must reach about 2(q+1) cells of its finest "
+      "level into the body (the extension). Empty: the uniform grid.");
     prm.declare_entry("Refinement region",
                       "",
                       Patterns::Anything(),

@@ -130,9 +130,10 @@ namespace GelMPM
       {
         std::vector<NestedBSplineLevel> levels;
         // On several ranks the iterative solver has the algebraic multigrid only; so has a step
-        // whose faces have copies of functions, which the grids' levels do not know.
+        // whose faces have copies of functions, and a locally refined grid: the uniform grids'
+        // levels know neither the copies nor the hierarchy's leaves.
         if (linear_solver.geometric_multigrid() && !Collective::is_parallel(scene.communicator) &&
-            scene.spaces->u_copies().empty())
+            scene.spaces->u_copies().empty() && !scene.spaces->refined())
           {
             // The 1D refinement operators are fixed with the grid: computed once per space.
             if (!nested_grids || &nested_grids->fine_space() != &scene.spaces->u_space())

@@ -80,7 +80,6 @@ namespace GelMPM
     for (auto &obstacle : obstacles)
       obstacle.check_inside_grid(grid.lower, grid.upper);
     check_points_per_cell();
-    check_refinement_supported(prm);
     band_pieces = band_piece_indices();
   }
 
@@ -245,26 +244,6 @@ namespace GelMPM
     merge_points_to_leaves(particles, grid, regions, generator.points_per_cell, *triangulation);
     split_points_to_leaves(particles, grid, regions, generator.points_per_cell, *triangulation);
     return changed;
-  }
-
-
-  template <int dim>
-  void
-  Scene<dim>::check_refinement_supported(dealii::ParameterHandler &prm) const
-  {
-    if (!grid.refined())
-      return;
-    prm.enter_subsection("Linear solver");
-    const std::string solver = prm.get("Solver");
-    prm.leave_subsection();
-    // 'automatic' keeps MUMPS there (LinearSolver::allow_krylov()).
-    const std::string refining = "'" + grid.refinement_entry() + "'";
-    require(solver != "Krylov",
-            "Linear solver/Solver",
-            "is 'Krylov' with " + refining +
-              ", but the refined grid runs with a direct solver only (the Krylov solver's "
-              "geometric multigrid does not know the levels yet)",
-            "set 'Solver = automatic' or 'MUMPS' (or KLU), or remove " + refining);
   }
 
 

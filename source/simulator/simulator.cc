@@ -61,7 +61,6 @@ namespace GelMPM
     linear_solver.parse_parameters(prm);
     // The symmetric Nitsche variant keeps the tangent symmetric (NitscheSettings): LDL^T.
     linear_solver.set_symmetric(scene.nitsche.symmetry > 0.);
-    linear_solver.allow_krylov(!scene.grid.refined());
     linear_solver.keep_factorized_values(checkpointer.enabled());
     newton.parse_parameters(prm);
     time_stepping.parse_parameters(prm);

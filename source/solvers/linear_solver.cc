@@ -119,7 +119,8 @@ namespace GelMPM
       "size 2h, 4h, ... (while the cell counts are even), Galerkin coarse "
       "operators, overlapping Schwarz smoothing on cell blocks, the coarsest "
       "level factorised (BSplineMultigrid); algebraic where the grid has no "
-      "coarser level and on several MPI ranks. algebraic: smoothed aggregation "
+      "coarser level, on a locally refined grid and on several MPI ranks. "
+      "algebraic: smoothed aggregation "
       "(Trilinos ML) with the rigid-body modes. doc/performance.md, 'Iterative solver', has the "
       "iteration counts of both.");
     prm.declare_entry("Schur complement",
@@ -261,14 +262,7 @@ namespace GelMPM
   bool
   LinearSolver::may_iterate() const
   {
-    return iterative() || (!decided && krylov_allowed);
-  }
-
-
-  void
-  LinearSolver::allow_krylov(const bool allowed)
-  {
-    krylov_allowed = allowed;
+    return iterative() || !decided;
   }
 
 
@@ -299,13 +293,11 @@ namespace GelMPM
         precision = SymmetricFactorization::Precision::single_precision;
         choice    = "MUMPS in single precision: " + why.str() + "; half of it fits";
       }
-    else if (available > 0. && estimate > limit && krylov_allowed)
+    else if (available > 0. && estimate > limit)
       {
         solver_type = "Krylov";
         choice      = "Krylov: " + why.str();
       }
-    else if (available > 0. && estimate > limit)
-      choice = "MUMPS, the only solver of a refined grid: " + why.str();
     else
       choice = "MUMPS: " + why.str();
   }

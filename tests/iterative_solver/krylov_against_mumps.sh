@@ -15,6 +15,11 @@
 #   diagonal') still agrees with MUMPS, in at most 42 (measured 35.3);
 # - 3D, 2 steps of the free-swelling cube (prm/free_swelling_cube.prm) at 14^3 cells: the AMG
 #   with six rigid-body modes;
+# - a locally refined grid (prm/constrained_swelling_front.prm: the cells of the mu front halved,
+#   marked anew every step), 10 steps of 0.01 tau_d with 4 points per cell: the leaves' points
+#   split where the front arrives and merge where it leaves (the points' count must rise and fall),
+#   so the pattern and the AMG's unknowns change from step to step; the geometric multigrid asked
+#   for, the algebraic one taken (the uniform grids' levels do not know the leaves);
 # (tests/mpi/krylov.sh compares Krylov on two MPI ranks with one).
 # Same arguments as the MPI tests (gelmpm, compare tool, mpiexec, source directory).
 source "$(dirname "${BASH_SOURCE[0]}")/../mpi/common.sh"
@@ -53,6 +58,15 @@ check $? "undrained, diagonal: Krylov and MUMPS statistics agree ($(tail -1 undr
 per_solve=$(grep -o "([0-9.e+-]* per solve)" undrained_diagonal.log | tr -d '(' | awk '{print $1}')
 awk -v p="${per_solve:-1e9}" 'BEGIN { exit !(p <= 42) }'
 check $? "undrained limit, diagonal: ${per_solve:-no} Krylov iterations per solve (at most 42)"
+fixed_steps 0.01 10
+run front constrained_swelling_front.prm "${steps[@]}" --set "Time stepping/Tolerance=0" \
+  --set "Material points/Points per cell=4" \
+  --set "Linear solver/Displacement preconditioner=geometric"
+grep -q "Krylov iterations in .*displacement block by algebraic multigrid" front_Krylov.log
+check $? "refined grid: the displacement block by the algebraic multigrid"
+points() { statistic front_Krylov/statistics.csv n_particles "$1"; }
+[[ $(points 4) -gt $(points 2) && $(points 10) -lt $(points 4) ]]
+check $? "refined grid: points split and merged ($(points 2), $(points 4), $(points 10))"
 fixed_steps 0.01 2
 run cube free_swelling_cube.prm "${steps[@]}" --set "Background grid/Cells=14, 14, 14" \
   --set "Time stepping/Tolerance=0"

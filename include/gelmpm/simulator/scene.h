@@ -248,14 +248,6 @@ namespace GelMPM
     check_points_per_cell() const;
 
     /**
-     * Throw InputError naming the entry when a refined grid ('Background grid/Refinement boxes')
-     * meets what the refined path does not run yet: several ranks, the Krylov solver,
-     * checkpoints, the stability analysis.
-     */
-    void
-    check_refinement_supported(dealii::ParameterHandler &prm) const;
-
-    /**
      * Up to 64 surface points spread over each boundary piece (their X_0), the same on every
      * rank.
      */

@@ -67,14 +67,6 @@ namespace GelMPM
     set_symmetric(const bool symmetric);
 
     /**
-     * Whether 'automatic' may choose the Krylov solver: not on a locally refined grid, whose
-     * levels its geometric multigrid does not know; there it keeps MUMPS whatever its estimate
-     * (and says so).
-     */
-    void
-    allow_krylov(const bool allowed);
-
-    /**
      * The sparsity pattern of the next matrix differs: forget the symbolic factorisation. Call it
      * before the matrix last solved with is destroyed or re-initialised (MUMPS refers to it when
      * its factorisation is released), and before the solver's owner destroys that matrix.
@@ -255,11 +247,10 @@ namespace GelMPM
     void
     decide(const dealii::TrilinosWrappers::SparseMatrix &K) const;
 
-    mutable std::string solver_type    = "Amesos_Mumps";
-    bool                automatic      = false;
-    bool                krylov_allowed = true;
-    mutable bool        decided        = true;
-    double              memory_share   = 0.5;
+    mutable std::string solver_type  = "Amesos_Mumps";
+    bool                automatic    = false;
+    mutable bool        decided      = true;
+    double              memory_share = 0.5;
     // The fill-reducing ordering of MUMPS's LDL^T analyses.
     SymmetricFactorization::Ordering ordering = SymmetricFactorization::Ordering::fewest_flops;
     mutable std::string              choice;
