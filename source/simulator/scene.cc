@@ -68,12 +68,14 @@ namespace GelMPM
                 "': both would write the statistics columns " + name +
                 "_force_x, ..., and the piece's force would be lost",
               "give the obstacle a name of its own, e.g. '" + name + "_obstacle'");
-    require(!contact.self_contact.enabled() ||
+    require(!contact.self_contact.enabled() || !contact.self_contact.separate_faces ||
               dealii::Utilities::MPI::n_mpi_processes(communicator) == 1,
-            "Contact/Self contact/Method",
-            "is penalty in a run on several MPI ranks, but the pairs of points and segments are "
-            "found on one rank only for now",
-            "run on one rank, or set 'Method = none'");
+            "Contact/Self contact/Separate faces",
+            "is true in a run on several MPI ranks, but the faces' copies of the grid's functions "
+            "are found on one rank only for now (the pairs of points and segments work on "
+            "several)",
+            "run on one rank, or set 'Separate faces = false' (faces that share cells then stay "
+            "tied)");
     if (contact.self_contact.enabled())
       self_contact_pieces(contact.self_contact, boundary_conditions);
     obstacles = parse_obstacles<dim>(prm, obstacle_names);

@@ -184,6 +184,13 @@ namespace GelMPM
       return points_;
     }
 
+    /** The ranks over which the points are distributed. */
+    MPI_Comm
+    get_communicator() const
+    {
+      return communicator;
+    }
+
     /** The particle of record @p p (to update it at the end of the step). */
     particle_iterator
     particle(const unsigned int p) const

@@ -71,7 +71,14 @@ namespace GelMPM
    * seen from both sides (the points of each face against the segments of the other).
    *
    * Its per-point assemble() adds nothing: what it adds goes beyond the blocks. Not in a scene's
-   * list when the subsection is off. One MPI rank, 2D only (Scene refuses the rest).
+   * list when the subsection is off. 2D only (Scene refuses 3D).
+   *
+   * On several MPI ranks the chosen surface points of every rank are gathered at each setup
+   * (Sample: what a pair needs of a point, its unknowns and shape values included), in the order
+   * of their particle ids, so that every rank finds the same pairs, active sets and statistics
+   * from the whole Newton vector it holds; a pair is assembled (and its cells coupled) by the rank
+   * that holds its point. The faces' copies of functions ('Separate faces') are found on one rank
+   * only: Scene refuses them on several.
    */
   template <int dim>
   class SelfContactAssembler final : public SurfaceTermAssembler<dim>
@@ -156,11 +163,33 @@ namespace GelMPM
     n_pairs() const;
 
   private:
-    /** A point (its record) and a segment (the records of its ends, in the polyline's order). */
+    /** What the pairs need of a surface point of the chosen pieces at the step's setup. */
+    struct Sample
+    {
+      /** The particle's id: the order of the samples on every partition. */
+      double id = 0.;
+      /** X_0 and N_0 A_0 (the polylines' order), x_n (with the edge offset), unit N_n. */
+      dealii::Point<2>     X0, x;
+      dealii::Tensor<1, 2> normal_area_0, normal;
+      /** A_n and beta_s. */
+      double measure = 0., penalty = 0.;
+      /** The u cell of its block, its u functions (DoF indices) and their values there. */
+      unsigned int              u_cell = 0;
+      std::vector<unsigned int> dofs;
+      std::vector<double>       N;
+      /** Whether this rank holds the point (and assembles its pairs). */
+      bool here = true;
+    };
+
+    /** A point and a segment (the samples of its ends, in the polyline's order). */
     struct Pair
     {
       unsigned int point, a, b;
     };
+
+    /** The samples of the chosen points of @p cache, of every rank. */
+    std::vector<Sample>
+    gather_samples(const PointCache<dim> &cache) const;
 
     /** The ties of the weak copies (CopyTie), at @p solution. */
     void
@@ -170,23 +199,19 @@ namespace GelMPM
                        std::vector<AssemblyCopy>    &copies) const;
 
     /**
-     * The pairs of the points of @p cache at x_n, or (with @p solution) at the end of the step,
-     * where a point counts however far behind the surface it lies.
+     * The pairs of the samples at x_n, or (with @p solution) at the end of the step, where a
+     * point counts however far behind the surface it lies.
      */
     std::vector<Pair>
-    find_pairs(const PointCache<dim>        &cache,
-               const dealii::Vector<double> *solution = nullptr) const;
+    find_pairs(const dealii::Vector<double> *solution = nullptr) const;
 
-    /** The current position x_n + du of record @p p for @p solution. */
-    dealii::Point<dim>
-    current_position(const PointCache<dim>        &cache,
-                     const unsigned int            p,
-                     const dealii::Vector<double> &solution) const;
+    /** The current position x_n + du of sample @p p for @p solution. */
+    dealii::Point<2>
+    current_position(const unsigned int p, const dealii::Vector<double> &solution) const;
 
-    /** Per pair, its gap at @p solution; per point, the index of its active pair (or -1). */
+    /** Per pair, its gap at @p solution; the indices of the active pairs, one per point. */
     std::vector<int>
-    active_pairs(const PointCache<dim>        &cache,
-                 const dealii::Vector<double> &solution,
+    active_pairs(const dealii::Vector<double> &solution,
                  std::vector<PointSegmentGap> &gaps,
                  const bool                    use_held = true) const;
 
@@ -197,6 +222,8 @@ namespace GelMPM
     SelfContactSettings settings;
     /** Per piece, whether its points take part. */
     std::vector<bool> chosen;
+    /** The chosen surface points of every rank at the step's setup, by id. */
+    mutable std::vector<Sample> samples_;
     /** The pairs of the step, sorted by point (found at setup, where the couplings are asked:
      * they are the couplings). */
     mutable std::vector<Pair> pairs_;
