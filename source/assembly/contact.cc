@@ -161,6 +161,22 @@ namespace GelMPM
 
 
   template <int dim>
+  std::int64_t
+  ContactAssembler<dim>::active_rigid(const PointRecord<dim> &point,
+                                      const Tensor<1, dim>   &du,
+                                      const Tensor<2, dim>   &delta_F,
+                                      const double            mu) const
+  {
+    std::int64_t active = 0;
+    if (applies(point))
+      for (unsigned int k = 0; k < n_rigid_obstacles(); ++k)
+        if (state(index_of_rigid(k), point, du, delta_F, mu).first)
+          active |= std::int64_t(1) << k;
+    return active;
+  }
+
+
+  template <int dim>
   bool
   ContactAssembler<dim>::seals(const PointRecord<dim> &point,
                                const Tensor<1, dim>   &du,
@@ -215,7 +231,8 @@ namespace GelMPM
                                       const Tensor<1, dim>   &traction,
                                       const bool              with_matrix,
                                       AssemblyScratch<dim>   &s,
-                                      AssemblyCopy           &copy) const
+                                      AssemblyCopy           &copy,
+                                      const int               held) const
   {
     const auto gap = obstacle.gap(position(point, s.du_at_point));
     if (!gap.possible)
@@ -227,7 +244,7 @@ namespace GelMPM
       {
         // Nitsche's active set: the augmented normal traction sigma_n - f beta g < 0.
         const double sigma_n = n * traction;
-        if (contact.active_set_factor * beta * g - sigma_n > 0.)
+        if (held >= 0 ? held == 1 : contact.active_set_factor * beta * g - sigma_n > 0.)
           {
             add_displacement_nitsche(point,
                                      outer(n, n),
@@ -250,7 +267,7 @@ namespace GelMPM
           }
         return;
       }
-    if (g <= 0.)
+    if (held >= 0 ? held == 0 : g <= 0.)
       return;
     // R_u[w] += A beta g m . w; its derivative A beta (m (x) m + g dm/dx). The components of m
     // that are zero (a plane along an axis) are skipped, so that a grid side adds what it
@@ -303,7 +320,8 @@ namespace GelMPM
   {
     if (!applies(point))
       return;
-    add_obstacle(obstacle(k), point, nitsche_traction(point, s), with_matrix, s, copy);
+    const int held = k < sides.size() ? -1 : held_state(point, k - sides.size());
+    add_obstacle(obstacle(k), point, nitsche_traction(point, s), with_matrix, s, copy, held);
   }
 
 
@@ -322,8 +340,8 @@ namespace GelMPM
     for (const auto &side : sides)
       add_obstacle(side, point, traction, with_matrix, s, copy);
     if (rigid != nullptr)
-      for (const auto &obstacle : *rigid)
-        add_obstacle(obstacle, point, traction, with_matrix, s, copy);
+      for (unsigned int k = 0; k < rigid->size(); ++k)
+        add_obstacle((*rigid)[k], point, traction, with_matrix, s, copy, held_state(point, k));
   }
 
 

@@ -93,6 +93,12 @@ namespace GelMPM
                 "names '" + *side + "' twice",
                 "list each side once");
       }
+    // PointRecord::contact_held holds one bit per rigid obstacle.
+    require(obstacles.size() <= 63,
+            "Contact/Obstacles",
+            "names " + std::to_string(obstacles.size()) +
+              " obstacles, more than the 63 a run holds",
+            "join obstacles of one shape into fewer, or split the scene");
     require(penalty > 0., "Contact/Penalty", "must be positive", "give gamma_c > 0 (e.g. 1000)");
     require(active_set_factor > 0.,
             "Contact/Active set factor",

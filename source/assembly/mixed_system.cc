@@ -265,6 +265,18 @@ namespace GelMPM
           if (hold)
             r.seal = seal;
         }
+    // The rigid obstacles' active sets (a grid side's plane is not held).
+    if (terms.contact() != nullptr && terms.contact()->n_rigid_obstacles() > 0)
+      for (auto &r : cache.points())
+        {
+          if (r.kind == PointKind::volume || !terms.contact()->applies(r))
+            continue;
+          const auto [du, delta_F, mu] = cache.fields_at(r, solution);
+          const auto active            = terms.contact()->active_rigid(r, du, delta_F, mu);
+          changed += r.contact_held >= 0 && r.contact_held != active;
+          if (hold)
+            r.contact_held = active;
+        }
     // Self-contact is 2D only (its assembler exists for dim = 2).
     if constexpr (dim == 2)
       if (const auto *self = terms.self_contact())
@@ -281,7 +293,10 @@ namespace GelMPM
       if (const auto *self = terms.self_contact())
         self->release_active_pairs();
     for (auto &r : cache.points())
-      r.seal = -1;
+      {
+        r.seal         = -1;
+        r.contact_held = -1;
+      }
   }
 
 

@@ -95,7 +95,8 @@ namespace GelMPM
       "4",
       dealii::Patterns::Integer(0),
       "Iterations after which the switches that make the residual jump (an impermeable "
-      "obstacle sealing the bath condition where it touches) are held at the iterate's values "
+      "obstacle sealing the bath condition where it touches, the points in contact with a "
+      "rigid obstacle, the self-contact's active pairs) are held at the iterate's values "
       "instead of following it, and updated only at a converged state until they settle: "
       "semi-smooth Newton can otherwise cycle without end at a point on the contact edge. The "
       "converged state is the same (its switches are its own); 0: always follow the iterate "

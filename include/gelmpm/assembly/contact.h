@@ -5,6 +5,7 @@
 #include <gelmpm/assembly/point_assembler.h>
 #include <gelmpm/scene/obstacle.h>
 
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -22,7 +23,10 @@ namespace GelMPM
    * - or by Nitsche's method: the terms of a roller on the obstacle's surface
    *   (add_displacement_nitsche() with Pi = m (x) m, g m and beta_c) where f beta_c g -
    *   m . (P_n N) > 0, Nitsche's active set (f = 'Active set factor', 1: the augmented one).
-   * The active set is that of the Newton iterate (semi-smooth Newton). The obstacles are summed
+   * The active set is that of the Newton iterate (semi-smooth Newton); for the rigid obstacles
+   * that of an earlier iterate where Newton holds it (PointRecord::contact_held, active_rigid(),
+   * MixedSystem::freeze_switches()): at a rounded edge points slide into and out of contact
+   * from one iterate to the next, and the residual jumps with them. The obstacles are summed
    * in their order, the grid sides first. The grid sides are the term's own; the rigid obstacles
    * are the scene's (Scene::obstacles), which the term reads where they are and does not copy:
    * their owner moves them (MixedSystem::set_boundary_values()). Off (nothing added) until
@@ -102,6 +106,16 @@ namespace GelMPM
                         const dealii::Tensor<2, dim> &delta_F,
                         const double                  mu) const;
 
+    /**
+     * The rigid obstacles in active contact with @p point for the fields @p du, @p delta_F and
+     * @p mu at it, bit k for the rigid obstacle k (the iterate's active set; at most 63).
+     */
+    std::int64_t
+    active_rigid(const PointRecord<dim>       &point,
+                 const dealii::Tensor<1, dim> &du,
+                 const dealii::Tensor<2, dim> &delta_F,
+                 const double                  mu) const;
+
     /** Whether some rigid obstacle is impermeable (seals the points it touches). */
     bool
     seals_anywhere() const
@@ -148,14 +162,25 @@ namespace GelMPM
     dealii::Tensor<1, dim>
     nitsche_traction(const PointRecord<dim> &point, const AssemblyScratch<dim> &scratch) const;
 
-    /** The terms of @p obstacle at @p point, with the point's traction P_n N (Nitsche). */
+    /**
+     * The terms of @p obstacle at @p point, with the point's traction P_n N (Nitsche); @p held:
+     * whether it is active as held for Newton's iterations (1, 0), or -1 as the iterate says.
+     */
     void
     add_obstacle(const Obstacle<dim>          &obstacle,
                  const PointRecord<dim>       &point,
                  const dealii::Tensor<1, dim> &traction,
                  const bool                    with_matrix,
                  AssemblyScratch<dim>         &scratch,
-                 AssemblyCopy                 &copy) const;
+                 AssemblyCopy                 &copy,
+                 const int                     held = -1) const;
+
+    /** For add_obstacle(): the held state of the rigid obstacle @p k at @p point, or -1. */
+    static int
+    held_state(const PointRecord<dim> &point, const unsigned int k)
+    {
+      return point.contact_held < 0 ? -1 : static_cast<int>((point.contact_held >> k) & 1);
+    }
 
     /** The contact penalty beta_c at @p point. */
     double

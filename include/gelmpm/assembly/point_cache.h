@@ -15,6 +15,7 @@
 #include <deal.II/lac/vector.h>
 #include <deal.II/particles/particle_handler.h>
 
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <optional>
@@ -80,6 +81,9 @@ namespace GelMPM
     // An impermeable obstacle's seal of the bath condition held over Newton iterations
     // (MixedSystem::freeze_switches()): 1 sealed, 0 open; -1 that of the iterate.
     signed char seal = -1;
+    // The rigid obstacles in active contact with the point, held over Newton iterations
+    // likewise: bit k for the rigid obstacle k; -1 that of the iterate.
+    std::int64_t contact_held = -1;
 
     /** Whether the point belongs to an axisymmetric scene (its measure includes 2 pi r_n). */
     bool
