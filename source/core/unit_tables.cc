@@ -27,6 +27,8 @@ namespace GelMPM
         {"Background grid/Refinement boxes", Q::length},
         {"Background grid/Refinement band", Q::length},
         {"Background grid/Refinement band pieces", Q::none},
+        {"Background grid/Refinement obstacle band", Q::length},
+        {"Background grid/Refinement obstacles", Q::none},
         {"Background grid/Refinement mu range", Q::chemical_potential},
         {"Background grid/Refinement material region", Q::none, Form::level_set},
         {"Background grid/Refinement levels", Q::none},

@@ -176,6 +176,21 @@ namespace GelMPM
                       "surface\"). The band must reach about 2(q+1) cells of its finest level "
                       "into the body (the extension). Combined with the boxes and the region. "
                       "A length in the scene's units; 0: none.");
+    prm.declare_entry("Refinement obstacle band",
+                      "0",
+                      Patterns::Double(0.),
+                      "Refine the grid within this distance of the current surfaces of the "
+                      "rigid obstacles ('Contact/Obstacles', or those of 'Refinement "
+                      "obstacles'), marked anew at the start of every step with q + 2 cells of "
+                      "each level round the marked ones, so that the refined cells follow a "
+                      "moving indenter, gripper or wall and hold the edge of its contact with "
+                      "the gel. Points are split and merged as for 'Refinement band'. Combined "
+                      "with the other entries. A length in the scene's units; 0: none.");
+    prm.declare_entry("Refinement obstacles",
+                      "",
+                      Patterns::Anything(),
+                      "The rigid obstacles ('Contact/Obstacles', comma-separated) that "
+                      "'Refinement obstacle band' follows. Empty: every one.");
     prm.declare_entry("Refinement band pieces",
                       "",
                       Patterns::Anything(),
@@ -240,8 +255,10 @@ namespace GelMPM
     refinement_levels                 = prm.get_integer("Refinement levels");
     refinement_band                   = prm.get_double("Refinement band");
     refinement_mu_range               = prm.get_double("Refinement mu range");
-    refinement_budget                 = prm.get_integer("Refinement budget");
-    moving_levels                     = refinement_levels;
+    obstacle_band                     = prm.get_double("Refinement obstacle band");
+    band_obstacle_names = dealii::Utilities::split_string_list(prm.get("Refinement obstacles"));
+    refinement_budget   = prm.get_integer("Refinement budget");
+    moving_levels       = refinement_levels;
     const std::string material_text =
       dealii::Utilities::trim(prm.get("Refinement material region"));
     band_piece_names = dealii::Utilities::split_string_list(prm.get("Refinement band pieces"));
@@ -278,6 +295,10 @@ namespace GelMPM
             "Background grid/Refinement band pieces",
             "names pieces but 'Refinement band' is 0",
             "give the band's width in 'Refinement band', or leave the pieces empty");
+    require(obstacle_band > 0. || band_obstacle_names.empty(),
+            "Background grid/Refinement obstacles",
+            "names obstacles but 'Refinement obstacle band' is 0",
+            "give the band's width in 'Refinement obstacle band', or leave the obstacles empty");
     if (refinement_boxes.empty() && refinement_region == nullptr && !moves())
       refinement_levels = 0;
     if (!refined())
@@ -447,7 +468,27 @@ namespace GelMPM
   bool
   BackgroundGrid<dim>::moves() const
   {
-    return refinement_band > 0. || refinement_mu_range > 0. || material_region != nullptr;
+    return refinement_band > 0. || refinement_mu_range > 0. || material_region != nullptr ||
+           obstacle_band > 0.;
+  }
+
+
+  template <int dim>
+  std::pair<dealii::Point<dim>, double>
+  BackgroundGrid<dim>::pair_cell_centre(const unsigned int level, const unsigned int c) const
+  {
+    const auto         n    = pair_cells(level);
+    unsigned int       rest = c;
+    dealii::Point<dim> centre;
+    double             half_diagonal = 0.;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        const double h = (upper[d] - lower[d]) / n[d];
+        centre[d]      = lower[d] + (rest % n[d] + 0.5) * h;
+        rest /= n[d];
+        half_diagonal += 0.25 * h * h;
+      }
+    return {centre, std::sqrt(half_diagonal)};
   }
 
 
@@ -478,6 +519,8 @@ namespace GelMPM
       return "Background grid/Refinement region";
     if (refinement_band > 0.)
       return "Background grid/Refinement band";
+    if (obstacle_band > 0.)
+      return "Background grid/Refinement obstacle band";
     return refinement_mu_range > 0. ? "Background grid/Refinement mu range"
                                     : "Background grid/Refinement material region";
   }

@@ -82,7 +82,8 @@ namespace GelMPM
     for (auto &obstacle : obstacles)
       obstacle.check_inside_grid(grid.lower, grid.upper);
     check_points_per_cell();
-    band_pieces = band_piece_indices();
+    band_pieces    = band_piece_indices();
+    band_obstacles = band_obstacle_indices();
   }
 
 
@@ -104,6 +105,57 @@ namespace GelMPM
         indices.push_back(index);
       }
     return indices;
+  }
+
+
+  template <int dim>
+  std::vector<unsigned int>
+  Scene<dim>::band_obstacle_indices() const
+  {
+    std::vector<unsigned int> indices;
+    if (!(grid.obstacle_band > 0.))
+      return indices;
+    require(!obstacles.empty(),
+            "Background grid/Refinement obstacle band",
+            "is set, but the scene has no rigid obstacle ('Contact/Obstacles' is empty)",
+            "name the obstacles in 'Contact/Obstacles', or set the band to 0");
+    for (unsigned int k = 0; k < obstacles.size(); ++k)
+      if (grid.band_obstacle_names.empty())
+        indices.push_back(k);
+    for (const auto &name : grid.band_obstacle_names)
+      {
+        unsigned int k = 0;
+        while (k < obstacles.size() && obstacles[k].name != name)
+          ++k;
+        require(k < obstacles.size(),
+                "Background grid/Refinement obstacles",
+                "names '" + name + "', which is no obstacle of 'Contact/Obstacles'",
+                "name obstacles listed in 'Contact/Obstacles', or leave it empty (every one)");
+        indices.push_back(k);
+      }
+    return indices;
+  }
+
+
+  template <int dim>
+  void
+  Scene<dim>::flag_obstacle_band(std::vector<std::vector<bool>> &flagged) const
+  {
+    // A cell is flagged where the obstacle's surface passes within the band of its centre's
+    // distance, widened by half the cell's diagonal; |g| is that distance for planes, spheres
+    // and a punch's face and rounded edge, and a cell where no contact is possible is not
+    // flagged.
+    for (unsigned int l = 0; l < flagged.size(); ++l)
+      for (unsigned int c = 0; c < flagged[l].size(); ++c)
+        {
+          const auto [centre, half_diagonal] = grid.pair_cell_centre(l, c);
+          for (const unsigned int k : band_obstacles)
+            {
+              const auto gap = obstacles[k].gap(centre);
+              if (gap.possible && std::abs(gap.g) <= grid.obstacle_band + half_diagonal)
+                flagged[l][c] = true;
+            }
+        }
   }
 
 
@@ -137,11 +189,11 @@ namespace GelMPM
 
   template <int dim>
   std::vector<std::vector<bool>>
-  Scene<dim>::flagged_cells() const
+  Scene<dim>::flagged_cells(const double t)
   {
     std::vector<std::vector<bool>> flagged;
     const bool by_mu = grid.refinement_mu_range > 0., by_material = grid.material_region != nullptr;
-    if (!by_mu && !by_material)
+    if (!by_mu && !by_material && band_obstacles.empty())
       return flagged;
     using Layout = PropertyLayout<dim>;
     std::vector<std::vector<double>> lowest(grid.refinement_levels),
@@ -194,8 +246,16 @@ namespace GelMPM
           }
         flagged[l].assign(lowest[l].size(), false);
         for (unsigned int c = 0; c < flagged[l].size(); ++c)
-          flagged[l][c] =
-            material[l][c] > 0. || highest[l][c] - lowest[l][c] > grid.refinement_mu_range;
+          flagged[l][c] = material[l][c] > 0. ||
+                          (by_mu && highest[l][c] - lowest[l][c] > grid.refinement_mu_range);
+      }
+    if (!band_obstacles.empty())
+      {
+        // Where the obstacles are at the step's start, whatever the last attempt left them at:
+        // a resumed run marks as the uninterrupted one.
+        for (const unsigned int k : band_obstacles)
+          obstacles[k].set_time(t);
+        flag_obstacle_band(flagged);
       }
     return flagged;
   }
@@ -239,7 +299,7 @@ namespace GelMPM
     // q + 2 cells of a level round a front: as deep as the shallowest box that the extension
     // accepts at a boundary (§4.1's, 4 cells of its level for q = 2).
     const bool changed = grid.mark_moving(band_surface_points(),
-                                          flagged_cells(),
+                                          flagged_cells(t_begin),
                                           discretisation.chemical_potential_degree + 2);
     if (changed)
       spaces->rebuild_hierarchies(grid);

@@ -66,6 +66,13 @@ namespace GelMPM
      */
     double refinement_mu_range = 0.;
     /**
+     * 'Refinement obstacle band' (0: none) and 'Refinement obstacles' (empty: every rigid
+     * obstacle): the grid is refined within this distance of the obstacles' current surfaces,
+     * marked anew every step (Scene::flagged_cells()).
+     */
+    double                   obstacle_band = 0.;
+    std::vector<std::string> band_obstacle_names;
+    /**
      * 'Refinement material region' (null: none): a level set of the initial configuration; the
      * cells that hold a point whose X_0 lies in it are refined, marked anew every step.
      */
@@ -145,6 +152,11 @@ namespace GelMPM
     /** The cells per direction of the grid of pairs of cells at refinement level @p level. */
     std::array<unsigned int, dim>
     pair_cells(const unsigned int level) const;
+
+    /** The centre of the cell @p c of the grid of pairs at level @p level, and half its
+     * diagonal. */
+    std::pair<dealii::Point<dim>, double>
+    pair_cell_centre(const unsigned int level, const unsigned int c) const;
 
     /** The level of the leaf cell at @p x: how many times the grid is refined there. */
     unsigned int

@@ -222,18 +222,33 @@ namespace GelMPM
     band_surface_points() const;
 
     /**
+     * The indices in obstacles of 'Background grid/Refinement obstacles' (all of them if it is
+     * empty and 'Refinement obstacle band' is set); InputError on a name that is no obstacle.
+     */
+    std::vector<unsigned int>
+    band_obstacle_indices() const;
+
+    /**
      * Per level and cell of the grid of pairs, whether the mu of its points and the prescribed
-     * mu of its surface points span more than 'Refinement mu range', or one of its points starts
-     * in 'Refinement material region'; over all ranks (empty: neither is set).
+     * mu of its surface points span more than 'Refinement mu range', one of its points starts
+     * in 'Refinement material region', or it lies within 'Refinement obstacle band' of an
+     * obstacle's surface at @p t; over all ranks (empty: none of them is set).
      */
     std::vector<std::vector<bool>>
-    flagged_cells() const;
+    flagged_cells(const double t);
+
+    /** Flag the cells of each level within 'Refinement obstacle band' of band_obstacles. */
+    void
+    flag_obstacle_band(std::vector<std::vector<bool>> &flagged) const;
 
     /** The moving refinement's marking before the last update (keep_last_marking()). */
     std::vector<std::vector<bool>> last_marking;
 
     /** band_piece_indices(), read once (empty: every surface point). */
     std::vector<int> band_pieces;
+
+    /** band_obstacle_indices(), read once. */
+    std::vector<unsigned int> band_obstacles;
 
     /**
      * Throw the InputError of a grid on which the extended bases cannot be built (@p reason, the
