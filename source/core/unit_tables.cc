@@ -28,6 +28,7 @@ namespace GelMPM
         {"Background grid/Refinement band", Q::length},
         {"Background grid/Refinement band pieces", Q::none},
         {"Background grid/Refinement obstacle band", Q::length},
+        {"Background grid/Refinement moving region", Q::none, Form::moving_level_set},
         {"Background grid/Refinement obstacles", Q::none},
         {"Background grid/Refinement mu range", Q::chemical_potential},
         {"Background grid/Refinement material region", Q::none, Form::level_set},

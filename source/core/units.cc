@@ -354,6 +354,9 @@ namespace GelMPM
           case Form::level_set:
             return "an expression in x, y (, z) in the Length unit, only its sign matters; "
                    "converted by wrapping";
+          case Form::moving_level_set:
+            return "an expression in x, y (, z) in the Length unit and t in the Time unit, only "
+                   "its sign matters; converted by wrapping";
           case Form::holes:
             return "centres and radii are lengths (Length unit), an axis direction is not "
                    "converted";
@@ -728,6 +731,9 @@ namespace GelMPM
               break;
             case Form::level_set:
               converted = wrap_variables(entry.value, xyz, "");
+              break;
+            case Form::moving_level_set:
+              converted = wrap_variables(entry.value, xyz, "t");
               break;
             case Form::function:
               {

@@ -81,16 +81,19 @@ namespace GelMPM
      */
     template <int dim>
     std::shared_ptr<dealii::FunctionParser<dim>>
-    parse_level_set(const std::string &text, const std::string &entry)
+    parse_level_set(const std::string &text,
+                    const std::string &entry,
+                    const bool         time_dependent = false)
     {
       if (text.empty())
         return nullptr;
-      const std::string variables = dim == 2 ? "x,y" : "x,y,z";
-      auto              parser    = std::make_shared<dealii::FunctionParser<dim>>(1);
+      const std::string variables =
+        std::string(dim == 2 ? "x,y" : "x,y,z") + (time_dependent ? ",t" : "");
+      auto parser = std::make_shared<dealii::FunctionParser<dim>>(1);
       try
         {
           const QuietCerr quiet;
-          parser->initialize(variables, text, {});
+          parser->initialize(variables, text, {}, time_dependent);
           // The parser compiles lazily: evaluate once to surface syntax errors here.
           (void)parser->value(dealii::Point<dim>());
         }
@@ -176,6 +179,16 @@ namespace GelMPM
                       "surface\"). The band must reach about 2(q+1) cells of its finest level "
                       "into the body (the extension). Combined with the boxes and the region. "
                       "A length in the scene's units; 0: none.");
+    prm.declare_entry(
+      "Refinement moving region",
+      "",
+      Patterns::Anything(),
+      "Refine the grid where this expression in x, y (, z) and t is <= 0: a level set of "
+      "the current configuration that moves in time (e.g. 'abs(x - 0.5 - 0.1 * t) - 0.1' for a "
+      "strip that travels with a loading), evaluated at the start of every step at 5 points "
+      "per direction of each cell pair, corners included, with q + 2 cells of each level round "
+      "the marked ones. Points are split and merged as for 'Refinement band'. Combined with the "
+      "other entries. Empty: none.");
     prm.declare_entry("Refinement obstacle band",
                       "0",
                       Patterns::Double(0.),
@@ -256,6 +269,7 @@ namespace GelMPM
     refinement_band                   = prm.get_double("Refinement band");
     refinement_mu_range               = prm.get_double("Refinement mu range");
     obstacle_band                     = prm.get_double("Refinement obstacle band");
+    const std::string moving_text = dealii::Utilities::trim(prm.get("Refinement moving region"));
     band_obstacle_names = dealii::Utilities::split_string_list(prm.get("Refinement obstacles"));
     refinement_budget   = prm.get_integer("Refinement budget");
     moving_levels       = refinement_levels;
@@ -290,6 +304,8 @@ namespace GelMPM
     parse_refinement_region(region_text);
     material_region =
       parse_level_set<dim>(material_text, "Background grid/Refinement material region");
+    moving_region =
+      parse_level_set<dim>(moving_text, "Background grid/Refinement moving region", true);
     moving_marked.clear();
     require(refinement_band > 0. || band_piece_names.empty(),
             "Background grid/Refinement band pieces",
@@ -469,7 +485,47 @@ namespace GelMPM
   BackgroundGrid<dim>::moves() const
   {
     return refinement_band > 0. || refinement_mu_range > 0. || material_region != nullptr ||
-           obstacle_band > 0.;
+           obstacle_band > 0. || moving_region != nullptr;
+  }
+
+
+  template <int dim>
+  std::vector<bool>
+  BackgroundGrid<dim>::moving_region_cells(const unsigned int level, const double t) const
+  {
+    const auto   n         = pair_cells(level);
+    unsigned int n_total   = 1;
+    unsigned int n_samples = 1;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        n_total *= n[d];
+        n_samples *= region_samples;
+      }
+    std::vector<bool> marked(n_total, false);
+    moving_region->set_time(t);
+    for (unsigned int c = 0; c < n_total; ++c)
+      for (unsigned int s = 0; s < n_samples && !marked[c]; ++s)
+        {
+          dealii::Point<dim> x;
+          unsigned int       rest = c, rest_s = s;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              const double h = (upper[d] - lower[d]) / n[d];
+              x[d]           = lower[d] +
+                     (rest % n[d] + double(rest_s % region_samples) / (region_samples - 1)) * h;
+              rest /= n[d];
+              rest_s /= region_samples;
+            }
+          const double value = moving_region->value(x);
+          if (!std::isfinite(value))
+            throw InputError("Background grid/Refinement moving region",
+                             "is not a number at " + format_point(x) +
+                               " at t = " + std::to_string(t),
+                             "write an expression that is finite in the whole background grid "
+                             "over the run");
+          marked[c] = value <= 0.;
+        }
+    return marked;
   }
 
 
@@ -521,6 +577,8 @@ namespace GelMPM
       return "Background grid/Refinement band";
     if (obstacle_band > 0.)
       return "Background grid/Refinement obstacle band";
+    if (moving_region != nullptr)
+      return "Background grid/Refinement moving region";
     return refinement_mu_range > 0. ? "Background grid/Refinement mu range"
                                     : "Background grid/Refinement material region";
   }
@@ -590,6 +648,26 @@ namespace GelMPM
             for_each_cell_near<dim>(n, c, buffer, [&](const unsigned int near) {
               marked[l][near] = true;
             });
+      }
+    // The domains must nest. The criteria above mark a cell's parent with it (a parent holds
+    // its children's points and box), but a level set sampled per cell can mark a cell whose
+    // parent's samples miss the region, and an obstacle's gap need not be a distance
+    // everywhere: such a parent is marked too.
+    for (unsigned int l = refinement_levels; l-- > 1;)
+      {
+        const auto n = pair_cells(l);
+        for (unsigned int c = 0; c < marked[l].size(); ++c)
+          if (marked[l][c])
+            {
+              unsigned int rest = c, parent = 0, stride = 1;
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  parent += (rest % n[d]) / 2 * stride;
+                  rest /= n[d];
+                  stride *= n[d] / 2;
+                }
+              marked[l - 1][parent] = true;
+            }
       }
     const bool changed = marked != moving_marked;
     moving_marked      = std::move(marked);

@@ -193,7 +193,7 @@ namespace GelMPM
   {
     std::vector<std::vector<bool>> flagged;
     const bool by_mu = grid.refinement_mu_range > 0., by_material = grid.material_region != nullptr;
-    if (!by_mu && !by_material && band_obstacles.empty())
+    if (!by_mu && !by_material && band_obstacles.empty() && grid.moving_region == nullptr)
       return flagged;
     using Layout = PropertyLayout<dim>;
     std::vector<std::vector<double>> lowest(grid.refinement_levels),
@@ -249,6 +249,13 @@ namespace GelMPM
           flagged[l][c] = material[l][c] > 0. ||
                           (by_mu && highest[l][c] - lowest[l][c] > grid.refinement_mu_range);
       }
+    if (grid.moving_region != nullptr)
+      for (unsigned int l = 0; l < flagged.size(); ++l)
+        {
+          const auto inside = grid.moving_region_cells(l, t);
+          for (unsigned int c = 0; c < flagged[l].size(); ++c)
+            flagged[l][c] = flagged[l][c] || inside[c];
+        }
     if (!band_obstacles.empty())
       {
         // Where the obstacles are at the step's start, whatever the last attempt left them at:

@@ -30,11 +30,12 @@ namespace GelMPM
     /** How the entry's text holds its numbers. */
     enum class Form
     {
-      numbers,  // numbers, lists of them, 'a : b' pairs; words (e.g. 'onset') are kept
-      holes,    // 'centre : radius [: axis direction]; ...': the axis is not converted
-      function, // a deal.II function expression in 'Variable names' beside it
-      selector, // an expression in x, y (, z) and normals (not converted), true or false
-      level_set // an expression in x, y (, z), only its sign matters
+      numbers,         // numbers, lists of them, 'a : b' pairs; words (e.g. 'onset') are kept
+      holes,           // 'centre : radius [: axis direction]; ...': the axis is not converted
+      function,        // a deal.II function expression in 'Variable names' beside it
+      selector,        // an expression in x, y (, z) and normals (not converted), true or false
+      level_set,       // an expression in x, y (, z), only its sign matters
+      moving_level_set // a level_set in x, y (, z) and the time t
     };
 
     struct EntryRule

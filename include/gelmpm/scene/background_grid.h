@@ -73,6 +73,19 @@ namespace GelMPM
     double                   obstacle_band = 0.;
     std::vector<std::string> band_obstacle_names;
     /**
+     * 'Refinement moving region' (null: none): a level set in x and t of the current
+     * configuration, marked anew every step (moving_region_cells()).
+     */
+    std::shared_ptr<dealii::FunctionParser<dim>> moving_region;
+
+    /**
+     * The cells of the grid of pairs at level @p level where 'Refinement moving region' is <= 0
+     * at time @p t at one of region_samples^dim points (corners included); InputError where it
+     * is not a number.
+     */
+    std::vector<bool>
+    moving_region_cells(const unsigned int level, const double t) const;
+    /**
      * 'Refinement material region' (null: none): a level set of the initial configuration; the
      * cells that hold a point whose X_0 lies in it are refined, marked anew every step.
      */

@@ -1,3 +1,4 @@
+// Moving refinement that follows what the scene names, checked on the same block and times:
 // 'Background grid/Refinement obstacle band' refines the grid round a rigid obstacle's current
 // surface and follows it: a ball of radius 0.15 hovering 0.05 above the top of a block
 // (0 <= x <= 5, 0 <= y <= 1; h = 0.1) and moving along x by 2 per unit time, band 0.1, one
@@ -13,6 +14,9 @@
 //   top covers as many cells).
 // - 'Refinement obstacles' naming an obstacle that does not exist is an InputError naming the
 //   entry.
+// 'Background grid/Refinement moving region = abs(x - 1.3 - 2 t) - 0.05' (a strip under the
+// ball, a level set in x and t) marks the same stretches at both times, and keeps the volume
+// points' number and volume likewise.
 #include <gelmpm/core/input_error.h>
 #include <gelmpm/particles/property_layout.h>
 #include <gelmpm/simulator/scene.h>
@@ -32,7 +36,7 @@ namespace
 
 
   std::unique_ptr<GelMPM::Scene<2>>
-  scene(dealii::ParameterHandler &prm, const std::string &band_obstacles)
+  scene(dealii::ParameterHandler &prm, const std::string &refinement)
   {
     GelMPM::Scene<2>::declare_parameters(prm, pieces, {}, obstacles);
     prm.parse_input_from_string(R"(
@@ -40,9 +44,7 @@ namespace
         set Lower corner = 0, 0
         set Upper corner = 5, 1.6
         set Cells = 50, 16
-        set Refinement obstacle band = 0.1
-        set Refinement obstacles = )" + band_obstacles +
-                                R"(
+        )" + refinement + R"(
       end
       subsection Geometry
         set Boxes = 0, 0 : 5, 1
@@ -70,8 +72,12 @@ namespace
           end
         end
       end)");
-    auto s = std::make_unique<GelMPM::Scene<2>>(prm, pieces, "", MPI_COMM_WORLD,
-                                                std::vector<std::string>(), obstacles);
+    auto s = std::make_unique<GelMPM::Scene<2>>(prm,
+                                                pieces,
+                                                "",
+                                                MPI_COMM_WORLD,
+                                                std::vector<std::string>(),
+                                                obstacles);
     s->create_material_points();
     return s;
   }
@@ -98,6 +104,33 @@ namespace
     std::cout << "  " << what << ": " << (ok ? "yes" : "no  FAIL") << std::endl;
     return ok;
   }
+
+
+  /** The checks of the marks at t = 0 and t = 1 for the grid entries @p refinement. */
+  bool
+  check_follows(const std::string &refinement)
+  {
+    dealii::ParameterHandler prm;
+    const auto               s     = scene(prm, refinement);
+    const auto               level = [&s](const double x) {
+      return s->grid.refinement_level(dealii::Point<2>(x, 0.99));
+    };
+    std::cout << "t = 0: levels at the top under x = 0.5, 1.3, 3.3, 4.0: " << level(0.5) << ", "
+              << level(1.3) << ", " << level(3.3) << ", " << level(4.) << std::endl;
+    bool ok               = report("refined round the ball only",
+                     level(0.5) == 1 && level(1.3) == 1 && level(3.3) == 0 && level(4.) == 0);
+    const auto [n_0, v_0] = volume(*s);
+    s->update_moving_refinement(1.);
+    std::cout << "t = 1: levels at the top under x = 0.5, 1.3, 3.3, 4.0: " << level(0.5) << ", "
+              << level(1.3) << ", " << level(3.3) << ", " << level(4.) << std::endl;
+    ok &= report("the refinement followed the ball",
+                 level(0.5) == 0 && level(1.3) == 0 && level(3.3) == 1 && level(4.) == 1);
+    const auto [n_1, v_1] = volume(*s);
+    std::cout << "volume points " << n_0 << " -> " << n_1 << std::endl;
+    ok &= report("as many volume points, the volume to 1e-12",
+                 n_1 == n_0 && n_1 > 5000 && std::abs(v_1 - v_0) <= 1e-12 * v_0);
+    return ok;
+  }
 } // namespace
 
 
@@ -105,30 +138,15 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  dealii::ParameterHandler                 prm;
-  const auto                               s = scene(prm, "");
-  const auto level = [&s](const double x) {
-    return s->grid.refinement_level(dealii::Point<2>(x, 0.99));
-  };
-  std::cout << "t = 0: levels at the top under x = 0.5, 1.3, 3.3, 4.0: " << level(0.5) << ", "
-            << level(1.3) << ", " << level(3.3) << ", " << level(4.) << std::endl;
-  bool ok = report("refined round the ball only", level(0.5) == 1 && level(1.3) == 1 &&
-                                                     level(3.3) == 0 && level(4.) == 0);
-  const auto [n_0, v_0] = volume(*s);
-  s->update_moving_refinement(1.);
-  std::cout << "t = 1: levels at the top under x = 0.5, 1.3, 3.3, 4.0: " << level(0.5) << ", "
-            << level(1.3) << ", " << level(3.3) << ", " << level(4.) << std::endl;
-  ok &= report("the refinement followed the ball", level(0.5) == 0 && level(1.3) == 0 &&
-                                                      level(3.3) == 1 && level(4.) == 1);
-  const auto [n_1, v_1] = volume(*s);
-  std::cout << "volume points " << n_0 << " -> " << n_1 << std::endl;
-  ok &= report("as many volume points, the volume to 1e-12",
-               n_1 == n_0 && n_1 > 5000 && std::abs(v_1 - v_0) <= 1e-12 * v_0);
+  std::cout << "obstacle band" << std::endl;
+  bool ok = check_follows("set Refinement obstacle band = 0.1");
+  std::cout << "moving region" << std::endl;
+  ok &= check_follows("set Refinement moving region = abs(x - 1.3 - 2 * t) - 0.05");
 
   dealii::ParameterHandler other;
   try
     {
-      scene(other, "hand");
+      scene(other, "set Refinement obstacle band = 0.1\n set Refinement obstacles = hand");
       ok &= report("an unknown obstacle is refused", false);
     }
   catch (const GelMPM::InputError &e)
@@ -138,6 +156,6 @@ main(int argc, char **argv)
       ok &= report("an unknown obstacle is refused, naming the entry",
                    what.find("Refinement obstacles") != std::string::npos);
     }
-  std::cout << (ok ? "obstacle band checks passed" : "OBSTACLE BAND CHECKS FAILED") << std::endl;
+  std::cout << (ok ? "moving marks checks passed" : "MOVING MARKS CHECKS FAILED") << std::endl;
   return ok ? 0 : 1;
 }
