@@ -182,8 +182,6 @@ namespace
         if (GelMPM::piece_of(props) == 3 && particle.get_location()[1] + lift - plane > 0.)
           sum += props[Layout::measure_n] * beta * (particle.get_location()[1] - plane);
       }
-    std::cout << "  held at the lifted state, the state at rest: force " << held_at_rest
-              << " against sum A_s beta_c g_s " << sum << std::endl;
     ok &= report("held active at rest: sum A_s beta_c g_s, a pull (1e-10)",
                  sum < 0. && std::abs(held_at_rest - sum) <= 1e-10 * std::abs(sum));
     system.release_switches();
