@@ -23,10 +23,11 @@ namespace GelMPM
    * - or by Nitsche's method: the terms of a roller on the obstacle's surface
    *   (add_displacement_nitsche() with Pi = m (x) m, g m and beta_c) where f beta_c g -
    *   m . (P_n N) > 0, Nitsche's active set (f = 'Active set factor', 1: the augmented one).
-   * The active set is that of the Newton iterate (semi-smooth Newton); for the rigid obstacles
-   * that of an earlier iterate where Newton holds it (PointRecord::contact_held, active_rigid(),
-   * MixedSystem::freeze_switches()): at a rounded edge points slide into and out of contact
-   * from one iterate to the next, and the residual jumps with them. The obstacles are summed
+   * The active set is that of the Newton iterate (semi-smooth Newton); under Nitsche's method,
+   * for the rigid obstacles, that of an earlier iterate where Newton holds it
+   * (PointRecord::contact_held, active_rigid(), MixedSystem::freeze_switches()): at a rounded
+   * edge points slide into and out of contact from one iterate to the next, and the residual
+   * jumps with them. The obstacles are summed
    * in their order, the grid sides first. The grid sides are the term's own; the rigid obstacles
    * are the scene's (Scene::obstacles), which the term reads where they are and does not copy:
    * their owner moves them (MixedSystem::set_boundary_values()). Off (nothing added) until
@@ -115,6 +116,13 @@ namespace GelMPM
                  const dealii::Tensor<1, dim> &du,
                  const dealii::Tensor<2, dim> &delta_F,
                  const double                  mu) const;
+
+    /** Whether Newton holds the rigid obstacles' active set (Nitsche's method, rigid obstacles). */
+    bool
+    holds_active_set() const
+    {
+      return contact.method == ContactSettings::Method::nitsche && n_rigid_obstacles() > 0;
+    }
 
     /** Whether some rigid obstacle is impermeable (seals the points it touches). */
     bool
