@@ -55,6 +55,32 @@ namespace GelMPM
 
 
     /**
+     * Per family of @p families (keyed by parent) that this rank holds only part of, the
+     * members (family_member()) that every rank holds of it: a family whose points lie on
+     * either side of the partition is merged from these, the same merged point as on one rank,
+     * instead of siblings that wait until they share a rank. Empty on one rank.
+     */
+    template <int dim, typename Iterator>
+    std::map<std::vector<long>, std::vector<std::vector<double>>>
+    members_of_partial_families(const std::map<std::vector<long>, std::vector<Iterator>> &families,
+                                const MPI_Comm communicator)
+    {
+      std::map<std::vector<long>, std::vector<std::vector<double>>> spread;
+      if (dealii::Utilities::MPI::n_mpi_processes(communicator) == 1)
+        return spread;
+      std::vector<std::pair<std::vector<long>, std::vector<double>>> partial;
+      for (const auto &[key, members] : families)
+        if (members.size() < (1u << dim))
+          for (const auto &member : members)
+            partial.emplace_back(key, family_member<dim>(member));
+      for (auto &rank : dealii::Utilities::MPI::all_gather(communicator, partial))
+        for (auto &[key, member] : rank)
+          spread[key].push_back(std::move(member));
+      return spread;
+    }
+
+
+    /**
      * A unit tangent of the facet with unit normal @p n in 3D: the coordinate axis most nearly
      * in the facet, projected onto it (the first such axis on a tie).
      */
@@ -393,24 +419,8 @@ namespace GelMPM
           continue;
         families[parent_key<dim>(properties, grid, points_per_cell)].push_back(particle);
       }
-    // A family whose points lie on several ranks (siblings on either side of the partition) is
-    // merged from what every rank holds of it: the same merged point as on one rank, instead
-    // of siblings that wait until they share a rank. Each member is sent as its id, position
-    // and properties; the members are taken in the order of their ids on every partition, so
-    // that the sums are added alike and the member of the smallest id keeps the merged point.
-    const MPI_Comm communicator = triangulation.get_communicator();
-    std::map<std::vector<long>, std::vector<std::vector<double>>> spread;
-    if (dealii::Utilities::MPI::n_mpi_processes(communicator) > 1)
-      {
-        std::vector<std::pair<std::vector<long>, std::vector<double>>> partial;
-        for (const auto &[key, members] : families)
-          if (members.size() < (1u << dim))
-            for (const auto &member : members)
-              partial.emplace_back(key, family_member<dim>(member));
-        for (auto &rank : dealii::Utilities::MPI::all_gather(communicator, partial))
-          for (auto &[key, member] : rank)
-            spread[key].push_back(std::move(member));
-      }
+    const MPI_Comm        communicator = triangulation.get_communicator();
+    auto                  spread       = members_of_partial_families<dim>(families, communicator);
     std::vector<Iterator> removed;
     for (auto &[key, members] : families)
       {
@@ -424,6 +434,8 @@ namespace GelMPM
         // Only a whole family, all of whose points lie in leaves coarser than their spacing.
         if (gathered.empty())
           continue;
+        // In the order of their ids on every partition: the sums are added alike, and the
+        // member of the smallest id keeps the merged point.
         std::sort(gathered.begin(), gathered.end());
         std::sort(members.begin(), members.end(), [](const Iterator &a, const Iterator &b) {
           return a->get_id() < b->get_id();
