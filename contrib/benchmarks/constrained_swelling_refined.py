@@ -11,6 +11,9 @@ Runs, alternating so that a change of the machine's load shows in both, --repeat
             than R ('Refinement mu range', marked anew every step), for each R of --ranges;
             refined --levels times; with --budgets B1,B2 also once per budget B of unknowns
             ('Refinement budget', the finest moving levels dropped at a step beyond it);
+  jump J    the same scene with its box replaced by refinement where the slope of mu changes
+            by more than J over a cell ('Refinement mu gradient jump'), for each J of --jumps,
+            refined --levels times;
   material  the same scene with its box replaced by refinement round the material that starts
             at y >= 0.9 ('Refinement material region = 0.9 - y'), with --material;
   uniform   prm/constrained_swelling.prm on 40 x 320 cells with steps growing by 1.05 (the
@@ -23,7 +26,8 @@ t >= 1e-3 tau_d (with its time), Delta h at 1.197e-3 tau_d and at the end, steps
 setting's.
 
     python3 contrib/benchmarks/constrained_swelling_refined.py [--output DIR] [--repeat N]
-        [--no-uniform] [--no-band] [--ranges 0.01,0.02] [--levels N] [--budgets B1,B2]
+        [--no-uniform] [--no-band] [--ranges 0.01,0.02] [--jumps 0.01,0.02] [--levels N]
+        [--budgets B1,B2]
         [--material] [--end T]
 
 Environment: GELMPM_BUILD_DIR (default: build). Needs only Python's standard library.
@@ -111,6 +115,7 @@ def main():
     parser.add_argument("--no-uniform", action="store_true")
     parser.add_argument("--no-band", action="store_true")
     parser.add_argument("--ranges", default="", help="mu ranges of the 'front' variants")
+    parser.add_argument("--jumps", default="", help="mu gradient jumps of the 'jump' variants")
     parser.add_argument("--levels", type=int, default=1, help="levels of the 'front' variants")
     parser.add_argument("--budgets", default="", help="budgets of unknowns of the 'front' variants")
     parser.add_argument("--material", action="store_true")
@@ -129,6 +134,12 @@ def main():
         for b in [int(x) for x in args.budgets.split(",") if x]:
             variants.append((f"{name}, budget {b}", "constrained_swelling_refined.prm",
                              front + [f"Background grid/Refinement budget={b}"]))
+    for j in [float(x) for x in args.jumps.split(",") if x]:
+        variants.append((f"jump {j:g}" + (f", {args.levels} levels" if args.levels > 1 else ""),
+                         "constrained_swelling_refined.prm",
+                         ["Background grid/Refinement boxes=",
+                          f"Background grid/Refinement mu gradient jump={j:g}",
+                          f"Background grid/Refinement levels={args.levels}"]))
     if args.material:
         variants.append(("material", "constrained_swelling_refined.prm",
                          ["Background grid/Refinement boxes=",

@@ -60,6 +60,16 @@ namespace GelMPM
   }
 
 
+  unsigned int
+  DiscretisationSettings::support_reach_in_pair_cells() const
+  {
+    const unsigned int u_reach = (displacement_degree + 1) / 2;
+    const unsigned int mu_reach =
+      subdivision ? chemical_potential_degree : (chemical_potential_degree + 1) / 2;
+    return std::max(u_reach, mu_reach);
+  }
+
+
   namespace
   {
     template <int dim>

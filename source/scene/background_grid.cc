@@ -75,6 +75,22 @@ namespace GelMPM
     }
 
 
+    /** The cell of the next coarser grid of pairs that holds cell @p c of a grid of @p n. */
+    template <int dim>
+    unsigned int
+    parent_cell(const std::array<unsigned int, dim> &n, const unsigned int c)
+    {
+      unsigned int rest = c, parent = 0, stride = 1;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          parent += (rest % n[d]) / 2 * stride;
+          rest /= n[d];
+          stride *= n[d] / 2;
+        }
+      return parent;
+    }
+
+
     /**
      * The level set @p text in x, y (, z) of the entry @p entry, or null if empty; InputError if
      * it cannot be parsed.
@@ -210,6 +226,17 @@ namespace GelMPM
                       "The boundary pieces ('Boundary conditions/Pieces', comma-separated) "
                       "whose surface points 'Refinement band' follows, e.g. the bath side of a "
                       "layer or an indented face. Empty: every surface point.");
+    prm.declare_entry(
+      "Refinement grading",
+      "false",
+      Patterns::Bool(),
+      "Whether the refined cells are graded: round every refined cell, the cells of its level "
+      "within the reach of a function's support (the degree's cells of mu's grid) have refined "
+      "parents, so that at most two levels of functions are nonzero on any leaf cell (admissible "
+      "truncated hierarchical B-splines of class 2; ungraded, up to one more per level). Widens "
+      "the refined domains by a few cells of each coarser level (2 of mu's for Q2-Q2SD), which "
+      "must then meet the extension's rule at the body's boundary too; only with 'Refinement "
+      "levels' >= 2. false: the criteria's cells as they are (doc/architecture.md, \"Grading\").");
     prm.declare_entry("Refinement levels",
                       "1",
                       Patterns::Integer(1, 4),
@@ -239,6 +266,19 @@ namespace GelMPM
       "that the refined cells follow that material as it moves and deforms. "
       "Points are split and merged as for 'Refinement band'. Combined with the "
       "other entries. Empty: none.");
+    prm.declare_entry(
+      "Refinement mu gradient jump",
+      "0",
+      Patterns::Double(0.),
+      "Refine the grid where the slope of the chemical potential changes: the least-squares "
+      "plane of mu/(k_B T) through the points of a cell pair (volume points, and surface points "
+      "with their piece's prescribed mu) is compared with its face neighbours', at every level "
+      "up to 'Refinement levels', and both are refined where the gradients differ by g with "
+      "|g| h > this (h the cell pair's size), marked anew at the start of every step with q + 2 "
+      "cells round them. Unlike 'Refinement mu range' it leaves a region where mu varies "
+      "linearly unrefined and finds a front's foot, a kink or a corner: where the pieces of "
+      "degree q have most to follow. Points are split and merged as for 'Refinement band'. "
+      "Combined with the other entries. 0: none.");
     prm.declare_entry("Refinement mu range",
                       "0",
                       Patterns::Double(0.),
@@ -268,10 +308,12 @@ namespace GelMPM
     refinement_levels                 = prm.get_integer("Refinement levels");
     refinement_band                   = prm.get_double("Refinement band");
     refinement_mu_range               = prm.get_double("Refinement mu range");
+    refinement_mu_gradient_jump       = prm.get_double("Refinement mu gradient jump");
     obstacle_band                     = prm.get_double("Refinement obstacle band");
     const std::string moving_text = dealii::Utilities::trim(prm.get("Refinement moving region"));
     band_obstacle_names = dealii::Utilities::split_string_list(prm.get("Refinement obstacles"));
     refinement_budget   = prm.get_integer("Refinement budget");
+    refinement_grading  = prm.get_bool("Refinement grading");
     moving_levels       = refinement_levels;
     const std::string material_text =
       dealii::Utilities::trim(prm.get("Refinement material region"));
@@ -307,6 +349,7 @@ namespace GelMPM
     moving_region =
       parse_level_set<dim>(moving_text, "Background grid/Refinement moving region", true);
     moving_marked.clear();
+    graded_marked.clear();
     require(refinement_band > 0. || band_piece_names.empty(),
             "Background grid/Refinement band pieces",
             "names pieces but 'Refinement band' is 0",
@@ -485,7 +528,7 @@ namespace GelMPM
   BackgroundGrid<dim>::moves() const
   {
     return refinement_band > 0. || refinement_mu_range > 0. || material_region != nullptr ||
-           obstacle_band > 0. || moving_region != nullptr;
+           obstacle_band > 0. || moving_region != nullptr || refinement_mu_gradient_jump > 0.;
   }
 
 
@@ -579,6 +622,8 @@ namespace GelMPM
       return "Background grid/Refinement obstacle band";
     if (moving_region != nullptr)
       return "Background grid/Refinement moving region";
+    if (refinement_mu_gradient_jump > 0.)
+      return "Background grid/Refinement mu gradient jump";
     return refinement_mu_range > 0. ? "Background grid/Refinement mu range"
                                     : "Background grid/Refinement material region";
   }
@@ -658,20 +703,75 @@ namespace GelMPM
         const auto n = pair_cells(l);
         for (unsigned int c = 0; c < marked[l].size(); ++c)
           if (marked[l][c])
-            {
-              unsigned int rest = c, parent = 0, stride = 1;
-              for (unsigned int d = 0; d < dim; ++d)
-                {
-                  parent += (rest % n[d]) / 2 * stride;
-                  rest /= n[d];
-                  stride *= n[d] / 2;
-                }
-              marked[l - 1][parent] = true;
-            }
+            marked[l - 1][parent_cell<dim>(n, c)] = true;
       }
     const bool changed = marked != moving_marked;
     moving_marked      = std::move(marked);
+    if (changed)
+      grade();
     return changed;
+  }
+
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::set_moving_marks(const std::vector<std::vector<bool>> &marks)
+  {
+    moving_marked = marks;
+    grade();
+  }
+
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::set_grading_reach(const unsigned int cells)
+  {
+    grading_reach = cells;
+    grade();
+  }
+
+
+  template <int dim>
+  bool
+  BackgroundGrid<dim>::marked_by_criteria(const unsigned int l, const unsigned int c) const
+  {
+    return pair_cell_in_box(l, c) || (!region_marked.empty() && region_marked[l][c]) ||
+           (!moving_marked.empty() && moving_marked[l][c]);
+  }
+
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::grade()
+  {
+    graded_marked.clear();
+    if (!refinement_grading || grading_reach == 0 || refinement_levels < 2)
+      return;
+    graded_marked.resize(refinement_levels);
+    for (unsigned int l = 0; l < refinement_levels; ++l)
+      {
+        const auto   n       = pair_cells(l);
+        unsigned int n_total = 1;
+        for (unsigned int d = 0; d < dim; ++d)
+          n_total *= n[d];
+        graded_marked[l].resize(n_total);
+        for (unsigned int c = 0; c < n_total; ++c)
+          graded_marked[l][c] = marked_by_criteria(l, c);
+      }
+    // A leaf of level l + 1 lies in a refined cell Q of level l. The functions of level l that
+    // are nonzero on Q reach grading_reach cells beyond it; where one of them is not active (its
+    // support leaves Omega^l, the refined cells of level l - 1), a function of level l - 1 is
+    // nonzero on Q too, and three levels meet on the leaf. So the cells of level l near Q must
+    // lie in Omega^l: their parents are refined.
+    for (unsigned int l = refinement_levels; l-- > 1;)
+      {
+        const auto n = pair_cells(l);
+        for (unsigned int c = 0; c < graded_marked[l].size(); ++c)
+          if (graded_marked[l][c])
+            for_each_cell_near<dim>(n, c, grading_reach, [&](const unsigned int near) {
+              graded_marked[l - 1][parent_cell<dim>(n, near)] = true;
+            });
+      }
   }
 
 
@@ -686,6 +786,7 @@ namespace GelMPM
           // The finer levels hold no marks: the domains still nest.
           std::fill(moving_marked[l].begin(), moving_marked[l].end(), false);
           moving_levels = std::min(moving_levels, l);
+          grade();
           return true;
         }
     return false;
@@ -712,8 +813,7 @@ namespace GelMPM
         for (unsigned int d = 0; d < dim; ++d)
           n_total *= n[d];
         for (unsigned int c = 0; c < n_total; ++c)
-          if (pair_cell_in_box(l, c) || (!region_marked.empty() && region_marked[l][c]) ||
-              (!moving_marked.empty() && moving_marked[l][c]))
+          if (graded_marked.empty() ? marked_by_criteria(l, c) : graded_marked[l][c])
             refined[l].push_back(c);
       }
     return refined;
@@ -754,6 +854,7 @@ namespace GelMPM
           }
         overlaps |= !region_marked.empty() && region_marked[l][cell];
         overlaps |= !moving_marked.empty() && moving_marked[l][cell];
+        overlaps |= !graded_marked.empty() && graded_marked[l][cell];
         if (!overlaps)
           return l;
       }

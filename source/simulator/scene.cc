@@ -56,6 +56,7 @@ namespace GelMPM
     boundary_conditions.parse_parameters(prm, boundary_pieces);
     generator.parse_parameters(prm);
     discretisation.parse_parameters(prm);
+    grid.set_grading_reach(discretisation.support_reach_in_pair_cells());
     nitsche.parse_parameters(prm);
     contact.parse_parameters(prm, dim, obstacle_names);
     // Both name statistics columns <name>_force_x, ...: the piece's force would be lost.
@@ -160,6 +161,111 @@ namespace GelMPM
 
 
   template <int dim>
+  void
+  Scene<dim>::flag_mu_gradient_jumps(std::vector<std::vector<bool>> &flagged) const
+  {
+    // Per cell, the least-squares plane of mu through its points: the sums of its normal
+    // equations in coordinates relative to the cell's centre, 1, x, x x^T (upper triangle), mu,
+    // x mu, summed over the ranks.
+    using Layout                = PropertyLayout<dim>;
+    constexpr unsigned int n_xx = dim * (dim + 1) / 2, n_sums = 2 + 2 * dim + n_xx;
+    const auto             sample = [&](std::vector<double>      &sums,
+                            const unsigned int        l,
+                            const dealii::Point<dim> &x,
+                            const double              mu) {
+      const unsigned int c     = grid.pair_cell_of(x, l);
+      const auto         local = x - grid.pair_cell_centre(l, c).first;
+      double            *s     = sums.data() + n_sums * c;
+      s[0] += 1.;
+      for (unsigned int d = 0, k = 0; d < dim; ++d)
+        {
+          s[1 + d] += local[d];
+          s[1 + dim + n_xx + 1 + d] += local[d] * mu;
+          for (unsigned int e = d; e < dim; ++e, ++k)
+            s[1 + dim + k] += local[d] * local[e];
+        }
+      s[1 + dim + n_xx] += mu;
+    };
+    for (unsigned int l = 0; l < flagged.size(); ++l)
+      {
+        std::vector<double> sums(n_sums * flagged[l].size(), 0.);
+        for (const auto &particle : particles)
+          {
+            const auto properties = particle.get_properties();
+            const auto x          = particle.get_location();
+            const int  piece      = std::lround(properties[Layout::piece]);
+            // As for the mu range: a bath's mu counts before the gel has taken it up.
+            if (kind_of(properties) == PointKind::volume)
+              sample(sums, l, x, properties[Layout::mu]);
+            else if (piece >= 0 && boundary_conditions.piece(piece).chemical_potential_prescribed())
+              {
+                // In the cell of the material behind the point: a face on a grid line would put
+                // its points alone in the empty cell beyond, where they make no plane.
+                dealii::Point<dim>     X_0;
+                dealii::Tensor<1, dim> normal;
+                for (unsigned int d = 0; d < dim; ++d)
+                  {
+                    X_0[d]    = properties[Layout::position_0 + d];
+                    normal[d] = properties[Layout::normal_area_n + d];
+                  }
+                const double h_l = 2. * grid.smallest_cell_size() / (1u << l);
+                sample(sums,
+                       l,
+                       x - 1e-3 * h_l * normal / normal.norm(),
+                       boundary_conditions.piece(piece).chemical_potential_value().value(X_0));
+              }
+          }
+        if (Collective::is_parallel(communicator))
+          dealii::Utilities::MPI::sum(sums, communicator, sums);
+        const auto n        = grid.pair_cells(l);
+        const auto gradient = [&](const unsigned int c, dealii::Tensor<1, dim> &g) {
+          const double *s = sums.data() + n_sums * c;
+          if (s[0] < dim + 1)
+            return false;
+          // The covariance of the positions and of positions and mu.
+          dealii::Tensor<2, dim> C;
+          dealii::Tensor<1, dim> b;
+          for (unsigned int d = 0, k = 0; d < dim; ++d)
+            {
+              b[d] = (s[1 + dim + n_xx + 1 + d] - s[1 + d] * s[1 + dim + n_xx] / s[0]) / s[0];
+              for (unsigned int e = d; e < dim; ++e, ++k)
+                C[d][e] = C[e][d] = (s[1 + dim + k] - s[1 + d] * s[1 + e] / s[0]) / s[0];
+            }
+          // Points spread over less than a tenth of the cell in some direction (a sliver of a
+          // cut cell) give no plane: no gradient there.
+          const double h = 2. * grid.pair_cell_centre(l, c).second / std::sqrt(double(dim));
+          if (dealii::determinant(C) <= std::pow(0.01 * h * h, dim))
+            return false;
+          g = dealii::invert(C) * b;
+          return true;
+        };
+        std::vector<dealii::Tensor<1, dim>> g(flagged[l].size());
+        std::vector<bool>                   has(flagged[l].size());
+        for (unsigned int c = 0; c < g.size(); ++c)
+          has[c] = gradient(c, g[c]);
+        // The slope's change from a cell to its face neighbour, over a cell: how far mu departs
+        // from a plane across the two cells, which the degree-q pieces must follow.
+        for (unsigned int c = 0; c < g.size(); ++c)
+          if (has[c])
+            {
+              unsigned int stride = 1;
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  const unsigned int index = (c / stride) % n[d];
+                  if (index + 1 < n[d] && has[c + stride])
+                    {
+                      const double h = (grid.upper[d] - grid.lower[d]) / n[d];
+                      if ((g[c + stride] - g[c]).norm() * h > grid.refinement_mu_gradient_jump)
+                        flagged[l][c] = flagged[l][c + stride] = true;
+                    }
+                  stride *= n[d];
+                }
+            }
+      }
+  }
+
+
+  template <int dim>
   std::vector<dealii::Point<dim>>
   Scene<dim>::band_surface_points() const
   {
@@ -193,7 +299,8 @@ namespace GelMPM
   {
     std::vector<std::vector<bool>> flagged;
     const bool by_mu = grid.refinement_mu_range > 0., by_material = grid.material_region != nullptr;
-    if (!by_mu && !by_material && band_obstacles.empty() && grid.moving_region == nullptr)
+    if (!by_mu && !by_material && band_obstacles.empty() && grid.moving_region == nullptr &&
+        !(grid.refinement_mu_gradient_jump > 0.))
       return flagged;
     using Layout = PropertyLayout<dim>;
     std::vector<std::vector<double>> lowest(grid.refinement_levels),
@@ -256,6 +363,8 @@ namespace GelMPM
           for (unsigned int c = 0; c < flagged[l].size(); ++c)
             flagged[l][c] = flagged[l][c] || inside[c];
         }
+    if (grid.refinement_mu_gradient_jump > 0.)
+      flag_mu_gradient_jumps(flagged);
     if (!band_obstacles.empty())
       {
         // Where the obstacles are at the step's start, whatever the last attempt left them at:
@@ -274,7 +383,7 @@ namespace GelMPM
   {
     if (!grid.moves() || last_marking.empty() || last_marking == grid.moving_marked)
       return false;
-    grid.moving_marked = last_marking;
+    grid.set_moving_marks(last_marking);
     spaces->rebuild_hierarchies(grid);
     split_points_to_leaves(particles, grid, regions, generator.points_per_cell, *triangulation);
     return true;

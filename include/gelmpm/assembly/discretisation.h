@@ -35,6 +35,14 @@ namespace GelMPM
     std::string
     name() const;
 
+    /**
+     * How many cells of the grid of pairs (cell size 2h, the refinement's marking grid) the
+     * B-splines nonzero on a cell reach beyond it, for u and mu, whichever reaches farther: a
+     * degree-q function on cells of size h reaches q of them, ceil(q/2) cells of size 2h.
+     */
+    unsigned int
+    support_reach_in_pair_cells() const;
+
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 

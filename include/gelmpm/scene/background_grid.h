@@ -66,6 +66,12 @@ namespace GelMPM
      */
     double refinement_mu_range = 0.;
     /**
+     * 'Refinement mu gradient jump' (0: none): the grid is refined where the slope of mu (the
+     * least-squares plane through a cell's points) changes from a cell to its neighbour by more
+     * than this over a cell, marked anew every step.
+     */
+    double refinement_mu_gradient_jump = 0.;
+    /**
      * 'Refinement obstacle band' (0: none) and 'Refinement obstacles' (empty: every rigid
      * obstacle): the grid is refined within this distance of the obstacles' current surfaces,
      * marked anew every step (Scene::flagged_cells()).
@@ -107,6 +113,28 @@ namespace GelMPM
      * run by drop_finest_moving_level().
      */
     unsigned int moving_levels = 0;
+
+    /**
+     * 'Refinement grading' (off by default): the refined domains are widened so that at most two
+     * levels of functions are nonzero on any leaf cell (grade()). grading_reach is the reach of
+     * a function's support beyond a cell, in cells of the grid of pairs of its level
+     * (set_grading_reach(), from the degrees); graded_marked the union of every criterion's
+     * marks, graded, per level and cell of the grid of pairs (empty: no grading needed).
+     */
+    bool                           refinement_grading = false;
+    unsigned int                   grading_reach      = 0;
+    std::vector<std::vector<bool>> graded_marked;
+
+    /**
+     * Grade the refinement with the reach @p cells (cells of the grid of pairs of a level within
+     * which the functions of a cell of that level reach) and keep grading it as the marks change.
+     */
+    void
+    set_grading_reach(const unsigned int cells);
+
+    /** Replace the moving marks by @p marks (an earlier marking), graded anew. */
+    void
+    set_moving_marks(const std::vector<std::vector<bool>> &marks);
 
     /** Whether a band or a mu range is set: the refinement is marked anew every step. */
     bool
@@ -213,6 +241,22 @@ namespace GelMPM
      */
     void
     mark_region();
+
+    /**
+     * graded_marked from the boxes, the region and the moving marks: around every refined cell
+     * of level l >= 1, the cells of level l within grading_reach have refined parents, so that
+     * the refined domains are admissible of class 2 (Buffa & Giannelli 2016: every truncated
+     * function nonzero on a leaf of level l is of level l or l - 1). Applied from the finest
+     * level down, so that the parents it marks are graded in turn. Empty when off or with one
+     * level (two levels always meet at most).
+     */
+    void
+    grade();
+
+    /** Whether the cell @p c of the grid of pairs at level @p l is refined by some criterion
+     * (without grading). */
+    bool
+    marked_by_criteria(const unsigned int l, const unsigned int c) const;
 
     /** Whether the cell @p c of the grid of pairs at level @p l overlaps a refinement box. */
     bool

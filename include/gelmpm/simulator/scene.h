@@ -230,12 +230,22 @@ namespace GelMPM
 
     /**
      * Per level and cell of the grid of pairs, whether the mu of its points and the prescribed
-     * mu of its surface points span more than 'Refinement mu range', one of its points starts
+     * mu of its surface points span more than 'Refinement mu range', mu's slope changes by
+     * more than 'Refinement mu gradient jump' (flag_mu_gradient_jumps()), one of its points starts
      * in 'Refinement material region', or it lies within 'Refinement obstacle band' of an
      * obstacle's surface at @p t; over all ranks (empty: none of them is set).
      */
     std::vector<std::vector<bool>>
     flagged_cells(const double t);
+
+    /**
+     * Flag the cells of each level where mu's slope changes by more than 'Refinement mu gradient
+     * jump' over a cell: the least-squares planes of mu through the points of two face
+     * neighbours (volume points, and surface points with their piece's prescribed mu) differ in
+     * gradient by g with |g| h above it; both are flagged. Over all ranks.
+     */
+    void
+    flag_mu_gradient_jumps(std::vector<std::vector<bool>> &flagged) const;
 
     /** Flag the cells of each level within 'Refinement obstacle band' of band_obstacles. */
     void
