@@ -124,6 +124,7 @@ namespace GelMPM
     if (grid.refined())
       {
         refinement_entry_ = grid.refinement_entry();
+        graded_           = !grid.graded_marked.empty();
         build_hierarchies(grid);
       }
   }
@@ -167,6 +168,7 @@ namespace GelMPM
   void
   DiscreteSpaces<dim>::rebuild_hierarchies(const BackgroundGrid<dim> &grid)
   {
+    graded_ = !grid.graded_marked.empty();
     build_hierarchies(grid);
     // The extended spaces belong to the old hierarchies: the next reinit() builds them anew.
     u_.reset();
@@ -271,23 +273,33 @@ namespace GelMPM
       {
         u_.reset();
         mu_.reset();
+        const bool by_mu = refinement_entry_ == "Background grid/Refinement mu range" ||
+                           refinement_entry_ == "Background grid/Refinement mu gradient jump";
+        // Grading widens the coarser levels' domains, which may then leave too little of a
+        // level inside the body: the user's own domains may be fine.
+        const std::string ungraded =
+          graded_ ? " (or set 'Background grid/Refinement grading = false': grading widened "
+                    "the coarser levels)"
+                  : "";
         throw InputError(refinement_entry_,
                          std::string("refines a region that the extended B-splines cannot "
                                      "extrapolate into (") +
                            e.what() + ")",
-                         refinement_entry_ == "Background grid/Refinement band"
-                           ? "widen the band so that it reaches at least 2(q+1) cells of its "
-                             "finest level into the body (the chemical potential's cells are "
-                             "twice as large), or set 'Discretisation/Extended B-splines = false'"
-                         : refinement_entry_ == "Background grid/Refinement mu range"
-                           ? "refine the body's boundary there by a box or a band that reaches "
-                             "2(q+1) cells of its finest level into the body as well, or set "
-                             "'Discretisation/Extended B-splines = false'"
-                           : "let a box (or 'Refinement region') that reaches the body's "
-                             "boundary extend at least 2(q+1) cells of its finest level into "
-                             "the body (also as it deforms; the chemical potential's cells are "
-                             "twice as large), or set 'Discretisation/Extended B-splines = "
-                             "false'");
+                         (refinement_entry_ == "Background grid/Refinement band"
+                            ? "widen the band so that it reaches at least 2(q+1) cells of its "
+                              "finest level into the body (the chemical potential's cells are "
+                              "twice as large), or set 'Discretisation/Extended B-splines = "
+                              "false'"
+                          : by_mu
+                            ? "refine the body's boundary there by a box or a band that reaches "
+                              "2(q+1) cells of its finest level into the body as well, or set "
+                              "'Discretisation/Extended B-splines = false'"
+                            : "let a box (or 'Refinement region') that reaches the body's "
+                              "boundary extend at least 2(q+1) cells of its finest level into "
+                              "the body (also as it deforms; the chemical potential's cells are "
+                              "twice as large), or set 'Discretisation/Extended B-splines = "
+                              "false'") +
+                           ungraded);
       }
     return true;
   }

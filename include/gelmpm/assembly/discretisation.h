@@ -251,6 +251,8 @@ namespace GelMPM
     bool                                           axisymmetric_;
     // The entry that refines the grid, named when the extension cannot reach a refined region.
     std::string refinement_entry_ = "Background grid/Refinement boxes";
+    /** Whether the grid's refinement is graded (named in the extension's error). */
+    bool graded_ = false;
     // The rule the current extended spaces were built with.
     bool built_tolerating_inexact_extrapolation = false;
   };
