@@ -421,6 +421,11 @@ namespace GelMPM
             << " step(s) accepted with an error estimate above its tolerance whatever the step "
                "(a perturbation's jump or the points' integration noise)"
             << std::endl;
+    if (loop && loop->armijo_retries().first > 0)
+      pcout << "gelmpm: " << loop->armijo_retries().first
+            << " failed attempt(s) retried with Armijo's line search ('Newton/Line search = "
+               "adaptive'), "
+            << loop->armijo_retries().second << " of them converged" << std::endl;
     if (scene.system && scene.system->n_borrowed_increments() > 0)
       pcout << "gelmpm: " << scene.system->n_borrowed_increments()
             << " surface point update(s) took the nearest volume point's increment, their own "

@@ -27,11 +27,13 @@ namespace GelMPM
       "the residuals stop on round-off).");
     prm.declare_entry("Line search",
                       "physical",
-                      dealii::Patterns::Selection("none|physical|merit"),
+                      dealii::Patterns::Selection("none|physical|merit|adaptive"),
                       "How Newton updates are damped, by backtracking (1, 1/2, 1/4, ...): "
                       "'physical' until the trial state is physical at every point (J > 1, a "
                       "fraction-to-the-boundary rule); 'merit' in addition until the scaled "
-                      "residual norm decreases (Armijo's rule); 'none': full updates, and a trial "
+                      "residual norm decreases (Armijo's rule); 'adaptive': 'physical', and an "
+                      "attempt that fails to converge is retried once at the same step with "
+                      "'merit' before the step is cut; 'none': full updates, and a trial "
                       "state with J <= 1 fails the attempt (doc/method.md, 'Newton').");
     prm.declare_entry(
       "Initial chemical potential",
@@ -114,6 +116,7 @@ namespace GelMPM
     const std::string search = prm.get("Line search");
     line_search              = (search == "none")       ? LineSearch::none
                                : (search == "physical") ? LineSearch::physical
+                               : (search == "adaptive") ? LineSearch::adaptive
                                                         : LineSearch::merit;
     smallest_damping         = prm.get_double("Smallest damping");
     log_failures             = prm.get_bool("Log failures");
@@ -368,7 +371,9 @@ namespace GelMPM
                   }
                 break;
               }
+            // 'adaptive' is 'physical' within one attempt (the time loop retries with 'merit').
             if (physical && (settings.line_search == NewtonSettings::LineSearch::physical ||
+                             settings.line_search == NewtonSettings::LineSearch::adaptive ||
                              near_solution || merit() <= (1. - 1e-4 * alpha) * merit_0))
               break;
             const std::string why = physical ? "the residual does not decrease" : report.failure;

@@ -234,6 +234,8 @@ namespace GelMPM
     for (auto *observer : observers)
       observer->step_begins();
     dealii::Vector<double> solution;
+    // 'Line search = adaptive': the attempt after a failed one at the same step uses Armijo's.
+    bool armijo_retry = false;
     for (unsigned int attempt = 1;; ++attempt)
       {
         // A step whose attempts keep failing can be stopped within one attempt.
@@ -244,10 +246,14 @@ namespace GelMPM
         if (!bound_attempt(t_begin, step_dt))
           return StepOutcome::failed;
         model.prepare_attempt(t_begin, step_dt, last_dt, solution);
+        NewtonSettings attempt_settings = newton_settings;
+        if (newton_settings.line_search == NewtonSettings::LineSearch::adaptive)
+          attempt_settings.line_search =
+            armijo_retry ? NewtonSettings::LineSearch::merit : NewtonSettings::LineSearch::physical;
         NewtonReport report = solve_newton(model.system(),
                                            solution,
                                            step_dt * run_scales.tau_d,
-                                           newton_settings,
+                                           attempt_settings,
                                            linear_solver,
                                            run_scales.scale_u,
                                            run_scales.scale_mu,
@@ -257,6 +263,23 @@ namespace GelMPM
         fresh_tangents_ += report.fresh_tangents;
         n_switch_updates += report.switch_updates;
         n_unsettled_switches += report.converged && report.switches_unsettled;
+        n_armijo_converged += armijo_retry && report.converged;
+        // Near a fold of the solution path the physical damping's full updates overshoot
+        // along the soft mode; Armijo's rule follows the residual down. Only Newton's own
+        // failures are retried: a motion or refusal is no matter of damping.
+        if (!report.converged &&
+            newton_settings.line_search == NewtonSettings::LineSearch::adaptive && !armijo_retry)
+          {
+            log << "    step " << control_.step() + 1 << " at t = " << t_begin
+                << " with dt = " << step_dt << " failed (" << report.failure
+                << "); retrying with Armijo's line search ('Newton/Line search = adaptive')"
+                << std::endl;
+            for (auto *observer : observers)
+              observer->attempt_rejected();
+            armijo_retry = true;
+            ++n_armijo_retries;
+            continue;
+          }
         if (report.converged && increment_bound_applies(step_dt))
           {
             const double moved = model.largest_motion_in_cells(solution);
@@ -294,6 +317,7 @@ namespace GelMPM
           {
             if (!attempt_failed(report, t_begin, step_dt))
               return StepOutcome::failed;
+            armijo_retry = false;
             continue;
           }
 
@@ -577,6 +601,13 @@ namespace GelMPM
   TimeLoop::switch_updates() const
   {
     return {n_switch_updates, n_unsettled_switches};
+  }
+
+
+  std::pair<unsigned long, unsigned long>
+  TimeLoop::armijo_retries() const
+  {
+    return {n_armijo_retries, n_armijo_converged};
   }
 
 
