@@ -424,8 +424,8 @@ namespace GelMPM
     if (loop && loop->armijo_retries().first > 0)
       pcout << "gelmpm: " << loop->armijo_retries().first
             << " failed attempt(s) retried with Armijo's line search ('Newton/Line search = "
-               "adaptive'), "
-            << loop->armijo_retries().second << " of them converged" << std::endl;
+               "adaptive'); "
+            << loop->armijo_retries().second << " step(s) accepted with it" << std::endl;
     if (scene.system && scene.system->n_borrowed_increments() > 0)
       pcout << "gelmpm: " << scene.system->n_borrowed_increments()
             << " surface point update(s) took the nearest volume point's increment, their own "

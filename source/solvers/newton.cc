@@ -25,16 +25,17 @@ namespace GelMPM
       "scales: G |Omega_0|^((dim-1)/dim) for the displacement block and "
       "(k_BT/nu) |Omega_0| for the chemical-potential block. At least 1e-14 (below, "
       "the residuals stop on round-off).");
-    prm.declare_entry("Line search",
-                      "physical",
-                      dealii::Patterns::Selection("none|physical|merit|adaptive"),
-                      "How Newton updates are damped, by backtracking (1, 1/2, 1/4, ...): "
-                      "'physical' until the trial state is physical at every point (J > 1, a "
-                      "fraction-to-the-boundary rule); 'merit' in addition until the scaled "
-                      "residual norm decreases (Armijo's rule); 'adaptive': 'physical', and an "
-                      "attempt that fails to converge is retried once at the same step with "
-                      "'merit' before the step is cut; 'none': full updates, and a trial "
-                      "state with J <= 1 fails the attempt (doc/method.md, 'Newton').");
+    prm.declare_entry(
+      "Line search",
+      "physical",
+      dealii::Patterns::Selection("none|physical|merit|adaptive"),
+      "How Newton updates are damped, by backtracking (1, 1/2, 1/4, ...): "
+      "'physical' until the trial state is physical at every point (J > 1, a "
+      "fraction-to-the-boundary rule); 'merit' in addition until the scaled "
+      "residual norm decreases (Armijo's rule); 'adaptive': 'physical', and an "
+      "attempt that fails to converge is retried at the same step with 'merit' "
+      "(kept for the step's retakes) before the step is cut; 'none': full updates, and a trial "
+      "state with J <= 1 fails the attempt (doc/method.md, 'Newton').");
     prm.declare_entry(
       "Initial chemical potential",
       "points",

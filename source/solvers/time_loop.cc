@@ -234,7 +234,7 @@ namespace GelMPM
     for (auto *observer : observers)
       observer->step_begins();
     dealii::Vector<double> solution;
-    // 'Line search = adaptive': the attempt after a failed one at the same step uses Armijo's.
+    // 'Line search = adaptive': whether the next attempt takes Armijo's rule.
     bool armijo_retry = false;
     for (unsigned int attempt = 1;; ++attempt)
       {
@@ -246,10 +246,13 @@ namespace GelMPM
         if (!bound_attempt(t_begin, step_dt))
           return StepOutcome::failed;
         model.prepare_attempt(t_begin, step_dt, last_dt, solution);
+        // Armijo's rule after a failed attempt at this size, and for the retakes of a step it
+        // took: near the same fold. A shorter step after its own failure tries 'physical' first.
+        const bool     armijo_attempt   = armijo_retry;
         NewtonSettings attempt_settings = newton_settings;
         if (newton_settings.line_search == NewtonSettings::LineSearch::adaptive)
-          attempt_settings.line_search =
-            armijo_retry ? NewtonSettings::LineSearch::merit : NewtonSettings::LineSearch::physical;
+          attempt_settings.line_search = armijo_attempt ? NewtonSettings::LineSearch::merit
+                                                        : NewtonSettings::LineSearch::physical;
         NewtonReport report = solve_newton(model.system(),
                                            solution,
                                            step_dt * run_scales.tau_d,
@@ -263,12 +266,11 @@ namespace GelMPM
         fresh_tangents_ += report.fresh_tangents;
         n_switch_updates += report.switch_updates;
         n_unsettled_switches += report.converged && report.switches_unsettled;
-        n_armijo_converged += armijo_retry && report.converged;
         // Near a fold of the solution path the physical damping's full updates overshoot
         // along the soft mode; Armijo's rule follows the residual down. Only Newton's own
         // failures are retried: a motion or refusal is no matter of damping.
         if (!report.converged &&
-            newton_settings.line_search == NewtonSettings::LineSearch::adaptive && !armijo_retry)
+            newton_settings.line_search == NewtonSettings::LineSearch::adaptive && !armijo_attempt)
           {
             log << "    step " << control_.step() + 1 << " at t = " << t_begin
                 << " with dt = " << step_dt << " failed (" << report.failure
@@ -341,6 +343,7 @@ namespace GelMPM
           perturbed = observer->before_update(solution, step_dt) || perturbed;
         model.update(solution, t_begin + step_dt);
         control_.accept(report.iterations);
+        n_armijo_converged += armijo_retry;
         // A kicked state is no rest, whatever its step's rate.
         if (time_stepping.end_at_equilibrium > 0.)
           control_.judge_equilibrium(perturbed ? std::numeric_limits<double>::infinity() : rate);

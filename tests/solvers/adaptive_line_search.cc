@@ -1,13 +1,14 @@
-// 'Newton/Line search = adaptive' in the time loop: a failed attempt is retried once at the same
-// step with Armijo's rule before the step is cut. A scalar model R(x) = atan(x - 3 t) whose root
-// moves by 3 per unit time, each step starting from the last root (no predictor), one step of 1
-// to t = 1, at most 6 Newton iterations per attempt. Full Newton on atan diverges from farther
-// than 1.39 from the root (from 3: -9.5, 124, -2.4e4, ...), Armijo's damping converges from
-// anywhere (the first update is damped to 1/4, then Newton converges quadratically):
+// 'Newton/Line search = adaptive' in the time loop: an attempt that fails is retried at the same
+// step with Armijo's rule before the step is cut (and Armijo's rule kept for its retakes). A
+// scalar model R(x) = atan(x - 3 t) whose root moves by 3 per unit time, each step starting from
+// the last root (no predictor), one step of 1 to t = 1, at most 6 Newton iterations per attempt.
+// Full Newton on atan diverges from farther than 1.39 from the root (from 3: -9.5, 124, -2.4e4,
+// ...), Armijo's damping converges from anywhere (the first update is damped to 1/4, then Newton
+// converges quadratically):
 // - 'physical' (full updates here, every state being physical) fails the step of 1 and of 1/2
 //   and reaches t = 1 with a first step of 1/4, no attempt retried;
 // - 'adaptive' retries the failed attempt of 1 with Armijo's rule, which converges: t = 1 in one
-//   step, one retry counted and converged, the root within 1e-12;
+//   step, one retry counted and one step accepted with Armijo's rule, the root within 1e-12;
 // - 'merit' takes the step of 1 at once, no retry counted.
 #include <gelmpm/core/newton_system.h>
 #include <gelmpm/solvers/linear_solver.h>
@@ -148,7 +149,7 @@ main(int argc, char **argv)
             << "; no retry: " << (physical.retries.first == 0) << std::endl;
   const auto adaptive = run(LineSearch::adaptive);
   std::cout << "adaptive: reaches t = 1 in one step: " << (adaptive.finished && adaptive.steps == 1)
-            << "; one retry, converged: "
+            << "; one retry, one step accepted with it: "
             << (adaptive.retries.first == 1 && adaptive.retries.second == 1)
             << "; at the root within 1e-12: " << (std::abs(adaptive.x - 3.) < 1e-12) << std::endl;
   const auto merit = run(LineSearch::merit);

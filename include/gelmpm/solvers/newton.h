@@ -43,7 +43,7 @@ namespace GelMPM
       none,     ///< full updates; a non-physical trial state fails the attempt
       physical, ///< backtrack until every point of the trial state is physical (J > 1)
       merit,    ///< and until the scaled residual decreases (Armijo)
-      adaptive  ///< physical; a failed attempt is retried once with merit (TimeLoop::advance())
+      adaptive  ///< physical; a failed attempt is retried with merit (TimeLoop::advance())
     };
     LineSearch line_search = LineSearch::physical;
     /** Start mu from the projection of the points' mu (Simulator), not the last coefficients. */

@@ -340,8 +340,8 @@ namespace GelMPM
      * with a switch that still flipped (NewtonReport::switches_unsettled). */
     std::pair<unsigned long, unsigned long>
     switch_updates() const;
-    /** With 'Newton/Line search = adaptive': the attempts retried with Armijo's rule after a
-     * failed one, and how many of them converged. */
+    /** With 'Newton/Line search = adaptive': the failed attempts retried with Armijo's rule, and
+     * the steps accepted with it. */
     std::pair<unsigned long, unsigned long>
     armijo_retries() const;
 
@@ -456,7 +456,8 @@ namespace GelMPM
     unsigned long n_uncontrolled_errors = 0;
     unsigned long n_switch_updates      = 0;
     unsigned long n_unsettled_switches  = 0;
-    /** 'Line search = adaptive': attempts retried with Armijo's rule, and those that converged. */
+    /** 'Line search = adaptive': failed attempts retried with Armijo's rule, and steps accepted
+     * with it. */
     unsigned long n_armijo_retries   = 0;
     unsigned long n_armijo_converged = 0;
     /** Whether the log has said that the model bounds the steps (bound_step()). */
