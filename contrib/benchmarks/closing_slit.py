@@ -18,6 +18,7 @@ Measured (doc/method.md, "Where it works and where it fails"): the half and the 
 1 tau_d, the tied faces never touching; separated, the block stops at 0.124 tau_d.
 
     python3 contrib/benchmarks/closing_slit.py [--output DIR] [--end T] [--penalty P]
+        [--line-search physical|merit|adaptive]
 
 Environment: GELMPM_BUILD_DIR (default: build). Needs only Python's standard library.
 """
@@ -115,7 +116,7 @@ SELF = """subsection Contact
 end"""
 
 
-def scene(variant, out, end, penalty):
+def scene(variant, out, end, penalty, line_search):
     directory = os.path.join(out, variant)
     if variant == "half":
         # The grid reaches a cell pair beyond the plane: mu lives on cells twice as large.
@@ -128,6 +129,7 @@ def scene(variant, out, end, penalty):
                             contact=SELF.format(penalty=penalty,
                                                 separate=str(variant == "separated").lower()),
                             end=end)
+    text += "subsection Newton\n  set Line search = %s\nend\n" % line_search
     path = os.path.join(out, variant + ".prm")
     with open(path, "w") as f:
         f.write(text)
@@ -139,12 +141,14 @@ def main():
     parser.add_argument("--output", default="closing_slit")
     parser.add_argument("--end", type=float, default=1.0)
     parser.add_argument("--penalty", type=float, default=100.)
+    parser.add_argument("--line-search", default="physical",
+                        help="'Newton/Line search' of every variant (physical, merit, adaptive)")
     args = parser.parse_args()
     build = os.environ.get("GELMPM_BUILD_DIR", os.path.join(TOP, "build"))
     os.makedirs(args.output, exist_ok=True)
     results = {}
     for variant in ("half", "tied", "separated"):
-        path, directory = scene(variant, args.output, args.end, args.penalty)
+        path, directory = scene(variant, args.output, args.end, args.penalty, args.line_search)
         run = subprocess.run([os.path.join(build, "gelmpm"), path], capture_output=True, text=True,
                              env=dict(os.environ, DEAL_II_NUM_THREADS="1"))
         rows = read_rows(os.path.join(directory, "statistics.csv"))
