@@ -10,47 +10,30 @@
 // - 'adaptive' retries the failed attempt of 1 with Armijo's rule, which converges: t = 1 in one
 //   step, one retry counted and one step accepted with Armijo's rule, the root within 1e-12;
 // - 'merit' takes the step of 1 at once, no retry counted.
-#include <gelmpm/core/newton_system.h>
 #include <gelmpm/solvers/linear_solver.h>
 #include <gelmpm/solvers/time_loop.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <cmath>
 #include <iostream>
 #include <sstream>
 
+#include "scalar_system.h"
+
 namespace
 {
   /** R(x) = atan(x - c) on one unknown. */
-  class ArctanSystem : public GelMPM::NewtonSystem
+  class ArctanSystem : public GelMPMTests::ScalarSystem
   {
   public:
-    ArctanSystem()
-    {
-      dealii::DynamicSparsityPattern pattern(1, 1);
-      pattern.add(0, 0);
-      matrix_.reinit(pattern);
-      residual_.reinit(1);
-    }
-
     void
     assemble(const dealii::Vector<double> &x, const double, const bool with_matrix) override
     {
       const double y = x(0) - root;
-      residual_(0)   = std::atan(y);
-      if (with_matrix)
-        matrix_.set(0, 0, 1. / (1. + y * y));
-      matrix_.compress(dealii::VectorOperation::insert);
-    }
-
-    unsigned int
-    n_u_dofs() const override
-    {
-      return 1;
+      set(std::atan(y), 1. / (1. + y * y), with_matrix);
     }
 
     double root = 0.;

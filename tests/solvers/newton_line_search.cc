@@ -10,42 +10,25 @@
 #include <gelmpm/solvers/newton.h>
 
 #include <deal.II/base/mpi.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <cmath>
 #include <iostream>
 
+#include "scalar_system.h"
+
 namespace
 {
   /** R(x) = log(x - 1) on one unknown, with the interface solve_newton() needs. */
-  class LogarithmSystem : public GelMPM::NewtonSystem
+  class LogarithmSystem : public GelMPMTests::ScalarSystem
   {
   public:
-    LogarithmSystem()
-    {
-      dealii::DynamicSparsityPattern pattern(1, 1);
-      pattern.add(0, 0);
-      matrix_.reinit(pattern);
-      residual_.reinit(1);
-    }
-
     void
     assemble(const dealii::Vector<double> &x, const double, const bool with_matrix) override
     {
       if (!(x(0) > 1.))
         throw GelMPM::NonPhysicalState("the state x = " + std::to_string(x(0)) +
                                        " is outside the physical range x > 1");
-      residual_(0) = std::log(x(0) - 1.);
-      if (with_matrix)
-        matrix_.set(0, 0, 1. / (x(0) - 1.));
-      matrix_.compress(dealii::VectorOperation::insert);
-    }
-
-    /** The one unknown is a "displacement": |R_u| = |R|, |R_mu| = 0. */
-    unsigned int
-    n_u_dofs() const override
-    {
-      return 1;
+      set(std::log(x(0) - 1.), 1. / (x(0) - 1.), with_matrix);
     }
   };
 

@@ -14,41 +14,28 @@
 #include <gelmpm/solvers/newton.h>
 
 #include <deal.II/base/mpi.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <cmath>
 #include <iostream>
 
+#include "scalar_system.h"
+
 namespace
 {
   /** R(x) = x - 1 + c s, s = [x > a] or held, with the interface solve_newton() needs. */
-  class SwitchSystem : public GelMPM::NewtonSystem
+  class SwitchSystem : public GelMPMTests::ScalarSystem
   {
   public:
     SwitchSystem(const double c, const double a)
       : c(c)
       , a(a)
-    {
-      dealii::DynamicSparsityPattern pattern(1, 1);
-      pattern.add(0, 0);
-      matrix_.reinit(pattern);
-      residual_.reinit(1);
-    }
+    {}
 
     void
     assemble(const dealii::Vector<double> &x, const double, const bool with_matrix) override
     {
       const bool s = held >= 0 ? held == 1 : live(x);
-      residual_(0) = x(0) - 1. + (s ? c : 0.);
-      if (with_matrix)
-        matrix_.set(0, 0, 1.);
-      matrix_.compress(dealii::VectorOperation::insert);
-    }
-
-    unsigned int
-    n_u_dofs() const override
-    {
-      return 1;
+      set(x(0) - 1. + (s ? c : 0.), 1., with_matrix);
     }
 
     unsigned int
