@@ -475,9 +475,6 @@ namespace GelMPM
   BackgroundGrid<dim>::mark_region()
   {
     region_marked.assign(refinement_levels, {});
-    unsigned int n_samples = 1;
-    for (unsigned int d = 0; d < dim; ++d)
-      n_samples *= region_samples;
     for (unsigned int l = 0; l < refinement_levels; ++l)
       {
         const auto   n       = pair_cells(l);
@@ -487,37 +484,12 @@ namespace GelMPM
         region_marked[l].assign(n_total, false);
         for (unsigned int c = 0; c < n_total; ++c)
           {
-            std::array<unsigned int, dim> index;
-            unsigned int                  rest = c, parent = 0, stride = 1;
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                index[d] = rest % n[d];
-                rest /= n[d];
-                parent += index[d] / 2 * stride;
-                stride *= n[d] / 2;
-              }
             // Nested domains: only the children of a refined cell can be refined.
+            const unsigned int parent = l > 0 ? parent_cell<dim>(n, c) : 0;
             if (l > 0 && !region_marked[l - 1][parent] && !pair_cell_in_box(l - 1, parent))
               continue;
-            for (unsigned int s = 0; s < n_samples && !region_marked[l][c]; ++s)
-              {
-                dealii::Point<dim> x;
-                unsigned int       rest_s = s;
-                for (unsigned int d = 0; d < dim; ++d)
-                  {
-                    const double h = (upper[d] - lower[d]) / n[d];
-                    x[d]           = lower[d] +
-                           (index[d] + double(rest_s % region_samples) / (region_samples - 1)) * h;
-                    rest_s /= region_samples;
-                  }
-                const double value = refinement_region->value(x);
-                if (!std::isfinite(value))
-                  throw InputError("Background grid/Refinement region",
-                                   "is not a number at " + format_point(x),
-                                   "write an expression that is finite in the whole background "
-                                   "grid");
-                region_marked[l][c] = value <= 0.;
-              }
+            region_marked[l][c] =
+              level_set_meets_cell(*refinement_region, l, c, "Background grid/Refinement region");
           }
       }
   }
@@ -536,39 +508,56 @@ namespace GelMPM
   std::vector<bool>
   BackgroundGrid<dim>::moving_region_cells(const unsigned int level, const double t) const
   {
-    const auto   n         = pair_cells(level);
-    unsigned int n_total   = 1;
-    unsigned int n_samples = 1;
+    const auto   n       = pair_cells(level);
+    unsigned int n_total = 1;
     for (unsigned int d = 0; d < dim; ++d)
-      {
-        n_total *= n[d];
-        n_samples *= region_samples;
-      }
+      n_total *= n[d];
     std::vector<bool> marked(n_total, false);
     moving_region->set_time(t);
     for (unsigned int c = 0; c < n_total; ++c)
-      for (unsigned int s = 0; s < n_samples && !marked[c]; ++s)
-        {
-          dealii::Point<dim> x;
-          unsigned int       rest = c, rest_s = s;
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              const double h = (upper[d] - lower[d]) / n[d];
-              x[d]           = lower[d] +
-                     (rest % n[d] + double(rest_s % region_samples) / (region_samples - 1)) * h;
-              rest /= n[d];
-              rest_s /= region_samples;
-            }
-          const double value = moving_region->value(x);
-          if (!std::isfinite(value))
-            throw InputError("Background grid/Refinement moving region",
-                             "is not a number at " + format_point(x) +
-                               " at t = " + std::to_string(t),
-                             "write an expression that is finite in the whole background grid "
-                             "over the run");
-          marked[c] = value <= 0.;
-        }
+      marked[c] = level_set_meets_cell(*moving_region,
+                                       level,
+                                       c,
+                                       "Background grid/Refinement moving region",
+                                       " at t = " + std::to_string(t));
     return marked;
+  }
+
+
+  template <int dim>
+  bool
+  BackgroundGrid<dim>::level_set_meets_cell(const dealii::Function<dim> &level_set,
+                                            const unsigned int           level,
+                                            const unsigned int           c,
+                                            const std::string           &entry,
+                                            const std::string           &when) const
+  {
+    const auto   n         = pair_cells(level);
+    unsigned int n_samples = 1;
+    for (unsigned int d = 0; d < dim; ++d)
+      n_samples *= region_samples;
+    for (unsigned int s = 0; s < n_samples; ++s)
+      {
+        dealii::Point<dim> x;
+        unsigned int       rest = c, rest_s = s;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const double h = (upper[d] - lower[d]) / n[d];
+            x[d] =
+              lower[d] + (rest % n[d] + double(rest_s % region_samples) / (region_samples - 1)) * h;
+            rest /= n[d];
+            rest_s /= region_samples;
+          }
+        const double value = level_set.value(x);
+        if (!std::isfinite(value))
+          throw InputError(entry,
+                           "is not a number at " + format_point(x) + when,
+                           "write an expression that is finite in the whole background grid" +
+                             std::string(when.empty() ? "" : " over the run"));
+        if (value <= 0.)
+          return true;
+      }
+    return false;
   }
 
 

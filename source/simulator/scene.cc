@@ -160,107 +160,145 @@ namespace GelMPM
   }
 
 
+  namespace
+  {
+    /** The sums of the normal equations of a least-squares plane in dim coordinates. */
+    template <int dim>
+    struct PlaneSums
+    {
+      static constexpr unsigned int n_xx = dim * (dim + 1) / 2;
+      /** 1, x (dim), x x^T (upper triangle), mu, x mu (dim). */
+      static constexpr unsigned int size = 2 + 2 * dim + n_xx;
+
+      /** Add the sample @p mu at @p x (relative to the cell's centre) to @p s. */
+      static void
+      add(double *s, const dealii::Tensor<1, dim> &x, const double mu)
+      {
+        s[0] += 1.;
+        for (unsigned int d = 0, k = 0; d < dim; ++d)
+          {
+            s[1 + d] += x[d];
+            s[2 + dim + n_xx + d] += x[d] * mu;
+            for (unsigned int e = d; e < dim; ++e, ++k)
+              s[1 + dim + k] += x[d] * x[e];
+          }
+        s[1 + dim + n_xx] += mu;
+      }
+
+      /**
+       * The plane's gradient from the sums @p s of a cell of size about @p h into @p g; false
+       * where the samples are too few or spread over less than a tenth of the cell in some
+       * direction (a sliver of a cut cell), which gives no plane.
+       */
+      static bool
+      gradient(const double *s, const double h, dealii::Tensor<1, dim> &g)
+      {
+        if (s[0] < dim + 1)
+          return false;
+        // The covariance of the positions, and of the positions and mu.
+        dealii::Tensor<2, dim> C;
+        dealii::Tensor<1, dim> b;
+        for (unsigned int d = 0, k = 0; d < dim; ++d)
+          {
+            b[d] = (s[2 + dim + n_xx + d] - s[1 + d] * s[1 + dim + n_xx] / s[0]) / s[0];
+            for (unsigned int e = d; e < dim; ++e, ++k)
+              C[d][e] = C[e][d] = (s[1 + dim + k] - s[1 + d] * s[1 + e] / s[0]) / s[0];
+          }
+        if (dealii::determinant(C) <= std::pow(0.01 * h * h, dim))
+          return false;
+        g = dealii::invert(C) * b;
+        return true;
+      }
+    };
+  } // namespace
+
+
+  template <int dim>
+  bool
+  Scene<dim>::prescribed_mu(const dealii::ArrayView<const double> &properties, double &mu) const
+  {
+    using Layout    = PropertyLayout<dim>;
+    const int piece = std::lround(properties[Layout::piece]);
+    if (kind_of(properties) == PointKind::volume || piece < 0 ||
+        !boundary_conditions.piece(piece).chemical_potential_prescribed())
+      return false;
+    dealii::Point<dim> X_0;
+    for (unsigned int d = 0; d < dim; ++d)
+      X_0[d] = properties[Layout::position_0 + d];
+    mu = boundary_conditions.piece(piece).chemical_potential_value().value(X_0);
+    return true;
+  }
+
+
+  template <int dim>
+  std::vector<std::vector<double>>
+  Scene<dim>::mu_plane_sums() const
+  {
+    using Layout = PropertyLayout<dim>;
+    using Sums   = PlaneSums<dim>;
+    std::vector<std::vector<double>> sums(grid.refinement_levels);
+    for (unsigned int l = 0; l < grid.refinement_levels; ++l)
+      {
+        unsigned int n = 1;
+        for (const unsigned int n_d : grid.pair_cells(l))
+          n *= n_d;
+        sums[l].assign(Sums::size * n, 0.);
+      }
+    const auto add = [&](const dealii::Point<dim> &x, const double mu) {
+      for (unsigned int l = 0; l < grid.refinement_levels; ++l)
+        {
+          const unsigned int c = grid.pair_cell_of(x, l);
+          Sums::add(sums[l].data() + Sums::size * c, x - grid.pair_cell_centre(l, c).first, mu);
+        }
+    };
+    for (const auto &particle : particles)
+      {
+        const auto properties = particle.get_properties();
+        double     mu         = properties[Layout::mu];
+        if (kind_of(properties) == PointKind::volume)
+          add(particle.get_location(), mu);
+        // As for the mu range: a bath's mu counts before the gel has taken it up, in the cell of
+        // the material behind the point (a face on a grid line would put its points alone in
+        // the empty cell beyond, where they make no plane).
+        else if (prescribed_mu(properties, mu))
+          {
+            dealii::Tensor<1, dim> normal;
+            for (unsigned int d = 0; d < dim; ++d)
+              normal[d] = properties[Layout::normal_area_n + d];
+            const double h = grid.smallest_cell_size() / (1u << grid.refinement_levels);
+            add(particle.get_location() - 1e-3 * h * normal / normal.norm(), mu);
+          }
+      }
+    if (Collective::is_parallel(communicator))
+      for (auto &level : sums)
+        dealii::Utilities::MPI::sum(level, communicator, level);
+    return sums;
+  }
+
+
   template <int dim>
   void
   Scene<dim>::flag_mu_gradient_jumps(std::vector<std::vector<bool>> &flagged) const
   {
-    // Per cell, the least-squares plane of mu through its points: the sums of its normal
-    // equations in coordinates relative to the cell's centre, 1, x, x x^T (upper triangle), mu,
-    // x mu, summed over the ranks.
-    using Layout                = PropertyLayout<dim>;
-    constexpr unsigned int n_xx = dim * (dim + 1) / 2, n_sums = 2 + 2 * dim + n_xx;
-    const auto             sample = [&](std::vector<double>      &sums,
-                            const unsigned int        l,
-                            const dealii::Point<dim> &x,
-                            const double              mu) {
-      const unsigned int c     = grid.pair_cell_of(x, l);
-      const auto         local = x - grid.pair_cell_centre(l, c).first;
-      double            *s     = sums.data() + n_sums * c;
-      s[0] += 1.;
-      for (unsigned int d = 0, k = 0; d < dim; ++d)
-        {
-          s[1 + d] += local[d];
-          s[1 + dim + n_xx + 1 + d] += local[d] * mu;
-          for (unsigned int e = d; e < dim; ++e, ++k)
-            s[1 + dim + k] += local[d] * local[e];
-        }
-      s[1 + dim + n_xx] += mu;
-    };
+    using Sums      = PlaneSums<dim>;
+    const auto sums = mu_plane_sums();
     for (unsigned int l = 0; l < flagged.size(); ++l)
       {
-        std::vector<double> sums(n_sums * flagged[l].size(), 0.);
-        for (const auto &particle : particles)
-          {
-            const auto properties = particle.get_properties();
-            const auto x          = particle.get_location();
-            const int  piece      = std::lround(properties[Layout::piece]);
-            // As for the mu range: a bath's mu counts before the gel has taken it up.
-            if (kind_of(properties) == PointKind::volume)
-              sample(sums, l, x, properties[Layout::mu]);
-            else if (piece >= 0 && boundary_conditions.piece(piece).chemical_potential_prescribed())
-              {
-                // In the cell of the material behind the point: a face on a grid line would put
-                // its points alone in the empty cell beyond, where they make no plane.
-                dealii::Point<dim>     X_0;
-                dealii::Tensor<1, dim> normal;
-                for (unsigned int d = 0; d < dim; ++d)
-                  {
-                    X_0[d]    = properties[Layout::position_0 + d];
-                    normal[d] = properties[Layout::normal_area_n + d];
-                  }
-                const double h_l = 2. * grid.smallest_cell_size() / (1u << l);
-                sample(sums,
-                       l,
-                       x - 1e-3 * h_l * normal / normal.norm(),
-                       boundary_conditions.piece(piece).chemical_potential_value().value(X_0));
-              }
-          }
-        if (Collective::is_parallel(communicator))
-          dealii::Utilities::MPI::sum(sums, communicator, sums);
-        const auto n        = grid.pair_cells(l);
-        const auto gradient = [&](const unsigned int c, dealii::Tensor<1, dim> &g) {
-          const double *s = sums.data() + n_sums * c;
-          if (s[0] < dim + 1)
-            return false;
-          // The covariance of the positions and of positions and mu.
-          dealii::Tensor<2, dim> C;
-          dealii::Tensor<1, dim> b;
-          for (unsigned int d = 0, k = 0; d < dim; ++d)
-            {
-              b[d] = (s[1 + dim + n_xx + 1 + d] - s[1 + d] * s[1 + dim + n_xx] / s[0]) / s[0];
-              for (unsigned int e = d; e < dim; ++e, ++k)
-                C[d][e] = C[e][d] = (s[1 + dim + k] - s[1 + d] * s[1 + e] / s[0]) / s[0];
-            }
-          // Points spread over less than a tenth of the cell in some direction (a sliver of a
-          // cut cell) give no plane: no gradient there.
-          const double h = 2. * grid.pair_cell_centre(l, c).second / std::sqrt(double(dim));
-          if (dealii::determinant(C) <= std::pow(0.01 * h * h, dim))
-            return false;
-          g = dealii::invert(C) * b;
-          return true;
-        };
+        const auto                          n = grid.pair_cells(l);
         std::vector<dealii::Tensor<1, dim>> g(flagged[l].size());
         std::vector<bool>                   has(flagged[l].size());
         for (unsigned int c = 0; c < g.size(); ++c)
-          has[c] = gradient(c, g[c]);
+          has[c] = Sums::gradient(sums[l].data() + Sums::size * c,
+                                  2. * grid.pair_cell_centre(l, c).second / std::sqrt(double(dim)),
+                                  g[c]);
         // The slope's change from a cell to its face neighbour, over a cell: how far mu departs
         // from a plane across the two cells, which the degree-q pieces must follow.
         for (unsigned int c = 0; c < g.size(); ++c)
-          if (has[c])
-            {
-              unsigned int stride = 1;
-              for (unsigned int d = 0; d < dim; ++d)
-                {
-                  const unsigned int index = (c / stride) % n[d];
-                  if (index + 1 < n[d] && has[c + stride])
-                    {
-                      const double h = (grid.upper[d] - grid.lower[d]) / n[d];
-                      if ((g[c + stride] - g[c]).norm() * h > grid.refinement_mu_gradient_jump)
-                        flagged[l][c] = flagged[l][c + stride] = true;
-                    }
-                  stride *= n[d];
-                }
-            }
+          for (unsigned int d = 0, stride = 1; d < dim; stride *= n[d], ++d)
+            if (has[c] && (c / stride) % n[d] + 1 < n[d] && has[c + stride] &&
+                (g[c + stride] - g[c]).norm() * (grid.upper[d] - grid.lower[d]) / n[d] >
+                  grid.refinement_mu_gradient_jump)
+              flagged[l][c] = flagged[l][c + stride] = true;
       }
   }
 
@@ -322,8 +360,11 @@ namespace GelMPM
           highest[l][c]        = std::max(highest[l][c], mu);
         }
     };
+    // Nothing to gather for the other criteria.
     for (const auto &particle : particles)
       {
+        if (!by_mu && !by_material)
+          break;
         const auto         properties = particle.get_properties();
         const auto         x          = particle.get_location();
         dealii::Point<dim> X_0;
@@ -337,10 +378,8 @@ namespace GelMPM
         add(x, properties[Layout::mu]);
         // A bath's mu refines before the gel has taken it up (at t = 0 the points all hold
         // mu_0): the prescribed value at the start of the step.
-        const int piece = std::lround(properties[Layout::piece]);
-        if (kind_of(properties) != PointKind::volume && piece >= 0 &&
-            boundary_conditions.piece(piece).chemical_potential_prescribed())
-          add(x, boundary_conditions.piece(piece).chemical_potential_value().value(X_0));
+        if (double mu; prescribed_mu(properties, mu))
+          add(x, mu);
       }
     flagged.resize(grid.refinement_levels);
     for (unsigned int l = 0; l < grid.refinement_levels; ++l)

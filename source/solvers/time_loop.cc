@@ -266,20 +266,10 @@ namespace GelMPM
         fresh_tangents_ += report.fresh_tangents;
         n_switch_updates += report.switch_updates;
         n_unsettled_switches += report.converged && report.switches_unsettled;
-        // Near a fold of the solution path the physical damping's full updates overshoot
-        // along the soft mode; Armijo's rule follows the residual down. Only Newton's own
-        // failures are retried: a motion or refusal is no matter of damping.
-        if (!report.converged &&
-            newton_settings.line_search == NewtonSettings::LineSearch::adaptive && !armijo_attempt)
+        // Only Newton's own failures are retried: a motion or refusal is no matter of damping.
+        if (!armijo_attempt && retry_with_armijo(report, t_begin, step_dt))
           {
-            log << "    step " << control_.step() + 1 << " at t = " << t_begin
-                << " with dt = " << step_dt << " failed (" << report.failure
-                << "); retrying with Armijo's line search ('Newton/Line search = adaptive')"
-                << std::endl;
-            for (auto *observer : observers)
-              observer->attempt_rejected();
             armijo_retry = true;
-            ++n_armijo_retries;
             continue;
           }
         if (report.converged && increment_bound_applies(step_dt))
@@ -387,6 +377,25 @@ namespace GelMPM
     step_bound_said = true;
     control_.limit_attempt(bound.dt);
     step_dt = bound.dt;
+    return true;
+  }
+
+
+  bool
+  TimeLoop::retry_with_armijo(const NewtonReport &report,
+                              const double        t_begin,
+                              const double        step_dt)
+  {
+    // Near a fold of the solution path the physical damping's full updates overshoot along the
+    // soft mode; Armijo's rule follows the residual down.
+    if (report.converged || newton_settings.line_search != NewtonSettings::LineSearch::adaptive)
+      return false;
+    log << "    step " << control_.step() + 1 << " at t = " << t_begin << " with dt = " << step_dt
+        << " failed (" << report.failure
+        << "); retrying with Armijo's line search ('Newton/Line search = adaptive')" << std::endl;
+    for (auto *observer : observers)
+      observer->attempt_rejected();
+    ++n_armijo_retries;
     return true;
   }
 

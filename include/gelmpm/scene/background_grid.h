@@ -243,6 +243,18 @@ namespace GelMPM
     mark_region();
 
     /**
+     * Whether @p level_set is <= 0 at one of region_samples^dim points of the cell @p c of the
+     * grid of pairs at level @p level (corners included); InputError naming @p entry where it
+     * is not a number (@p when: the time, for the message).
+     */
+    bool
+    level_set_meets_cell(const dealii::Function<dim> &level_set,
+                         const unsigned int           level,
+                         const unsigned int           c,
+                         const std::string           &entry,
+                         const std::string           &when = "") const;
+
+    /**
      * graded_marked from the boxes, the region and the moving marks: around every refined cell
      * of level l >= 1, the cells of level l within grading_reach have refined parents, so that
      * the refined domains are admissible of class 2 (Buffa & Giannelli 2016: every truncated

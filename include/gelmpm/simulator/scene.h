@@ -247,6 +247,20 @@ namespace GelMPM
     void
     flag_mu_gradient_jumps(std::vector<std::vector<bool>> &flagged) const;
 
+    /**
+     * The sums of the normal equations of the least-squares plane of mu per level and cell of
+     * the grid of pairs (flag_mu_gradient_jumps()), over all ranks.
+     */
+    std::vector<std::vector<double>>
+    mu_plane_sums() const;
+
+    /**
+     * Whether the point of @p properties is a surface point of a piece with a prescribed mu,
+     * and then that mu at the time the boundary conditions are set to, into @p mu.
+     */
+    bool
+    prescribed_mu(const dealii::ArrayView<const double> &properties, double &mu) const;
+
     /** Flag the cells of each level within 'Refinement obstacle band' of band_obstacles. */
     void
     flag_obstacle_band(std::vector<std::vector<bool>> &flagged) const;

@@ -429,6 +429,14 @@ namespace GelMPM
     bool
     output_due();
 
+    /**
+     * With 'Newton/Line search = adaptive', whether the attempt of @p report (of @p step_dt from
+     * @p t_begin, damped as 'physical') failed and is retried at the same step with Armijo's
+     * rule; logs and counts it.
+     */
+    bool
+    retry_with_armijo(const NewtonReport &report, const double t_begin, const double step_dt);
+
     /** Log a failed attempt of @p step_dt from @p t_begin; false if the run cannot go on. */
     bool
     attempt_failed(const NewtonReport &report, const double t_begin, const double step_dt);
