@@ -1,3 +1,5 @@
+#include <gelmpm/assembly/axisymmetric_terms.h>
+#include <gelmpm/assembly/displacement_nitsche.h>
 #include <gelmpm/assembly/self_contact.h>
 #include <gelmpm/core/input_error.h>
 #include <gelmpm/core/non_physical_state.h>
@@ -5,6 +7,7 @@
 #include <gelmpm/particles/property_layout.h>
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/lac/full_matrix.h>
 
 #include <algorithm>
 #include <cmath>
@@ -69,6 +72,46 @@ namespace GelMPM
      */
     constexpr double end_tolerance = 1e-9;
 
+
+    /**
+     * The first and second derivatives of a segment's unit normal n = R e / |e| (e = x_b - x_a,
+     * R the rotation by +90 degrees) with respect to the six coordinates (x_s, x_a, x_b) of
+     * point_segment_gap(): first[i][k] = dn_i/dX_k, second[i][k][l].
+     */
+    struct NormalDerivatives
+    {
+      double first[2][6]     = {};
+      double second[2][6][6] = {};
+    };
+
+
+    NormalDerivatives
+    normal_derivatives(const Point<2> &x_a, const Point<2> &x_b)
+    {
+      // With t = e / L: dn_i/de_j = (R_ij - n_i t_j) / L and
+      // d2n_i/de_j de_k = (3 n_i t_j t_k - R_ij t_k - R_ik t_j - delta_jk n_i) / L^2.
+      const Tensor<1, 2> e = x_b - x_a;
+      const double       L = e.norm();
+      const Tensor<1, 2> t = e / L;
+      const Tensor<1, 2> n({-t[1], t[0]});
+      const double       R[2][2] = {{0., -1.}, {1., 0.}};
+      const double       in_e[3] = {0., -1., 1.};
+      NormalDerivatives  result;
+      for (unsigned int i = 0; i < 2; ++i)
+        for (unsigned int m = 0; m < 3; ++m)
+          for (unsigned int j = 0; j < 2; ++j)
+            {
+              result.first[i][2 * m + j] = in_e[m] * (R[i][j] - n[i] * t[j]) / L;
+              for (unsigned int l = 0; l < 3; ++l)
+                for (unsigned int k = 0; k < 2; ++k)
+                  result.second[i][2 * m + j][2 * l + k] =
+                    in_e[m] * in_e[l] *
+                    (3. * n[i] * t[j] * t[k] - R[i][j] * t[k] - R[i][k] * t[j] -
+                     (j == k ? n[i] : 0.)) /
+                    (L * L);
+            }
+      return result;
+    }
   } // namespace
 
 
@@ -145,7 +188,7 @@ namespace GelMPM
   {
     using Layout = PropertyLayout<dim>;
     // Flat rows of doubles for the all-gather: id, X_0, N_0 A_0, x, N_n, A_n, beta_s, the u
-    // cell, the number of functions, their DoFs and their values.
+    // cell, the number of functions, their DoFs and their values, the index of the record.
     std::vector<std::vector<double>> rows;
     const auto                      &points = cache.points();
     for (unsigned int p = 0; p < points.size(); ++p)
@@ -174,6 +217,7 @@ namespace GelMPM
                     static_cast<double>(dofs.size())});
         row.insert(row.end(), dofs.begin(), dofs.end());
         row.insert(row.end(), N, N + dofs.size());
+        row.push_back(p);
         rows.push_back(std::move(row));
       }
     const MPI_Comm communicator = cache.get_communicator();
@@ -195,7 +239,8 @@ namespace GelMPM
       const unsigned int n = static_cast<unsigned int>(row[k++]);
       s.dofs.assign(row.begin() + k, row.begin() + k + n);
       s.N.assign(row.begin() + k + n, row.begin() + k + 2 * n);
-      s.here = here;
+      s.record = static_cast<unsigned int>(row[k + 2 * n]);
+      s.here   = here;
       return s;
     };
     std::vector<Sample> samples;
@@ -330,12 +375,12 @@ namespace GelMPM
 
   template <int dim>
   unsigned int
-  SelfContactAssembler<dim>::hold_active_pairs(const PointCache<dim> &,
+  SelfContactAssembler<dim>::hold_active_pairs(const PointCache<dim>        &cache,
                                                const dealii::Vector<double> &solution,
                                                const bool                    hold) const
   {
     std::vector<PointSegmentGap> gaps;
-    const auto                   active = active_pairs(solution, gaps, false);
+    const auto active = active_pairs(solution, gaps, false, tractions(cache, solution));
     // Per group of a point's pairs, its active pair at @p solution or -1.
     std::vector<int> now;
     for (unsigned int k = 0, a = 0; k < pairs_.size();)
@@ -436,10 +481,33 @@ namespace GelMPM
 
 
   template <int dim>
+  std::vector<Tensor<1, 2>>
+  SelfContactAssembler<dim>::tractions(const PointCache<dim>        &cache,
+                                       const dealii::Vector<double> &solution) const
+  {
+    if (settings.method != SelfContactSettings::Method::nitsche)
+      return {};
+    std::vector<Tensor<1, 2>> t(samples_.size());
+    AssemblyScratch<dim>      s;
+    for (unsigned int k = 0; k < pairs_.size(); ++k)
+      if ((k == 0 || pairs_[k].point != pairs_[k - 1].point) && samples_[pairs_[k].point].here)
+        {
+          const auto &record = cache.points()[samples_[pairs_[k].point].record];
+          s.gather_block_coefficients(cache.blocks()[record.block], cache, this->spaces, solution);
+          s.evaluate_point_fields(record, cache);
+          t[pairs_[k].point] =
+            point_state(record, s.delta_F, s.du_at_point, s.mu_at_point, false).P_n * record.normal;
+        }
+    return t;
+  }
+
+
+  template <int dim>
   std::vector<int>
-  SelfContactAssembler<dim>::active_pairs(const dealii::Vector<double> &solution,
-                                          std::vector<PointSegmentGap> &gaps,
-                                          const bool                    use_held) const
+  SelfContactAssembler<dim>::active_pairs(const dealii::Vector<double>    &solution,
+                                          std::vector<PointSegmentGap>    &gaps,
+                                          const bool                       use_held,
+                                          const std::vector<Tensor<1, 2>> &tractions) const
   {
     gaps.resize(pairs_.size());
     std::vector<int> active;
@@ -461,8 +529,13 @@ namespace GelMPM
             gaps[k] = point_segment_gap(x_s,
                                         current_position(pairs_[k].a, solution),
                                         current_position(pairs_[k].b, solution));
-            if (gaps[k].g < 0. && gaps[k].xi >= -end_tolerance &&
-                gaps[k].xi <= 1. + end_tolerance &&
+            // Nitsche's active set: the augmented normal traction sigma_n - beta_s g > 0 (a
+            // compressed point may lie in front of the segment); the penalty's: g < 0.
+            const bool touches =
+              tractions.empty()
+                ? gaps[k].g < 0.
+                : samples_[point].penalty * gaps[k].g - gaps[k].normal * tractions[point] < 0.;
+            if (touches && gaps[k].xi >= -end_tolerance && gaps[k].xi <= 1. + end_tolerance &&
                 (deepest < 0 || gaps[k].g < gaps[deepest].g - tie))
               deepest = k;
           }
@@ -485,7 +558,7 @@ namespace GelMPM
   {
     assemble_copy_ties(cache, solution, with_matrix, copies);
     std::vector<PointSegmentGap> gaps;
-    const auto                   active = active_pairs(solution, gaps);
+    const auto active = active_pairs(solution, gaps, true, tractions(cache, solution));
     // An iterate with a point farther behind a segment than a pair may start: not a state the
     // penalty leaves (sigma_n / beta_s) but a Newton update that overshot, whose forces would
     // throw the next one farther; the line search damps it as it damps a J <= 1.
@@ -495,70 +568,238 @@ namespace GelMPM
         throw NonPhysicalState("a surface point of the self-contact lies " +
                                std::to_string(-gaps[k].g) +
                                " behind the surface, beyond 'Contact/Self contact/Largest depth'");
+    // Every rank knows every pair; the point's rank adds it (the residual is summed over the
+    // ranks).
     for (const int k : active)
+      if (samples_[pairs_[k].point].here)
+        copies.push_back(settings.method == SelfContactSettings::Method::nitsche
+                           ? nitsche_pair(cache, solution, pairs_[k], gaps[k], with_matrix)
+                           : penalty_pair(pairs_[k], gaps[k], with_matrix));
+  }
+
+
+  template <int dim>
+  AssemblyCopy
+  SelfContactAssembler<dim>::penalty_pair(const Pair            &pair,
+                                          const PointSegmentGap &gap,
+                                          const bool             with_matrix) const
+  {
+    // W = A beta g^2 / 2: dW = A beta g dg, d2W = A beta (dg (x) dg + g d2g).
+    const double       scale    = samples_[pair.point].measure * samples_[pair.point].penalty;
+    const unsigned int nodes[3] = {pair.point, pair.a, pair.b};
+    const std::vector<unsigned int> *dofs[3];
+    const double                    *N[3];
+    AssemblyCopy                     copy;
+    for (unsigned int m = 0; m < 3; ++m)
       {
-        const Pair            &pair = pairs_[k];
-        const PointSegmentGap &gap  = gaps[k];
-        // Every rank knows every pair; the point's rank adds it (the residual is summed over
-        // the ranks).
-        if (!samples_[pair.point].here)
-          continue;
-        // W = A beta g^2 / 2: dW = A beta g dg, d2W = A beta (dg (x) dg + g d2g).
-        const double       scale    = samples_[pair.point].measure * samples_[pair.point].penalty;
-        const unsigned int nodes[3] = {pair.point, pair.a, pair.b};
-        const std::vector<unsigned int> *dofs[3];
-        const double                    *N[3];
-        AssemblyCopy                     copy;
-        for (unsigned int m = 0; m < 3; ++m)
-          {
-            dofs[m] = &samples_[nodes[m]].dofs;
-            N[m]    = samples_[nodes[m]].N.data();
-            for (const unsigned int i : *dofs[m])
-              for (unsigned int d = 0; d < dim; ++d)
-                copy.dofs.push_back(dim * i + d);
-          }
-        std::sort(copy.dofs.begin(), copy.dofs.end());
-        copy.dofs.erase(std::unique(copy.dofs.begin(), copy.dofs.end()), copy.dofs.end());
-        const auto local = [&copy](const unsigned int global) {
-          return std::lower_bound(copy.dofs.begin(), copy.dofs.end(), global) - copy.dofs.begin();
-        };
-        copy.residual.reinit(copy.dofs.size());
-        if (with_matrix)
-          copy.matrix.reinit(copy.dofs.size(), copy.dofs.size());
-        for (unsigned int m = 0; m < 3; ++m)
-          for (unsigned int a = 0; a < dofs[m]->size(); ++a)
-            for (unsigned int i = 0; i < dim; ++i)
-              {
-                const unsigned int row = local(dim * (*dofs[m])[a] + i);
-                copy.residual(row) += scale * gap.g * gap.gradient[2 * m + i] * N[m][a];
-                if (!with_matrix)
-                  continue;
-                for (unsigned int l = 0; l < 3; ++l)
-                  for (unsigned int c = 0; c < dofs[l]->size(); ++c)
-                    for (unsigned int j = 0; j < dim; ++j)
-                      copy.matrix(row, local(dim * (*dofs[l])[c] + j)) +=
-                        scale * N[m][a] * N[l][c] *
-                        (gap.gradient[2 * m + i] * gap.gradient[2 * l + j] +
-                         gap.g * gap.hessian[2 * m + i][2 * l + j]);
-              }
-        copies.push_back(std::move(copy));
+        dofs[m] = &samples_[nodes[m]].dofs;
+        N[m]    = samples_[nodes[m]].N.data();
+        for (const unsigned int i : *dofs[m])
+          for (unsigned int d = 0; d < dim; ++d)
+            copy.dofs.push_back(dim * i + d);
       }
+    std::sort(copy.dofs.begin(), copy.dofs.end());
+    copy.dofs.erase(std::unique(copy.dofs.begin(), copy.dofs.end()), copy.dofs.end());
+    const auto local = [&copy](const unsigned int global) {
+      return std::lower_bound(copy.dofs.begin(), copy.dofs.end(), global) - copy.dofs.begin();
+    };
+    copy.residual.reinit(copy.dofs.size());
+    if (with_matrix)
+      copy.matrix.reinit(copy.dofs.size(), copy.dofs.size());
+    for (unsigned int m = 0; m < 3; ++m)
+      for (unsigned int a = 0; a < dofs[m]->size(); ++a)
+        for (unsigned int i = 0; i < dim; ++i)
+          {
+            const unsigned int row = local(dim * (*dofs[m])[a] + i);
+            copy.residual(row) += scale * gap.g * gap.gradient[2 * m + i] * N[m][a];
+            if (!with_matrix)
+              continue;
+            for (unsigned int l = 0; l < 3; ++l)
+              for (unsigned int c = 0; c < dofs[l]->size(); ++c)
+                for (unsigned int j = 0; j < dim; ++j)
+                  copy.matrix(row, local(dim * (*dofs[l])[c] + j)) +=
+                    scale * N[m][a] * N[l][c] *
+                    (gap.gradient[2 * m + i] * gap.gradient[2 * l + j] +
+                     gap.g * gap.hessian[2 * m + i][2 * l + j]);
+          }
+    return copy;
+  }
+
+
+  template <int dim>
+  AssemblyCopy
+  SelfContactAssembler<dim>::nitsche_pair(const PointCache<dim>        &cache,
+                                          const dealii::Vector<double> &solution,
+                                          const Pair                   &pair,
+                                          const PointSegmentGap        &gap,
+                                          const bool                    with_matrix) const
+  {
+    // With X = (x_s, x_a, x_b), sigma = n(X) . t(y) (t = P_n N_n, y the point's displacement
+    // and chemical-potential unknowns) and theta the variant's symmetry:
+    //   R = A/2 [(beta g - sigma) dg - theta g dsigma],
+    //   K = A/2 [beta dg dg - dg dsigma - theta dsigma dg + (beta g - sigma) d2g - theta g
+    //   d2sigma], d2sigma = dn^T dt + dt^T dn + t . d2n + n . d2t,
+    // each derivative in X mapped to the unknowns by X's shape values (B). dt and n . d2t come
+    // from add_displacement_nitsche() with Pi = 0 and beta = 0 (its symmetry term alone), which
+    // holds the gel's tangent and its third derivative, axisymmetric too.
+    const Sample           &sample = samples_[pair.point];
+    const PointRecord<dim> &record = cache.points()[sample.record];
+    const PointBlock       &block  = cache.blocks()[record.block];
+    AssemblyScratch<dim>    s;
+    s.gather_block_coefficients(block, cache, this->spaces, solution);
+    s.evaluate_point_fields(record, cache);
+    const unsigned int        n_y     = dim * s.n_u + s.n_mu;
+    const auto               &u_dofs  = cache.u_dofs(block);
+    const auto               &mu_dofs = cache.mu_dofs(block);
+    std::vector<unsigned int> y_dofs(n_y);
+    for (unsigned int a = 0; a < s.n_u; ++a)
+      for (unsigned int k = 0; k < dim; ++k)
+        y_dofs[dim * a + k] = dim * u_dofs[a] + k;
+    for (unsigned int b = 0; b < s.n_mu; ++b)
+      y_dofs[s.mu0() + b] = this->spaces.n_u_dofs() + mu_dofs[b];
+
+    AssemblyCopy       copy;
+    const unsigned int nodes[3] = {pair.point, pair.a, pair.b};
+    copy.dofs.assign(y_dofs.begin(), y_dofs.end());
+    for (unsigned int m = 1; m < 3; ++m)
+      for (const unsigned int i : samples_[nodes[m]].dofs)
+        for (unsigned int d = 0; d < dim; ++d)
+          copy.dofs.push_back(dim * i + d);
+    std::sort(copy.dofs.begin(), copy.dofs.end());
+    copy.dofs.erase(std::unique(copy.dofs.begin(), copy.dofs.end()), copy.dofs.end());
+    const auto local = [&copy](const unsigned int global) {
+      return std::lower_bound(copy.dofs.begin(), copy.dofs.end(), global) - copy.dofs.begin();
+    };
+    const unsigned int n = copy.dofs.size();
+
+    dealii::FullMatrix<double> B(6, n), T(2, n);
+    for (unsigned int m = 0; m < 3; ++m)
+      {
+        const Sample &node = samples_[nodes[m]];
+        for (unsigned int a = 0; a < node.dofs.size(); ++a)
+          for (unsigned int i = 0; i < dim; ++i)
+            B(2 * m + i, local(dim * node.dofs[a] + i)) += node.N[a];
+      }
+    PointRecord<dim> unit = record;
+    unit.measure          = 1.;
+    const double theta    = this->nitsche.symmetry;
+    for (unsigned int k = 0; k < dim; ++k)
+      {
+        // The symmetry term with the violation e_k: its residual is -dt_k/dy.
+        AssemblyCopy dt;
+        dt.residual.reinit(n_y);
+        Tensor<1, dim> e;
+        e[k] = 1.;
+        add_displacement_nitsche(unit,
+                                 Tensor<2, dim>(),
+                                 e,
+                                 0.,
+                                 1.,
+                                 false,
+                                 s,
+                                 dt,
+                                 this->tangent.reference_nitsche);
+        for (unsigned int j = 0; j < n_y; ++j)
+          T(k, local(y_dofs[j])) = -dt.residual(j);
+      }
+    const Tensor<1, dim> t =
+      point_state(record, s.delta_F, s.du_at_point, s.mu_at_point, false).P_n * record.normal;
+    const auto dn =
+      normal_derivatives(current_position(pair.a, solution), current_position(pair.b, solution));
+    const Tensor<1, 2> &normal = gap.normal;
+    const double        g = gap.g, beta = sample.penalty, sigma = normal * t;
+    const double        weight = 0.5 * record.measure;
+
+    // dn^T t per coordinate of X, and dg, dsigma, dn B per unknown.
+    double t_dn[6] = {};
+    for (unsigned int K = 0; K < 6; ++K)
+      for (unsigned int i = 0; i < 2; ++i)
+        t_dn[K] += t[i] * dn.first[i][K];
+    std::vector<double>        dg(n, 0.), dsigma(n, 0.);
+    dealii::FullMatrix<double> dnB(2, n);
+    for (unsigned int q = 0; q < n; ++q)
+      {
+        for (unsigned int K = 0; K < 6; ++K)
+          {
+            dg[q] += gap.gradient[K] * B(K, q);
+            dsigma[q] += t_dn[K] * B(K, q);
+            for (unsigned int i = 0; i < 2; ++i)
+              dnB(i, q) += dn.first[i][K] * B(K, q);
+          }
+        for (unsigned int i = 0; i < 2; ++i)
+          dsigma[q] += normal[i] * T(i, q);
+      }
+    copy.residual.reinit(n);
+    for (unsigned int q = 0; q < n; ++q)
+      copy.residual(q) = weight * ((beta * g - sigma) * dg[q] - theta * g * dsigma[q]);
+    if (!with_matrix)
+      return copy;
+
+    // H = (beta g - sigma) d2g - theta g t . d2n in X, and H B.
+    double H[6][6];
+    for (unsigned int K = 0; K < 6; ++K)
+      for (unsigned int L = 0; L < 6; ++L)
+        {
+          double t_d2n = 0.;
+          for (unsigned int i = 0; i < 2; ++i)
+            t_d2n += t[i] * dn.second[i][K][L];
+          H[K][L] = (beta * g - sigma) * gap.hessian[K][L] - theta * g * t_d2n;
+        }
+    dealii::FullMatrix<double> HB(6, n);
+    for (unsigned int K = 0; K < 6; ++K)
+      for (unsigned int L = 0; L < 6; ++L)
+        if (H[K][L] != 0.)
+          for (unsigned int r = 0; r < n; ++r)
+            HB(K, r) += H[K][L] * B(L, r);
+    copy.matrix.reinit(n, n);
+    for (unsigned int q = 0; q < n; ++q)
+      for (unsigned int r = 0; r < n; ++r)
+        {
+          double BHB = 0., mixed = 0.;
+          for (unsigned int K = 0; K < 6; ++K)
+            BHB += B(K, q) * HB(K, r);
+          for (unsigned int i = 0; i < 2; ++i)
+            mixed += T(i, q) * dnB(i, r) + dnB(i, q) * T(i, r);
+          copy.matrix(q, r) = weight * (beta * dg[q] * dg[r] - dg[q] * dsigma[r] -
+                                        theta * dsigma[q] * dg[r] + BHB - theta * g * mixed);
+        }
+    // n . d2t along g n: the matrix of the symmetry term with the violation g n alone.
+    AssemblyCopy third;
+    third.residual.reinit(n_y);
+    third.matrix.reinit(n_y, n_y);
+    add_displacement_nitsche(unit,
+                             Tensor<2, dim>(),
+                             g * normal,
+                             0.,
+                             theta,
+                             true,
+                             s,
+                             third,
+                             this->tangent.reference_nitsche);
+    for (unsigned int i = 0; i < n_y; ++i)
+      for (unsigned int j = 0; j < n_y; ++j)
+        copy.matrix(local(y_dofs[i]), local(y_dofs[j])) += weight * third.matrix(i, j);
+    return copy;
   }
 
 
   template <int dim>
   typename SelfContactAssembler<dim>::State
-  SelfContactAssembler<dim>::state(const PointCache<dim> &,
+  SelfContactAssembler<dim>::state(const PointCache<dim>        &cache,
                                    const dealii::Vector<double> &solution) const
   {
     // The same on every rank: the samples and the Newton vector are whole on each.
     State                        state;
     std::vector<PointSegmentGap> gaps;
-    for (const int k : active_pairs(solution, gaps))
+    const auto                   t = tractions(cache, solution);
+    for (const int k : active_pairs(solution, gaps, true, t))
       {
         const Sample &point = samples_[pairs_[k].point];
         ++state.points;
-        state.force += point.measure * point.penalty * -gaps[k].g;
+        state.force += t.empty()
+                         ? point.measure * point.penalty * -gaps[k].g
+                         : 0.5 * point.measure *
+                             (gaps[k].normal * t[pairs_[k].point] - point.penalty * gaps[k].g);
         state.area += 0.5 * point.measure;
         if (-gaps[k].g >= state.penetration)
           state.deepest_X0 = point.X0;

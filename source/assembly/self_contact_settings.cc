@@ -16,11 +16,14 @@ namespace GelMPM
     prm.declare_entry(
       "Method",
       "none",
-      Patterns::Selection("none|penalty"),
+      Patterns::Selection("none|penalty|nitsche"),
       "Contact of the gel's boundary with itself (doc/method.md, \"Contact of the gel with "
       "itself\"): none (off: no term, no cost); penalty (the surface points of 'Pieces' against "
       "the segments of their current surface, frictionless, beta_s g on a point behind a "
-      "segment). 2D (plane strain and axisymmetric), one MPI rank.");
+      "segment); nitsche (the same pairs, Nitsche's terms with the point's own normal traction "
+      "on the augmented active set beta_s g - sigma_n < 0, each face's points weighted by one "
+      "half, 'Nitsche/Variant' their symmetry; one MPI rank). 2D (plane strain and "
+      "axisymmetric).");
     prm.declare_entry(
       "Penalty",
       "100",
@@ -93,22 +96,26 @@ namespace GelMPM
   SelfContactSettings::parse_parameters(dealii::ParameterHandler &prm, const unsigned int dim)
   {
     prm.enter_subsection("Self contact");
-    method               = prm.get("Method") == "penalty" ? Method::penalty : Method::none;
-    penalty              = prm.get_double("Penalty");
-    pieces               = dealii::Utilities::split_string_list(prm.get("Pieces"), ',');
-    search_distance      = prm.get_double("Search distance");
-    minimum_arc_length   = prm.get_double("Minimum arc length");
-    largest_depth        = prm.get_double("Largest depth");
-    separate_faces       = prm.get_bool("Separate faces");
-    retake_unseen_passes = prm.get_bool("Retake unseen passes");
+    const std::string name = prm.get("Method");
+    method                 = name == "penalty"   ? Method::penalty
+                             : name == "nitsche" ? Method::nitsche
+                                                 : Method::none;
+    penalty                = prm.get_double("Penalty");
+    pieces                 = dealii::Utilities::split_string_list(prm.get("Pieces"), ',');
+    search_distance        = prm.get_double("Search distance");
+    minimum_arc_length     = prm.get_double("Minimum arc length");
+    largest_depth          = prm.get_double("Largest depth");
+    separate_faces         = prm.get_bool("Separate faces");
+    retake_unseen_passes   = prm.get_bool("Retake unseen passes");
     prm.leave_subsection();
     if (!enabled())
       return;
     const std::string section = "Contact/Self contact/";
     require(dim == 2,
             section + "Method",
-            "is penalty in a 3D scene, but self-contact is made for 2D scenes only (point to "
-            "segment; point to facet is not written yet)",
+            "is " + name +
+              " in a 3D scene, but self-contact is made for 2D scenes only (point to "
+              "segment; point to facet is not written yet)",
             "set 'Method = none', or run a 2D or axisymmetric scene");
     require(penalty > 0. && penalty <= largest_penalty,
             section + "Penalty",

@@ -26,12 +26,14 @@ namespace two_blocks
 
     /**
      * @p bottom: the upper block's lower side; @p self_contact: the entries of 'Contact/Self
-     * contact' besides its pieces; @p boxes: 'Background grid/Refinement boxes'.
+     * contact' besides its pieces; @p boxes: 'Background grid/Refinement boxes'; @p sections:
+     * further sections of the parameter file.
      */
     TwoBlocks(const double       bottom,
               const bool         axisymmetric,
               const std::string &boxes,
-              const std::string &self_contact)
+              const std::string &self_contact,
+              const std::string &sections = "")
     {
       const std::string split = std::to_string(0.5 * (0.75 + bottom));
       GelMPM::Scene<2>::declare_parameters(prm, pieces);
@@ -53,7 +55,7 @@ namespace two_blocks
         "subsection upper_bottom\nset Selector = ny < -0.5 && y > " + split + "\nend\n" +
         "subsection rest\nset Selector = x > 1e-6\nend\nend\n" +
         "subsection Contact\nsubsection Self contact\nset Pieces = lower_top, upper_bottom\n" +
-        self_contact + "\nend\nend\n");
+        self_contact + "\nend\nend\n" + sections);
       scene = std::make_unique<GelMPM::Scene<2>>(prm, pieces);
       scene->create_material_points();
       scene->create_system();

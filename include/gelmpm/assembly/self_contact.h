@@ -51,7 +51,8 @@ namespace GelMPM
   /**
    * @brief Contact of the gel's boundary with itself ('Contact/Self contact'), a pair term: the
    * surface points of the chosen free pieces against the current surface of the same body, point
-   * to segment in 2D (plane strain and axisymmetric), frictionless, by a penalty.
+   * to segment in 2D (plane strain and axisymmetric), frictionless, by a penalty or by Nitsche's
+   * method.
    *
    * At every MixedSystem::setup() (add_cell_couplings(), the points at x_n) the chosen points are
    * ordered into polylines along the surface (SurfaceGeometry::order_along_surface() on their
@@ -69,6 +70,13 @@ namespace GelMPM
    * W = A_s beta_s g^2 / 2 (beta_s = gamma_s G / h_u), R_u[w] = dW/dx . w at the three points and
    * K its exact second derivative (the segment's turning included), symmetric. Each contact is
    * seen from both sides (the points of each face against the segments of the other).
+   *
+   * By Nitsche's method ('Method = nitsche', one MPI rank) a point is active where
+   * beta_s g - sigma_n < 0, sigma_n = n . t its own normal traction t = P_n N_n against the
+   * segment's normal n, and adds, weighted by one half (each contact is seen from both faces),
+   * R = A_s [(beta_s g - sigma_n) dg - theta g dsigma_n] with theta the Nitsche variant's
+   * symmetry: for theta = 1 the first derivative of A_s (beta_s g^2 / 2 - g sigma_n), and K its
+   * exact derivative (nitsche_pair()).
    *
    * Its per-point assemble() adds nothing: what it adds goes beyond the blocks. Not in a scene's
    * list when the subsection is off. 2D only (Scene refuses 3D).
@@ -116,12 +124,14 @@ namespace GelMPM
     {
       /** Points in active contact (each face's points count). */
       unsigned int points = 0;
-      /** The sum of the pairs' normal forces, sum A_s beta_s |g| (the force on each face). */
+      /** The sum of the pairs' normal forces, sum A_s beta_s |g| (the force on each face);
+       * under Nitsche's method sum A_s (sigma_n - beta_s g) / 2. */
       double force = 0.;
       /** Half the sum of the active points' A_s: the area (2D: length) in contact, both faces
        * being seen. */
       double area = 0.;
-      /** The largest penetration -g of an active point (0 if none). */
+      /** The largest penetration -g of an active point (0 if none; Nitsche's active points
+       * may lie in front of the segment, g > 0). */
       double penetration = 0.;
       /** The initial position of that point (which pore or piece touches). */
       dealii::Point<2> deepest_X0;
@@ -179,6 +189,8 @@ namespace GelMPM
       std::vector<double>       N;
       /** Whether this rank holds the point (and assembles its pairs). */
       bool here = true;
+      /** Its index in PointCache::points() on the rank that holds it. */
+      unsigned int record = 0;
     };
 
     /** A point and a segment (the samples of its ends, in the polyline's order). */
@@ -209,11 +221,39 @@ namespace GelMPM
     dealii::Point<2>
     current_position(const unsigned int p, const dealii::Vector<double> &solution) const;
 
-    /** Per pair, its gap at @p solution; the indices of the active pairs, one per point. */
+    /**
+     * Per pair, its gap at @p solution; the indices of the active pairs, one per point. With
+     * @p tractions (Nitsche's method) the active set is Nitsche's, beta_s g - sigma_n < 0, else
+     * the penalty's, g < 0 (also "behind the surface" for unseen_contacts()).
+     */
     std::vector<int>
-    active_pairs(const dealii::Vector<double> &solution,
-                 std::vector<PointSegmentGap> &gaps,
-                 const bool                    use_held = true) const;
+    active_pairs(const dealii::Vector<double>            &solution,
+                 std::vector<PointSegmentGap>            &gaps,
+                 const bool                               use_held  = true,
+                 const std::vector<dealii::Tensor<1, 2>> &tractions = {}) const;
+
+    /**
+     * Under Nitsche's method, per sample, the traction t = P_n N_n at @p solution of the points
+     * with pairs that this rank holds (zero elsewhere); empty under the penalty.
+     */
+    std::vector<dealii::Tensor<1, 2>>
+    tractions(const PointCache<dim> &cache, const dealii::Vector<double> &solution) const;
+
+    /** The penalty's local system of the active pair @p pair with the gap @p gap. */
+    AssemblyCopy
+    penalty_pair(const Pair &pair, const PointSegmentGap &gap, const bool with_matrix) const;
+
+    /**
+     * Nitsche's local system of the active pair @p pair with the gap @p gap at @p solution: on
+     * the displacement and chemical-potential unknowns of the point's block and the
+     * displacement unknowns of the segment's ends.
+     */
+    AssemblyCopy
+    nitsche_pair(const PointCache<dim>        &cache,
+                 const dealii::Vector<double> &solution,
+                 const Pair                   &pair,
+                 const PointSegmentGap        &gap,
+                 const bool                    with_matrix) const;
 
     /** beta_s at the point @p r. */
     double

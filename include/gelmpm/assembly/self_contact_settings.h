@@ -16,18 +16,20 @@ namespace GelMPM
    * In 2D (plane strain and axisymmetric): every surface point of the chosen pieces against the
    * segments of their current surface polylines (SurfaceGeometry::order_along_surface()), its
    * own segments and those less than 'Minimum arc length' away along the surface excepted,
-   * frictionless, by a penalty beta_s = gamma_s G / h_u on the penetration.
+   * frictionless, by a penalty beta_s = gamma_s G / h_u on the penetration, or by Nitsche's
+   * method with the same beta_s.
    */
   struct SelfContactSettings
   {
     enum class Method
     {
       none,
-      penalty
+      penalty,
+      nitsche
     };
 
     Method method = Method::none;
-    /** gamma_s: beta_s = gamma_s G / h_u. */
+    /** gamma_s: beta_s = gamma_s G / h_u (the penalty, or Nitsche's stabilisation). */
     double penalty = 100.;
     /** The pieces whose surface points touch each other (empty: every free piece). */
     std::vector<std::string> pieces;
