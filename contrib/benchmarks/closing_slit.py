@@ -11,14 +11,15 @@ swelling halves close the notch from its mouth. Variants, each run to --end tau_
   tied      the whole block, self-contact of its surface, the faces sharing the grid's functions;
   separated the same with 'Separate faces = true' (doc/method.md, "Two faces on one grid");
 with the self-contact's and the plane's penalty --penalty (default 100, the self-contact's
-default). Prints per variant the time reached, the first contact (the half's first contact
+default), the whole block's self-contact by --method (penalty, or nitsche with the point's
+traction; the half's plane keeps the penalty). Prints per variant the time reached, the first contact (the half's first contact
 point; the whole block's 'self_contact' event) and the contact force (half: the plane's force;
 whole: 'self_contact_force') at four times the half reached, and writes the scenes to --output.
 Measured (doc/method.md, "Where it works and where it fails"): the half and the tied block reach
 1 tau_d, the tied faces never touching; separated, the block stops at 0.124 tau_d.
 
     python3 contrib/benchmarks/closing_slit.py [--output DIR] [--end T] [--penalty P]
-        [--line-search physical|merit|adaptive]
+        [--line-search physical|merit|adaptive] [--method penalty|nitsche]
 
 Environment: GELMPM_BUILD_DIR (default: build). Needs only Python's standard library.
 """
@@ -108,7 +109,7 @@ end"""
 
 SELF = """subsection Contact
   subsection Self contact
-    set Method          = penalty
+    set Method          = {method}
     set Penalty         = {penalty}
     set Search distance = 3
     set Separate faces  = {separate}
@@ -116,7 +117,7 @@ SELF = """subsection Contact
 end"""
 
 
-def scene(variant, out, end, penalty, line_search):
+def scene(variant, out, end, penalty, line_search, method):
     directory = os.path.join(out, variant)
     if variant == "half":
         # The grid reaches a cell pair beyond the plane: mu lives on cells twice as large.
@@ -126,7 +127,7 @@ def scene(variant, out, end, penalty, line_search):
     else:
         text = SCENE.format(directory=directory, upper=2.5, cells=40,
                             level_set=NOTCH.format(right=2.25), pieces="right", side=RIGHT_SIDE,
-                            contact=SELF.format(penalty=penalty,
+                            contact=SELF.format(penalty=penalty, method=method,
                                                 separate=str(variant == "separated").lower()),
                             end=end)
     text += "subsection Newton\n  set Line search = %s\nend\n" % line_search
@@ -143,12 +144,15 @@ def main():
     parser.add_argument("--penalty", type=float, default=100.)
     parser.add_argument("--line-search", default="physical",
                         help="'Newton/Line search' of every variant (physical, merit, adaptive)")
+    parser.add_argument("--method", default="penalty",
+                        help="'Contact/Self contact/Method' of the whole block (penalty, nitsche)")
     args = parser.parse_args()
     build = os.environ.get("GELMPM_BUILD_DIR", os.path.join(TOP, "build"))
     os.makedirs(args.output, exist_ok=True)
     results = {}
     for variant in ("half", "tied", "separated"):
-        path, directory = scene(variant, args.output, args.end, args.penalty, args.line_search)
+        path, directory = scene(variant, args.output, args.end, args.penalty, args.line_search,
+                                args.method)
         run = subprocess.run([os.path.join(build, "gelmpm"), path], capture_output=True, text=True,
                              env=dict(os.environ, DEAL_II_NUM_THREADS="1"))
         rows = read_rows(os.path.join(directory, "statistics.csv"))
