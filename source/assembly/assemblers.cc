@@ -77,9 +77,8 @@ namespace GelMPM
     if (some_piece(flux_given))
       add(surface_term<SolventFluxAssembler>(in));
     // The gel against itself adds nothing at its points, only beyond the blocks: last.
-    if constexpr (dim == 2)
-      if (in.contact.self_contact.enabled())
-        add(surface_term<SelfContactAssembler>(in)).set_settings(in.contact.self_contact);
+    if (in.contact.self_contact.enabled())
+      add(surface_term<SelfContactAssembler>(in)).set_settings(in.contact.self_contact);
     return terms;
   }
 
@@ -118,9 +117,8 @@ namespace GelMPM
           (term->at_volume_points() ? volume_terms : surface_terms).push_back(term.get());
           if (const auto *contact = dynamic_cast<const ContactAssembler<dim> *>(term.get()))
             contact_term = contact;
-          if constexpr (dim == 2)
-            if (const auto *self = dynamic_cast<const SelfContactAssembler<dim> *>(term.get()))
-              self_contact_term = self;
+          if (const auto *self = dynamic_cast<const SelfContactAssembler<dim> *>(term.get()))
+            self_contact_term = self;
         }
   }
 

@@ -70,7 +70,7 @@ namespace GelMPM
     penalty                = prm.get_double("Penalty");
     active_set_factor      = prm.get_double("Active set factor");
     sides                  = dealii::Utilities::split_string_list(prm.get("Grid sides"), ',');
-    self_contact.parse_parameters(prm, dim);
+    self_contact.parse_parameters(prm);
     prm.leave_subsection();
 
     const std::vector<std::string> allowed(side_names.begin(), side_names.begin() + 2 * dim);

@@ -279,10 +279,8 @@ namespace GelMPM
           if (hold)
             r.contact_held = active;
         }
-    // Self-contact is 2D only (its assembler exists for dim = 2).
-    if constexpr (dim == 2)
-      if (const auto *self = terms.self_contact())
-        changed += self->hold_active_pairs(cache, solution, hold);
+    if (const auto *self = terms.self_contact())
+      changed += self->hold_active_pairs(cache, solution, hold);
     return dealii::Utilities::MPI::sum(changed, communicator);
   }
 
@@ -291,9 +289,8 @@ namespace GelMPM
   void
   MixedSystem<dim>::release_switches()
   {
-    if constexpr (dim == 2)
-      if (const auto *self = terms.self_contact())
-        self->release_active_pairs();
+    if (const auto *self = terms.self_contact())
+      self->release_active_pairs();
     for (auto &r : cache.points())
       {
         r.seal         = -1;
@@ -464,10 +461,8 @@ namespace GelMPM
   unsigned int
   MixedSystem<dim>::unseen_self_contacts(const dealii::Vector<double> &solution) const
   {
-    if constexpr (dim == 2)
-      if (const auto *self = terms.self_contact())
-        return self->unseen_contacts(cache, solution);
-    (void)solution;
+    if (const auto *self = terms.self_contact())
+      return self->unseen_contacts(cache, solution);
     return 0;
   }
 
@@ -477,16 +472,15 @@ namespace GelMPM
   MixedSystem<dim>::self_contact_state(const dealii::Vector<double> &solution) const
   {
     SelfContactState state;
-    if constexpr (dim == 2)
-      if (const auto *self = terms.self_contact())
-        {
-          const auto s      = self->state(cache, solution);
-          state.points      = s.points;
-          state.force       = s.force;
-          state.area        = s.area;
-          state.penetration = s.penetration;
-          state.deepest_X0  = s.deepest_X0;
-        }
+    if (const auto *self = terms.self_contact())
+      {
+        const auto s      = self->state(cache, solution);
+        state.points      = s.points;
+        state.force       = s.force;
+        state.area        = s.area;
+        state.penetration = s.penetration;
+        state.deepest_X0  = s.deepest_X0;
+      }
     return state;
   }
 

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 
 namespace GelMPM
 {
@@ -63,6 +64,24 @@ namespace GelMPM
   }
 
 
+  PairGap<3>
+  point_plane_gap(const Point<3> &x_s, const Point<3> &x_a, const Tensor<1, 3> &normal)
+  {
+    // g = (x_s - x_a) . n with n fixed: linear, dg/dx_s = n, dg/dx_a = -n, no second derivative.
+    PairGap<3>         result;
+    const Tensor<1, 3> d = x_s - x_a;
+    result.g             = d * normal;
+    result.xi            = (d - result.g * normal).norm();
+    result.normal        = normal;
+    for (unsigned int i = 0; i < 3; ++i)
+      {
+        result.gradient[i]     = normal[i];
+        result.gradient[3 + i] = -normal[i];
+      }
+    return result;
+  }
+
+
   namespace
   {
     /**
@@ -74,29 +93,38 @@ namespace GelMPM
 
 
     /**
-     * The first and second derivatives of a segment's unit normal n = R e / |e| (e = x_b - x_a,
-     * R the rotation by +90 degrees) with respect to the six coordinates (x_s, x_a, x_b) of
-     * point_segment_gap(): first[i][k] = dn_i/dX_k, second[i][k][l].
+     * The first and second derivatives of the normal of a pair's surface with respect to the
+     * coordinates (x_s, x_a, x_b) of PairGap: first[i][k] = dn_i/dX_k, second[i][k][l]. In 3D
+     * the normal is the point's at the start of the step: zero.
      */
+    template <int dim>
     struct NormalDerivatives
     {
-      double first[2][6]     = {};
-      double second[2][6][6] = {};
+      double first[dim][3 * dim]           = {};
+      double second[dim][3 * dim][3 * dim] = {};
     };
 
 
-    NormalDerivatives
+    NormalDerivatives<3>
+    normal_derivatives(const Point<3> &, const Point<3> &)
+    {
+      return {};
+    }
+
+
+    /** A segment's unit normal n = R e / |e| (e = x_b - x_a, R the rotation by +90 degrees). */
+    NormalDerivatives<2>
     normal_derivatives(const Point<2> &x_a, const Point<2> &x_b)
     {
       // With t = e / L: dn_i/de_j = (R_ij - n_i t_j) / L and
       // d2n_i/de_j de_k = (3 n_i t_j t_k - R_ij t_k - R_ik t_j - delta_jk n_i) / L^2.
-      const Tensor<1, 2> e = x_b - x_a;
-      const double       L = e.norm();
-      const Tensor<1, 2> t = e / L;
-      const Tensor<1, 2> n({-t[1], t[0]});
-      const double       R[2][2] = {{0., -1.}, {1., 0.}};
-      const double       in_e[3] = {0., -1., 1.};
-      NormalDerivatives  result;
+      const Tensor<1, 2>   e = x_b - x_a;
+      const double         L = e.norm();
+      const Tensor<1, 2>   t = e / L;
+      const Tensor<1, 2>   n({-t[1], t[0]});
+      const double         R[2][2] = {{0., -1.}, {1., 0.}};
+      const double         in_e[3] = {0., -1., 1.};
+      NormalDerivatives<2> result;
       for (unsigned int i = 0; i < 2; ++i)
         for (unsigned int m = 0; m < 3; ++m)
           for (unsigned int j = 0; j < 2; ++j)
@@ -111,6 +139,46 @@ namespace GelMPM
                     (L * L);
             }
       return result;
+    }
+
+
+    /** For each of the points @p x, the others within @p radius, in increasing order (by
+     * buckets of the radius). */
+    template <int dim>
+    std::vector<std::vector<unsigned int>>
+    points_within(const std::vector<Point<dim>> &x, const double radius)
+    {
+      using Key      = std::array<long, dim>;
+      const auto key = [radius](const Point<dim> &y) {
+        Key k;
+        for (unsigned int d = 0; d < dim; ++d)
+          k[d] = static_cast<long>(std::floor(y[d] / radius));
+        return k;
+      };
+      std::map<Key, std::vector<unsigned int>> buckets;
+      for (unsigned int p = 0; p < x.size(); ++p)
+        buckets[key(x[p])].push_back(p);
+      std::vector<std::vector<unsigned int>> within(x.size());
+      for (unsigned int p = 0; p < x.size(); ++p)
+        {
+          const Key k = key(x[p]);
+          for (unsigned int shift = 0;
+               shift < dealii::Utilities::pow(3u, static_cast<unsigned int>(dim));
+               ++shift)
+            {
+              Key          next = k;
+              unsigned int code = shift;
+              for (unsigned int d = 0; d < dim; ++d, code /= 3)
+                next[d] += static_cast<long>(code % 3) - 1;
+              const auto bucket = buckets.find(next);
+              if (bucket != buckets.end())
+                for (const unsigned int q : bucket->second)
+                  if (q != p && (x[p] - x[q]).norm() <= radius)
+                    within[p].push_back(q);
+            }
+          std::sort(within[p].begin(), within[p].end());
+        }
+      return within;
     }
   } // namespace
 
@@ -169,16 +237,42 @@ namespace GelMPM
 
 
   template <int dim>
-  Point<2>
+  Point<dim>
   SelfContactAssembler<dim>::current_position(const unsigned int            p,
                                               const dealii::Vector<double> &solution) const
   {
     const Sample &sample = samples_[p];
-    Point<2>      x      = sample.x;
+    Point<dim>    x      = sample.x;
     for (unsigned int a = 0; a < sample.dofs.size(); ++a)
-      for (unsigned int d = 0; d < 2; ++d)
-        x[d] += sample.N[a] * solution(2 * sample.dofs[a] + d);
+      for (unsigned int d = 0; d < dim; ++d)
+        x[d] += sample.N[a] * solution(dim * sample.dofs[a] + d);
     return x;
+  }
+
+
+  template <int dim>
+  PairGap<dim>
+  SelfContactAssembler<dim>::pair_gap(const Pair                   &pair,
+                                      const dealii::Vector<double> *solution) const
+  {
+    const auto x = [&](const unsigned int p) {
+      return solution != nullptr ? current_position(p, *solution) : samples_[p].x;
+    };
+    if constexpr (dim == 2)
+      return point_segment_gap(x(pair.point), x(pair.a), x(pair.b));
+    else
+      return point_plane_gap(x(pair.point), x(pair.a), samples_[pair.a].normal);
+  }
+
+
+  template <int dim>
+  bool
+  SelfContactAssembler<dim>::projects_onto(const Pair &pair, const PairGap<dim> &gap) const
+  {
+    if constexpr (dim == 2)
+      return gap.xi >= -end_tolerance && gap.xi <= 1. + end_tolerance;
+    else
+      return gap.xi <= samples_[pair.a].spacing;
   }
 
 
@@ -187,8 +281,8 @@ namespace GelMPM
   SelfContactAssembler<dim>::gather_samples(const PointCache<dim> &cache) const
   {
     using Layout = PropertyLayout<dim>;
-    // Flat rows of doubles for the all-gather: id, X_0, N_0 A_0, x, N_n, A_n, beta_s, the u
-    // cell, the number of functions, their DoFs and their values, the index of the record.
+    // Flat rows of doubles for the all-gather: id, X_0, N_0 A_0, x, N_n, A_n, beta_s, spacing, the
+    // u cell, the number of functions, their DoFs and their values, the index of the record.
     std::vector<std::vector<double>> rows;
     const auto                      &points = cache.points();
     for (unsigned int p = 0; p < points.size(); ++p)
@@ -202,17 +296,18 @@ namespace GelMPM
         const auto         &dofs       = cache.u_dofs(block);
         const double       *N          = cache.u_values_at(r);
         std::vector<double> row{static_cast<double>(particle->get_id())};
-        for (unsigned int d = 0; d < 2; ++d)
+        for (unsigned int d = 0; d < dim; ++d)
           row.push_back(r.X0[d]);
-        for (unsigned int d = 0; d < 2; ++d)
+        for (unsigned int d = 0; d < dim; ++d)
           row.push_back(properties[Layout::normal_area_0 + d]);
-        for (unsigned int d = 0; d < 2; ++d)
+        for (unsigned int d = 0; d < dim; ++d)
           row.push_back(r.x[d] + r.edge_offset[d]);
-        for (unsigned int d = 0; d < 2; ++d)
+        for (unsigned int d = 0; d < dim; ++d)
           row.push_back(r.normal[d]);
         row.insert(row.end(),
                    {r.measure,
                     penalty(r),
+                    std::pow(r.measure, 1. / std::max(dim - 1, 1)),
                     static_cast<double>(block.u_cell),
                     static_cast<double>(dofs.size())});
         row.insert(row.end(), dofs.begin(), dofs.end());
@@ -225,16 +320,17 @@ namespace GelMPM
       Sample       s;
       unsigned int k = 0;
       s.id           = row[k++];
-      for (unsigned int d = 0; d < 2; ++d)
+      for (unsigned int d = 0; d < dim; ++d)
         s.X0[d] = row[k++];
-      for (unsigned int d = 0; d < 2; ++d)
+      for (unsigned int d = 0; d < dim; ++d)
         s.normal_area_0[d] = row[k++];
-      for (unsigned int d = 0; d < 2; ++d)
+      for (unsigned int d = 0; d < dim; ++d)
         s.x[d] = row[k++];
-      for (unsigned int d = 0; d < 2; ++d)
+      for (unsigned int d = 0; d < dim; ++d)
         s.normal[d] = row[k++];
       s.measure            = row[k++];
       s.penalty            = row[k++];
+      s.spacing            = row[k++];
       s.u_cell             = static_cast<unsigned int>(row[k++]);
       const unsigned int n = static_cast<unsigned int>(row[k++]);
       s.dofs.assign(row.begin() + k, row.begin() + k + n);
@@ -268,78 +364,126 @@ namespace GelMPM
   std::vector<typename SelfContactAssembler<dim>::Pair>
   SelfContactAssembler<dim>::find_pairs(const dealii::Vector<double> *solution) const
   {
-    // In cells of 'Background grid/Cells' at every level: the motion within a step and
-    // the spacing of surface points, which refinement does not shorten.
-    const double                               h = this->spaces.h_u(0);
-    std::vector<SurfaceGeometry::SurfacePoint> surface;
-    for (unsigned int p = 0; p < samples_.size(); ++p)
+    if constexpr (dim == 3)
+      return find_point_pairs(solution);
+    else
       {
-        SurfaceGeometry::SurfacePoint s;
-        s.X_0      = samples_[p].X0;
-        s.normal_0 = samples_[p].normal_area_0;
-        s.x        = solution != nullptr ? current_position(p, *solution) : samples_[p].x;
-        s.index    = p;
-        surface.push_back(s);
-      }
-    // As the observables order a piece: surface points are at most h apart (a cell of the
-    // unrefined grid; refined cells hold more of them).
-    const auto line = SurfaceGeometry::order_along_surface(std::move(surface), 2. * h);
-
-    // The segments (i, i + 1) of every curve, the closing one of a closed curve, and the curve of
-    // every point.
-    std::vector<std::array<unsigned int, 2>> segments;
-    std::vector<unsigned int>                curve_of(line.points.size());
-    for (unsigned int c = 0; c < line.n_curves(); ++c)
-      {
-        const unsigned int begin = line.curve_begin[c], end = line.curve_begin[c + 1];
-        for (unsigned int i = begin; i < end; ++i)
+        // In cells of 'Background grid/Cells' at every level: the motion within a step and
+        // the spacing of surface points, which refinement does not shorten.
+        const double                               h = this->spaces.h_u(0);
+        std::vector<SurfaceGeometry::SurfacePoint> surface;
+        for (unsigned int p = 0; p < samples_.size(); ++p)
           {
-            curve_of[i] = c;
-            if (i + 1 < end)
-              segments.push_back({{i, i + 1}});
+            SurfaceGeometry::SurfacePoint s;
+            s.X_0      = samples_[p].X0;
+            s.normal_0 = samples_[p].normal_area_0;
+            s.x        = solution != nullptr ? current_position(p, *solution) : samples_[p].x;
+            s.index    = p;
+            surface.push_back(s);
           }
-        if (line.closed[c] && end - begin >= 3)
-          segments.push_back({{end - 1, begin}});
-      }
-    const auto arc_length = [&line](const unsigned int i, const unsigned int j, const unsigned c) {
-      const double s = std::abs(line.s_0[i] - line.s_0[j]);
-      return line.closed[c] ? std::min(s, line.length_0[c] - s) : s;
-    };
+        // As the observables order a piece: surface points are at most h apart (a cell of the
+        // unrefined grid; refined cells hold more of them).
+        const auto line = SurfaceGeometry::order_along_surface(std::move(surface), 2. * h);
 
-    // At the end of a step every point behind the surface counts, however deep.
+        // The segments (i, i + 1) of every curve, the closing one of a closed curve, and the curve
+        // of every point.
+        std::vector<std::array<unsigned int, 2>> segments;
+        std::vector<unsigned int>                curve_of(line.points.size());
+        for (unsigned int c = 0; c < line.n_curves(); ++c)
+          {
+            const unsigned int begin = line.curve_begin[c], end = line.curve_begin[c + 1];
+            for (unsigned int i = begin; i < end; ++i)
+              {
+                curve_of[i] = c;
+                if (i + 1 < end)
+                  segments.push_back({{i, i + 1}});
+              }
+            if (line.closed[c] && end - begin >= 3)
+              segments.push_back({{end - 1, begin}});
+          }
+        const auto arc_length =
+          [&line](const unsigned int i, const unsigned int j, const unsigned c) {
+            const double s = std::abs(line.s_0[i] - line.s_0[j]);
+            return line.closed[c] ? std::min(s, line.length_0[c] - s) : s;
+          };
+
+        // At the end of a step every point behind the surface counts, however deep.
+        const double search     = settings.search_distance * h,
+                     depth      = solution == nullptr ? settings.largest_depth * h
+                                                      : std::numeric_limits<double>::infinity(),
+                     separation = settings.minimum_arc_length * h;
+        std::vector<Pair> found;
+        for (unsigned int i = 0; i < line.points.size(); ++i)
+          {
+            const Point<2> &x_s    = line.points[i].x;
+            const auto     &normal = samples_[line.points[i].index].normal;
+            for (const auto &[ja, jb] : segments)
+              {
+                const Point<2> &x_a = line.points[ja].x, &x_b = line.points[jb].x;
+                // Bounding boxes first: most segments are far away.
+                bool far = false;
+                for (unsigned int d = 0; d < 2 && !far; ++d)
+                  far = x_s[d] < std::min(x_a[d], x_b[d]) - search ||
+                        x_s[d] > std::max(x_a[d], x_b[d]) + search;
+                if (far)
+                  continue;
+                const unsigned int c = curve_of[ja];
+                if (curve_of[i] == c &&
+                    (arc_length(i, ja, c) < separation || arc_length(i, jb, c) < separation))
+                  continue;
+                const Tensor<1, 2> e = x_b - x_a;
+                const double       L = e.norm();
+                if (L == 0.)
+                  continue;
+                const Tensor<1, 2> n({-e[1] / L, e[0] / L});
+                const double       g        = (x_s - x_a) * n;
+                const double       xi       = std::clamp((x_s - x_a) * e / (L * L), 0., 1.);
+                const double       distance = (x_s - (x_a + xi * e)).norm();
+                if (distance <= search && g >= -depth && normal * n < 0.)
+                  found.push_back(
+                    {line.points[i].index, line.points[ja].index, line.points[jb].index});
+              }
+          }
+        return found;
+      }
+  }
+
+
+  template <int dim>
+  std::vector<typename SelfContactAssembler<dim>::Pair>
+  SelfContactAssembler<dim>::find_point_pairs(const dealii::Vector<double> *solution) const
+  {
+    // In cells of the grid as given, as the 2D segments'.
+    const double h          = this->spaces.h_u(0);
     const double search     = settings.search_distance * h,
                  depth      = solution == nullptr ? settings.largest_depth * h
                                                   : std::numeric_limits<double>::infinity(),
                  separation = settings.minimum_arc_length * h;
+    std::vector<Point<dim>> x(samples_.size());
+    for (unsigned int p = 0; p < samples_.size(); ++p)
+      x[p] = solution != nullptr ? current_position(p, *solution) : samples_[p].x;
+    const auto        near = points_within(x, search);
     std::vector<Pair> found;
-    for (unsigned int i = 0; i < line.points.size(); ++i)
+    for (unsigned int s = 0; s < x.size(); ++s)
       {
-        const Point<2> &x_s    = line.points[i].x;
-        const auto     &normal = samples_[line.points[i].index].normal;
-        for (const auto &[ja, jb] : segments)
+        const Sample        &point = samples_[s];
+        const Tensor<1, dim> N_0   = point.normal_area_0 / point.normal_area_0.norm();
+        for (const unsigned int m : near[s])
           {
-            const Point<2> &x_a = line.points[ja].x, &x_b = line.points[jb].x;
-            // Bounding boxes first: most segments are far away.
-            bool far = false;
-            for (unsigned int d = 0; d < 2 && !far; ++d)
-              far = x_s[d] < std::min(x_a[d], x_b[d]) - search ||
-                    x_s[d] > std::max(x_a[d], x_b[d]) + search;
-            if (far)
+            // Facing: turned from each other by more than 120 degrees. A point of a side next
+            // to an edge of the other face is turned by 90 degrees, where round-off of the
+            // fitted normals decides the sign of N_s . N_m.
+            const Sample &other = samples_[m];
+            if (point.normal * other.normal >= -0.5)
               continue;
-            const unsigned int c = curve_of[ja];
-            if (curve_of[i] == c &&
-                (arc_length(i, ja, c) < separation || arc_length(i, jb, c) < separation))
+            // Its own face near it in the initial configuration (the flanks next to a fold's
+            // tip): as the 2D arc length, the straight distance on one face (not turned from
+            // each other by 120 degrees there).
+            if ((point.X0 - other.X0).norm() < separation &&
+                N_0 * other.normal_area_0 >= -0.5 * other.normal_area_0.norm())
               continue;
-            const Tensor<1, 2> e = x_b - x_a;
-            const double       L = e.norm();
-            if (L == 0.)
-              continue;
-            const Tensor<1, 2> n({-e[1] / L, e[0] / L});
-            const double       g        = (x_s - x_a) * n;
-            const double       xi       = std::clamp((x_s - x_a) * e / (L * L), 0., 1.);
-            const double       distance = (x_s - (x_a + xi * e)).norm();
-            if (distance <= search && g >= -depth && normal * n < 0.)
-              found.push_back({line.points[i].index, line.points[ja].index, line.points[jb].index});
+            if ((x[s] - x[m]) * other.normal >= -depth)
+              found.push_back({s, m, m});
           }
       }
     return found;
@@ -379,7 +523,7 @@ namespace GelMPM
                                                const dealii::Vector<double> &solution,
                                                const bool                    hold) const
   {
-    std::vector<PointSegmentGap> gaps;
+    std::vector<PairGap<dim>> gaps;
     const auto active = active_pairs(solution, gaps, false, tractions(cache, solution));
     // Per group of a point's pairs, its active pair at @p solution or -1.
     std::vector<int> now;
@@ -452,25 +596,19 @@ namespace GelMPM
   SelfContactAssembler<dim>::unseen_contacts(const PointCache<dim> &,
                                              const dealii::Vector<double> &solution) const
   {
-    std::vector<PointSegmentGap> gaps;
-    std::vector<bool>            seen(samples_.size(), false);
+    std::vector<PairGap<dim>> gaps;
+    std::vector<bool>         seen(samples_.size(), false);
     for (const int k : active_pairs(solution, gaps, false))
       seen[pairs_[k].point] = true;
-    // Passed through: behind the segment at the end, and at the start in front of it or no
+    // Passed through: behind the surface at the end, and at the start in front of it or no
     // deeper than a pair may start (a point of one face lies behind the other face of a thin
     // body at both ends of the step).
-    const auto start = [this](const unsigned int p) {
-      return samples_[p].x;
-    };
     const double      depth = settings.largest_depth * this->spaces.h_u(0);
     std::vector<bool> behind(samples_.size(), false);
     for (const Pair &pair : find_pairs(&solution))
       {
-        const auto gap = point_segment_gap(current_position(pair.point, solution),
-                                           current_position(pair.a, solution),
-                                           current_position(pair.b, solution));
-        if (gap.g < 0. && gap.xi >= -end_tolerance && gap.xi <= 1. + end_tolerance &&
-            point_segment_gap(start(pair.point), start(pair.a), start(pair.b)).g >= -depth)
+        const auto gap = pair_gap(pair, &solution);
+        if (gap.g < 0. && projects_onto(pair, gap) && pair_gap(pair, nullptr).g >= -depth)
           behind[pair.point] = true;
       }
     unsigned int n = 0;
@@ -481,14 +619,14 @@ namespace GelMPM
 
 
   template <int dim>
-  std::vector<Tensor<1, 2>>
+  std::vector<Tensor<1, dim>>
   SelfContactAssembler<dim>::tractions(const PointCache<dim>        &cache,
                                        const dealii::Vector<double> &solution) const
   {
     if (settings.method != SelfContactSettings::Method::nitsche)
       return {};
-    std::vector<Tensor<1, 2>> t(samples_.size());
-    AssemblyScratch<dim>      s;
+    std::vector<Tensor<1, dim>> t(samples_.size());
+    AssemblyScratch<dim>        s;
     for (unsigned int k = 0; k < pairs_.size(); ++k)
       if ((k == 0 || pairs_[k].point != pairs_[k - 1].point) && samples_[pairs_[k].point].here)
         {
@@ -504,19 +642,19 @@ namespace GelMPM
 
   template <int dim>
   std::vector<int>
-  SelfContactAssembler<dim>::active_pairs(const dealii::Vector<double>    &solution,
-                                          std::vector<PointSegmentGap>    &gaps,
-                                          const bool                       use_held,
-                                          const std::vector<Tensor<1, 2>> &tractions) const
+  SelfContactAssembler<dim>::active_pairs(const dealii::Vector<double>      &solution,
+                                          std::vector<PairGap<dim>>         &gaps,
+                                          const bool                         use_held,
+                                          const std::vector<Tensor<1, dim>> &tractions) const
   {
     gaps.resize(pairs_.size());
     std::vector<int> active;
-    // The pairs of a point follow each other; its active pair is the deepest it lies behind, or
-    // the one held (hold_active_pairs()).
+    // The pairs of a point follow each other; its active pair is the deepest it lies behind
+    // (3D: the nearest point whose tangent plane it lies behind), or the one held
+    // (hold_active_pairs()).
     for (unsigned int k = 0, group = 0; k < pairs_.size(); ++group)
       {
         const unsigned int point   = pairs_[k].point;
-        const Point<2>     x_s     = current_position(point, solution);
         int                deepest = -1;
         // A point on the common end of two segments of a straight face lies equally deep
         // behind both: which one round-off makes the deeper must not switch the active pair
@@ -526,17 +664,18 @@ namespace GelMPM
         const double tie = 1e-9 * this->spaces.h_u(0);
         for (; k < pairs_.size() && pairs_[k].point == point; ++k)
           {
-            gaps[k] = point_segment_gap(x_s,
-                                        current_position(pairs_[k].a, solution),
-                                        current_position(pairs_[k].b, solution));
+            gaps[k] = pair_gap(pairs_[k], &solution);
             // Nitsche's active set: the augmented normal traction sigma_n - beta_s g > 0 (a
             // compressed point may lie in front of the segment); the penalty's: g < 0.
             const bool touches =
               tractions.empty()
                 ? gaps[k].g < 0.
                 : samples_[point].penalty * gaps[k].g - gaps[k].normal * tractions[point] < 0.;
-            if (touches && gaps[k].xi >= -end_tolerance && gaps[k].xi <= 1. + end_tolerance &&
-                (deepest < 0 || gaps[k].g < gaps[deepest].g - tie))
+            const auto closer = [&](const PairGap<dim> &a, const PairGap<dim> &b) {
+              return dim == 2 ? a.g < b.g - tie : a.xi < b.xi - tie;
+            };
+            if (touches && projects_onto(pairs_[k], gaps[k]) &&
+                (deepest < 0 || closer(gaps[k], gaps[deepest])))
               deepest = k;
           }
         if (use_held && !held_.empty())
@@ -557,7 +696,7 @@ namespace GelMPM
                                                     std::vector<AssemblyCopy> &copies) const
   {
     assemble_copy_ties(cache, solution, with_matrix, copies);
-    std::vector<PointSegmentGap> gaps;
+    std::vector<PairGap<dim>> gaps;
     const auto active = active_pairs(solution, gaps, true, tractions(cache, solution));
     // An iterate with a point farther behind a segment than a pair may start: not a state the
     // penalty leaves (sigma_n / beta_s) but a Newton update that overshot, whose forces would
@@ -580,9 +719,9 @@ namespace GelMPM
 
   template <int dim>
   AssemblyCopy
-  SelfContactAssembler<dim>::penalty_pair(const Pair            &pair,
-                                          const PointSegmentGap &gap,
-                                          const bool             with_matrix) const
+  SelfContactAssembler<dim>::penalty_pair(const Pair         &pair,
+                                          const PairGap<dim> &gap,
+                                          const bool          with_matrix) const
   {
     // W = A beta g^2 / 2: dW = A beta g dg, d2W = A beta (dg (x) dg + g d2g).
     const double       scale    = samples_[pair.point].measure * samples_[pair.point].penalty;
@@ -611,7 +750,7 @@ namespace GelMPM
         for (unsigned int i = 0; i < dim; ++i)
           {
             const unsigned int row = local(dim * (*dofs[m])[a] + i);
-            copy.residual(row) += scale * gap.g * gap.gradient[2 * m + i] * N[m][a];
+            copy.residual(row) += scale * gap.g * gap.gradient[dim * m + i] * N[m][a];
             if (!with_matrix)
               continue;
             for (unsigned int l = 0; l < 3; ++l)
@@ -619,8 +758,8 @@ namespace GelMPM
                 for (unsigned int j = 0; j < dim; ++j)
                   copy.matrix(row, local(dim * (*dofs[l])[c] + j)) +=
                     scale * N[m][a] * N[l][c] *
-                    (gap.gradient[2 * m + i] * gap.gradient[2 * l + j] +
-                     gap.g * gap.hessian[2 * m + i][2 * l + j]);
+                    (gap.gradient[dim * m + i] * gap.gradient[dim * l + j] +
+                     gap.g * gap.hessian[dim * m + i][dim * l + j]);
           }
     return copy;
   }
@@ -631,7 +770,7 @@ namespace GelMPM
   SelfContactAssembler<dim>::nitsche_pair(const PointCache<dim>        &cache,
                                           const dealii::Vector<double> &solution,
                                           const Pair                   &pair,
-                                          const PointSegmentGap        &gap,
+                                          const PairGap<dim>           &gap,
                                           const bool                    with_matrix) const
   {
     // With X = (x_s, x_a, x_b), sigma = n(X) . t(y) (t = P_n N_n, y the point's displacement
@@ -672,13 +811,14 @@ namespace GelMPM
     };
     const unsigned int n = copy.dofs.size();
 
-    dealii::FullMatrix<double> B(6, n), T(2, n);
+    constexpr unsigned int     n_X = 3 * dim;
+    dealii::FullMatrix<double> B(n_X, n), T(dim, n);
     for (unsigned int m = 0; m < 3; ++m)
       {
         const Sample &node = samples_[nodes[m]];
         for (unsigned int a = 0; a < node.dofs.size(); ++a)
           for (unsigned int i = 0; i < dim; ++i)
-            B(2 * m + i, local(dim * node.dofs[a] + i)) += node.N[a];
+            B(dim * m + i, local(dim * node.dofs[a] + i)) += node.N[a];
       }
     PointRecord<dim> unit = record;
     unit.measure          = 1.;
@@ -706,27 +846,27 @@ namespace GelMPM
       point_state(record, s.delta_F, s.du_at_point, s.mu_at_point, false).P_n * record.normal;
     const auto dn =
       normal_derivatives(current_position(pair.a, solution), current_position(pair.b, solution));
-    const Tensor<1, 2> &normal = gap.normal;
-    const double        g = gap.g, beta = sample.penalty, sigma = normal * t;
-    const double        weight = 0.5 * record.measure;
+    const Tensor<1, dim> &normal = gap.normal;
+    const double          g = gap.g, beta = sample.penalty, sigma = normal * t;
+    const double          weight = 0.5 * record.measure;
 
     // dn^T t per coordinate of X, and dg, dsigma, dn B per unknown.
-    double t_dn[6] = {};
-    for (unsigned int K = 0; K < 6; ++K)
-      for (unsigned int i = 0; i < 2; ++i)
+    double t_dn[n_X] = {};
+    for (unsigned int K = 0; K < n_X; ++K)
+      for (unsigned int i = 0; i < dim; ++i)
         t_dn[K] += t[i] * dn.first[i][K];
     std::vector<double>        dg(n, 0.), dsigma(n, 0.);
-    dealii::FullMatrix<double> dnB(2, n);
+    dealii::FullMatrix<double> dnB(dim, n);
     for (unsigned int q = 0; q < n; ++q)
       {
-        for (unsigned int K = 0; K < 6; ++K)
+        for (unsigned int K = 0; K < n_X; ++K)
           {
             dg[q] += gap.gradient[K] * B(K, q);
             dsigma[q] += t_dn[K] * B(K, q);
-            for (unsigned int i = 0; i < 2; ++i)
+            for (unsigned int i = 0; i < dim; ++i)
               dnB(i, q) += dn.first[i][K] * B(K, q);
           }
-        for (unsigned int i = 0; i < 2; ++i)
+        for (unsigned int i = 0; i < dim; ++i)
           dsigma[q] += normal[i] * T(i, q);
       }
     copy.residual.reinit(n);
@@ -736,18 +876,18 @@ namespace GelMPM
       return copy;
 
     // H = (beta g - sigma) d2g - theta g t . d2n in X, and H B.
-    double H[6][6];
-    for (unsigned int K = 0; K < 6; ++K)
-      for (unsigned int L = 0; L < 6; ++L)
+    double H[n_X][n_X];
+    for (unsigned int K = 0; K < n_X; ++K)
+      for (unsigned int L = 0; L < n_X; ++L)
         {
           double t_d2n = 0.;
-          for (unsigned int i = 0; i < 2; ++i)
+          for (unsigned int i = 0; i < dim; ++i)
             t_d2n += t[i] * dn.second[i][K][L];
           H[K][L] = (beta * g - sigma) * gap.hessian[K][L] - theta * g * t_d2n;
         }
-    dealii::FullMatrix<double> HB(6, n);
-    for (unsigned int K = 0; K < 6; ++K)
-      for (unsigned int L = 0; L < 6; ++L)
+    dealii::FullMatrix<double> HB(n_X, n);
+    for (unsigned int K = 0; K < n_X; ++K)
+      for (unsigned int L = 0; L < n_X; ++L)
         if (H[K][L] != 0.)
           for (unsigned int r = 0; r < n; ++r)
             HB(K, r) += H[K][L] * B(L, r);
@@ -756,9 +896,9 @@ namespace GelMPM
       for (unsigned int r = 0; r < n; ++r)
         {
           double BHB = 0., mixed = 0.;
-          for (unsigned int K = 0; K < 6; ++K)
+          for (unsigned int K = 0; K < n_X; ++K)
             BHB += B(K, q) * HB(K, r);
-          for (unsigned int i = 0; i < 2; ++i)
+          for (unsigned int i = 0; i < dim; ++i)
             mixed += T(i, q) * dnB(i, r) + dnB(i, q) * T(i, r);
           copy.matrix(q, r) = weight * (beta * dg[q] * dg[r] - dg[q] * dsigma[r] -
                                         theta * dsigma[q] * dg[r] + BHB - theta * g * mixed);
@@ -789,9 +929,9 @@ namespace GelMPM
                                    const dealii::Vector<double> &solution) const
   {
     // The same on every rank: the samples and the Newton vector are whole on each.
-    State                        state;
-    std::vector<PointSegmentGap> gaps;
-    const auto                   t = tractions(cache, solution);
+    State                     state;
+    std::vector<PairGap<dim>> gaps;
+    const auto                t = tractions(cache, solution);
     for (const int k : active_pairs(solution, gaps, true, t))
       {
         const Sample &point = samples_[pairs_[k].point];
@@ -815,4 +955,5 @@ namespace GelMPM
   self_contact_pieces(const SelfContactSettings &, const BoundaryConditions<3> &);
   // 2D only: point to segment (3D, point to facet, is not written yet; the settings refuse it).
   template class SelfContactAssembler<2>;
+  template class SelfContactAssembler<3>;
 } // namespace GelMPM

@@ -23,7 +23,8 @@ namespace GelMPM
       "segment); nitsche (the same pairs, Nitsche's terms with the point's own normal traction "
       "on the augmented active set beta_s g - sigma_n < 0, each face's points weighted by one "
       "half, 'Nitsche/Variant' their symmetry; one MPI rank). 2D (plane strain and "
-      "axisymmetric).");
+      "axisymmetric): point to segment; 3D: point to the tangent plane of the nearest facing "
+      "point.");
     prm.declare_entry(
       "Penalty",
       "100",
@@ -93,7 +94,7 @@ namespace GelMPM
 
 
   void
-  SelfContactSettings::parse_parameters(dealii::ParameterHandler &prm, const unsigned int dim)
+  SelfContactSettings::parse_parameters(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection("Self contact");
     const std::string name = prm.get("Method");
@@ -111,12 +112,6 @@ namespace GelMPM
     if (!enabled())
       return;
     const std::string section = "Contact/Self contact/";
-    require(dim == 2,
-            section + "Method",
-            "is " + name +
-              " in a 3D scene, but self-contact is made for 2D scenes only (point to "
-              "segment; point to facet is not written yet)",
-            "set 'Method = none', or run a 2D or axisymmetric scene");
     require(penalty > 0. && penalty <= largest_penalty,
             section + "Penalty",
             "must lie in (0, 1e8]: above, the linear solves keep no digit",

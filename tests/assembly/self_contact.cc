@@ -16,6 +16,13 @@
 //   the system's without it) equals the central finite-difference Jacobian of its residual to
 //   1e-6 of its largest entry, and is symmetric to 1e-12 (but for the radial unknowns on the
 //   axis, which the system holds at zero).
+// By Nitsche's method ('Method = nitsche', the point's own traction, each face weighted by one
+// half) the same checks in plane strain and axisymmetric (there the residual sums to zero over the
+// axial unknowns only: a radial shift stretches the hoop, which the traction feels), and the
+// tangent against the differences also for the skew-symmetric variant (not symmetric).
+// 3D (check_term_3d()): two cubes, each point against the tangent plane of the nearest facing
+// point, penalty and Nitsche: the same balance, the tangent of the term alone against differences
+// of its residual.
 // A converged step is searched again at its end (SelfContactAssembler::unseen_contacts()): with one
 // cell of search the blocks have no pair; the upper block shifted 0.05 through the lower one has
 // points of both faces behind the other face unseen, shifted to 0.05 short of it none, and with
@@ -34,8 +41,10 @@
 
 #include <cmath>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <random>
+#include <set>
 #include <string>
 
 #include "matrix_entries.h"
@@ -236,6 +245,151 @@ namespace
   }
 
 
+  /**
+   * The pair term's residual and its entries on the unknowns of @p state, from the term alone
+   * (its local systems, summed).
+   */
+  template <int dim>
+  std::pair<Vector<double>, std::map<std::pair<unsigned int, unsigned int>, double>>
+  term_system(const GelMPM::SelfContactAssembler<dim> &term,
+              const GelMPM::MixedSystem<dim>          &system,
+              const Vector<double>                    &state,
+              const bool                               with_matrix)
+  {
+    std::vector<GelMPM::AssemblyCopy> copies;
+    term.assemble_beyond_blocks(system.point_cache(), state, 0.05, with_matrix, copies);
+    Vector<double>                                          residual(state.size());
+    std::map<std::pair<unsigned int, unsigned int>, double> entries;
+    for (const auto &copy : copies)
+      for (unsigned int i = 0; i < copy.dofs.size(); ++i)
+        {
+          residual(copy.dofs[i]) += copy.residual(i);
+          for (unsigned int j = 0; j < copy.dofs.size() && with_matrix; ++j)
+            entries[{copy.dofs[i], copy.dofs[j]}] += copy.matrix(i, j);
+        }
+    return {residual, entries};
+  }
+
+
+  /**
+   * 3D: two cubes of one body 0.25 (two cells) apart along z, the facing sides the pieces, each
+   * point against the tangent plane of the nearest facing point; the term alone (its residual
+   * from its local systems): pressed 0.05 into each other, the upper cube's z-residual is minus
+   * the reported force and every component sums to zero over all unknowns (1e-10); on that state
+   * perturbed, its tangent equals the central differences of its residual (1e-6 of its largest
+   * entry, on every fourth unknown it couples) and is symmetric (1e-12) for the penalty and the
+   * symmetric Nitsche variant.
+   */
+  bool
+  check_term_3d(const std::string &method)
+  {
+    std::cout << method << ", 3D" << std::endl;
+    ParameterHandler               prm;
+    const std::vector<std::string> pieces = {"lower_top", "upper_bottom", "rest"};
+    GelMPM::Scene<3>::declare_parameters(prm, pieces);
+    prm.parse_input_from_string(
+      "subsection Background grid\nset Lower corner = -0.25, -0.25, -0.25\n"
+      "set Upper corner = 0.75, 0.75, 1.25\nset Cells = 8, 8, 12\nend\n"
+      "subsection Geometry\nset Boxes = 0, 0, 0 : 0.5, 0.5, 0.375; 0, 0, 0.625 : 0.5, 0.5, 1\n"
+      "end\nsubsection Discretisation\nset Extended B-splines = false\nend\nsubsection Material points\nset Points per cell = 3\nend\n"
+      "subsection Boundary conditions\n"
+      "subsection lower_top\nset Selector = nz > 0.5 && z < 0.5\nend\n"
+      "subsection upper_bottom\nset Selector = nz < -0.5 && z > 0.5\nend\n"
+      "subsection rest\nset Selector = x > -1\nend\nend\n"
+      "subsection Contact\nsubsection Self contact\nset Pieces = lower_top, upper_bottom\n"
+      "set Method = " +
+      method +
+      "\nset Search distance = 2.2\nset Penalty = 1000\nset Largest depth = 0.5\n"
+      "set Separate faces = false\nend\nend\n");
+    GelMPM::Scene<3> scene(prm, pieces);
+    scene.create_material_points();
+    scene.create_system();
+    auto &system = *scene.system;
+    system.setup(scene.particles);
+    system.set_boundary_values(0.5, 0.);
+    const auto *term =
+      dynamic_cast<const GelMPM::SelfContactAssembler<3> *>(system.assemblers().back());
+    bool ok = report("the term in the list, pairs found", term != nullptr && term->n_pairs() > 0);
+    if (!ok)
+      return false;
+
+    const auto &spaces   = system.spaces();
+    const auto  greville = spaces.u_dof_greville_points();
+    const auto  pressed  = [&](const double noise) {
+      Vector<double>                   state(spaces.n_dofs());
+      std::mt19937                     rng(7);
+      std::uniform_real_distribution<> u(-1., 1.);
+      for (unsigned int i = 0; i < spaces.n_dofs(); ++i)
+        state(i) =
+          i < spaces.n_u_dofs() ? noise * u(rng) : scene.material.mu_0() + 10. * noise * u(rng);
+      // greville[i] of a z-component is its control point's z.
+      for (unsigned int i = 2; i < spaces.n_u_dofs(); i += 3)
+        if (greville[i] > 0.5)
+          state(i) -= 0.3;
+      return state;
+    };
+    const Vector<double> shifted = pressed(0.);
+    const auto           state   = term->state(system.point_cache(), shifted);
+    std::cout << "  " << term->n_pairs() << " pairs, " << state.points << " points active"
+              << std::endl;
+    ok &= report("active points on both faces, penetration 0.05 (1e-12)",
+                 state.points > 0 && std::abs(state.penetration - 0.05) < 1e-12);
+    const auto [residual, unused] = term_system(*term, system, shifted, false);
+    (void)unused;
+    double upper = 0., total[3] = {};
+    for (unsigned int i = 0; i < spaces.n_u_dofs(); ++i)
+      {
+        total[i % 3] += residual(i);
+        if (i % 3 == 2 && greville[i] > 0.5)
+          upper += residual(i);
+      }
+    ok &= report("upper cube's z-residual = -force (1e-10)",
+                 std::abs(upper + state.force) < 1e-10 * state.force);
+    ok &=
+      report("sum over all unknowns zero (1e-10 of the force)",
+             std::abs(total[0]) < 1e-10 * state.force && std::abs(total[1]) < 1e-10 * state.force &&
+               std::abs(total[2]) < 1e-10 * state.force);
+
+    const Vector<double> perturbed = pressed(2e-3);
+    const auto [r0, K]             = term_system(*term, system, perturbed, true);
+    (void)r0;
+    std::set<unsigned int> columns;
+    for (const auto &[ij, k] : K)
+      columns.insert(ij.second);
+    // Every fourth column the term couples (4 and the 3 components coprime: every kind of
+    // unknown among them); the differences cost two assemblies of the term each.
+    double       error = 0., largest = 0., asymmetry = 0.;
+    unsigned int count = 0;
+    for (const unsigned int j : columns)
+      {
+        if (count++ % 4 != 0)
+          continue;
+        const double   h = j < spaces.n_u_dofs() ? 1e-7 : 1e-6;
+        Vector<double> plus(perturbed), minus(perturbed);
+        plus(j) += h;
+        minus(j) -= h;
+        Vector<double> fd = term_system(*term, system, plus, false).first;
+        fd -= term_system(*term, system, minus, false).first;
+        fd /= 2. * h;
+        for (const unsigned int i : columns)
+          {
+            const auto   ij  = K.find({i, j});
+            const auto   ji  = K.find({j, i});
+            const double kij = ij == K.end() ? 0. : ij->second;
+            const double kji = ji == K.end() ? 0. : ji->second;
+            error            = std::max(error, std::abs(kij - fd(i)));
+            largest          = std::max(largest, std::abs(kij));
+            asymmetry        = std::max(asymmetry, std::abs(kij - kji));
+          }
+      }
+    std::cout << "  " << term->state(system.point_cache(), perturbed).points
+              << " points active on the perturbed state" << std::endl;
+    ok &= report("|K - K_fd| / max|K| < 1e-6", largest > 0. && error <= 1e-6 * largest);
+    ok &= report("symmetric to 1e-12", asymmetry <= 1e-12 * largest);
+    return ok;
+  }
+
+
   bool
   check_unseen()
   {
@@ -277,6 +431,8 @@ main(int argc, char **argv)
   ok &= check_term(false, "", "nitsche");
   ok &= check_term(true, "", "nitsche");
   ok &= check_term(false, "", "nitsche", "skew-symmetric");
+  ok &= check_term_3d("penalty");
+  ok &= check_term_3d("nitsche");
   ok &= check_unseen();
   std::cout << (ok ? "self-contact checks passed" : "SELF-CONTACT CHECKS FAILED") << std::endl;
   return ok ? 0 : 1;

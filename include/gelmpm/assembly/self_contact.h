@@ -13,28 +13,45 @@
 namespace GelMPM
 {
   /**
-   * @brief The signed gap g of a point x_s from the line of the segment [x_a, x_b] of a surface
-   * polyline, g = (x_s - x_a) . n with n the segment's outward unit normal (the polyline runs
-   * with the body on its right, SurfaceGeometry::order_along_surface(), so n is the tangent
-   * turned by +90 degrees), and its first and second derivatives with respect to the six
-   * coordinates (x_s, x_a, x_b) (component fastest). g < 0: the point is behind the segment.
+   * @brief The signed gap g of a surface point x_s from the surface of a pair term and its first
+   * and second derivatives with respect to the coordinates of the pair's three points
+   * (x_s, x_a, x_b) (component fastest). g < 0: the point is behind the surface.
+   *
+   * 2D (point_segment_gap()): from the line of the segment [x_a, x_b] of a surface polyline,
+   * g = (x_s - x_a) . n with n the segment's outward unit normal. 3D (point_plane_gap()): from
+   * the tangent plane of a surface point x_a with its unit normal n at the start of the step,
+   * g = (x_s - x_a) . n (x_b is x_a and has no share).
    */
-  struct PointSegmentGap
+  template <int dim>
+  struct PairGap
   {
     double g = 0.;
-    /** The parameter of the point's projection, 0 at x_a, 1 at x_b. */
+    /** 2D: the parameter of the point's projection, 0 at x_a, 1 at x_b. 3D: the distance of
+     * x_s from the normal line through x_a (along the tangent plane). */
     double xi = 0.;
-    /** The segment's outward unit normal. */
-    dealii::Tensor<1, 2>                 normal;
-    std::array<double, 6>                gradient{};
-    std::array<std::array<double, 6>, 6> hessian{};
+    /** The surface's outward unit normal. */
+    dealii::Tensor<1, dim>                           normal;
+    std::array<double, 3 * dim>                      gradient{};
+    std::array<std::array<double, 3 * dim>, 3 * dim> hessian{};
   };
 
-  /** The gap of @p x_s from the segment [@p x_a, @p x_b] (a segment of nonzero length). */
+  using PointSegmentGap = PairGap<2>;
+
+  /**
+   * The gap of @p x_s from the segment [@p x_a, @p x_b] (a segment of nonzero length), whose
+   * outward normal is its tangent turned by +90 degrees (the polylines run with the body on
+   * their right, SurfaceGeometry::order_along_surface()).
+   */
   PointSegmentGap
   point_segment_gap(const dealii::Point<2> &x_s,
                     const dealii::Point<2> &x_a,
                     const dealii::Point<2> &x_b);
+
+  /** The gap of @p x_s from the plane through @p x_a with the unit normal @p normal. */
+  PairGap<3>
+  point_plane_gap(const dealii::Point<3>     &x_s,
+                  const dealii::Point<3>     &x_a,
+                  const dealii::Tensor<1, 3> &normal);
 
 
   /**
@@ -134,7 +151,7 @@ namespace GelMPM
        * may lie in front of the segment, g > 0). */
       double penetration = 0.;
       /** The initial position of that point (which pore or piece touches). */
-      dealii::Point<2> deepest_X0;
+      dealii::Point<dim> deepest_X0;
     };
 
     /** The self-contact of @p solution with the step's pairs (@p cache of the last setup). */
@@ -179,10 +196,11 @@ namespace GelMPM
       /** The particle's id: the order of the samples on every partition. */
       double id = 0.;
       /** X_0 and N_0 A_0 (the polylines' order), x_n (with the edge offset), unit N_n. */
-      dealii::Point<2>     X0, x;
-      dealii::Tensor<1, 2> normal_area_0, normal;
-      /** A_n and beta_s. */
-      double measure = 0., penalty = 0.;
+      dealii::Point<dim>     X0, x;
+      dealii::Tensor<1, dim> normal_area_0, normal;
+      /** A_n, beta_s and the spacing of the surface points there (A_n^(1/(dim-1)), in 2D
+       * unused). */
+      double measure = 0., penalty = 0., spacing = 0.;
       /** The u cell of its block, its u functions (DoF indices) and their values there. */
       unsigned int              u_cell = 0;
       std::vector<unsigned int> dofs;
@@ -193,7 +211,8 @@ namespace GelMPM
       unsigned int record = 0;
     };
 
-    /** A point and a segment (the samples of its ends, in the polyline's order). */
+    /** A point and a segment (the samples of its ends, in the polyline's order); 3D: a point
+     * and the point whose tangent plane it touches (b = a). */
     struct Pair
     {
       unsigned int point, a, b;
@@ -217,8 +236,27 @@ namespace GelMPM
     std::vector<Pair>
     find_pairs(const dealii::Vector<double> *solution = nullptr) const;
 
+    /**
+     * 3D, find_pairs(): each point with the points within 'Search distance' whose tangent planes
+     * face it and that it lies in front of or at most 'Largest depth' behind; not those of its
+     * own face closer than 'Minimum arc length' in the initial configuration.
+     */
+    std::vector<Pair>
+    find_point_pairs(const dealii::Vector<double> *solution) const;
+
+    /** The gap of @p pair at @p solution (at x_n without it). */
+    PairGap<dim>
+    pair_gap(const Pair &pair, const dealii::Vector<double> *solution) const;
+
+    /**
+     * Whether the point of @p pair projects onto its surface (with the gap @p gap): 2D onto the
+     * segment (to 1e-9 of its length), 3D within the spacing of the paired point.
+     */
+    bool
+    projects_onto(const Pair &pair, const PairGap<dim> &gap) const;
+
     /** The current position x_n + du of sample @p p for @p solution. */
-    dealii::Point<2>
+    dealii::Point<dim>
     current_position(const unsigned int p, const dealii::Vector<double> &solution) const;
 
     /**
@@ -227,21 +265,21 @@ namespace GelMPM
      * the penalty's, g < 0 (also "behind the surface" for unseen_contacts()).
      */
     std::vector<int>
-    active_pairs(const dealii::Vector<double>            &solution,
-                 std::vector<PointSegmentGap>            &gaps,
-                 const bool                               use_held  = true,
-                 const std::vector<dealii::Tensor<1, 2>> &tractions = {}) const;
+    active_pairs(const dealii::Vector<double>              &solution,
+                 std::vector<PairGap<dim>>                 &gaps,
+                 const bool                                 use_held  = true,
+                 const std::vector<dealii::Tensor<1, dim>> &tractions = {}) const;
 
     /**
      * Under Nitsche's method, per sample, the traction t = P_n N_n at @p solution of the points
      * with pairs that this rank holds (zero elsewhere); empty under the penalty.
      */
-    std::vector<dealii::Tensor<1, 2>>
+    std::vector<dealii::Tensor<1, dim>>
     tractions(const PointCache<dim> &cache, const dealii::Vector<double> &solution) const;
 
     /** The penalty's local system of the active pair @p pair with the gap @p gap. */
     AssemblyCopy
-    penalty_pair(const Pair &pair, const PointSegmentGap &gap, const bool with_matrix) const;
+    penalty_pair(const Pair &pair, const PairGap<dim> &gap, const bool with_matrix) const;
 
     /**
      * Nitsche's local system of the active pair @p pair with the gap @p gap at @p solution: on
@@ -252,7 +290,7 @@ namespace GelMPM
     nitsche_pair(const PointCache<dim>        &cache,
                  const dealii::Vector<double> &solution,
                  const Pair                   &pair,
-                 const PointSegmentGap        &gap,
+                 const PairGap<dim>           &gap,
                  const bool                    with_matrix) const;
 
     /** beta_s at the point @p r. */

@@ -15,7 +15,8 @@ namespace GelMPM
    *
    * In 2D (plane strain and axisymmetric): every surface point of the chosen pieces against the
    * segments of their current surface polylines (SurfaceGeometry::order_along_surface()), its
-   * own segments and those less than 'Minimum arc length' away along the surface excepted,
+   * own segments and those less than 'Minimum arc length' away along the surface excepted; in 3D
+   * against the tangent planes of the nearest facing surface points,
    * frictionless, by a penalty beta_s = gamma_s G / h_u on the penetration, or by Nitsche's
    * method with the same beta_s.
    */
@@ -59,9 +60,9 @@ namespace GelMPM
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 
-    /** Read and check them (the section "Contact" entered); 3D is refused for now. */
+    /** Read and check them (the section "Contact" entered). */
     void
-    parse_parameters(dealii::ParameterHandler &prm, const unsigned int dim);
+    parse_parameters(dealii::ParameterHandler &prm);
   };
 } // namespace GelMPM
 
