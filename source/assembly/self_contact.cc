@@ -953,7 +953,7 @@ namespace GelMPM
   self_contact_pieces(const SelfContactSettings &, const BoundaryConditions<2> &);
   template std::vector<bool>
   self_contact_pieces(const SelfContactSettings &, const BoundaryConditions<3> &);
-  // 2D only: point to segment (3D, point to facet, is not written yet; the settings refuse it).
+  // 2D: point to segment; 3D: point to the tangent plane of the nearest facing point.
   template class SelfContactAssembler<2>;
   template class SelfContactAssembler<3>;
 } // namespace GelMPM

@@ -33,7 +33,9 @@ namespace GelMPM
       "penetration of sigma_n h_u / (100 G), 2.4e-5 on the blocks of "
       "tests/simulator/self_contact_blocks (reaction 0.24 % from the closed form); with 1000 "
       "the creasing film and the 2 x 2 lattice stop where their faces first touch, Newton "
-      "failing on the stiff active set (doc/method.md, \"Two faces on one grid\").");
+      "failing on the stiff active set (doc/method.md, \"Two faces on one grid\"). Nitsche's "
+      "method needs about 1000 for its stabilisation (with 100 the pressed blocks' third step "
+      "does not converge).");
     prm.declare_entry("Pieces",
                       "",
                       Patterns::Anything(),

@@ -68,8 +68,8 @@ namespace GelMPM
   /**
    * @brief Contact of the gel's boundary with itself ('Contact/Self contact'), a pair term: the
    * surface points of the chosen free pieces against the current surface of the same body, point
-   * to segment in 2D (plane strain and axisymmetric), frictionless, by a penalty or by Nitsche's
-   * method.
+   * to segment in 2D (plane strain and axisymmetric), point to the tangent plane of the nearest
+   * facing surface point in 3D, frictionless, by a penalty or by Nitsche's method.
    *
    * At every MixedSystem::setup() (add_cell_couplings(), the points at x_n) the chosen points are
    * ordered into polylines along the surface (SurfaceGeometry::order_along_surface() on their
@@ -96,7 +96,13 @@ namespace GelMPM
    * exact derivative (nitsche_pair()).
    *
    * Its per-point assemble() adds nothing: what it adds goes beyond the blocks. Not in a scene's
-   * list when the subsection is off. 2D only (Scene refuses 3D).
+   * list when the subsection is off.
+   *
+   * 3D (find_point_pairs()): a point's pairs are the surface points within 'Search distance'
+   * whose normals are turned from its own by more than 120 degrees and whose tangent planes (at
+   * x_n, with the unit normal N_n, fixed over the step) it lies in front of or at most 'Largest
+   * depth' behind; it is active against the nearest of them (along the tangent plane, within the
+   * spacing of that point) whose plane it lies behind, g = (x_s - x_a) . N_a < 0 (point_plane_gap()).
    *
    * On several MPI ranks the chosen surface points of every rank are gathered at each setup
    * (Sample: what a pair needs of a point, its unknowns and shape values included), in the order
