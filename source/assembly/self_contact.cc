@@ -636,6 +636,20 @@ namespace GelMPM
           t[pairs_[k].point] =
             point_state(record, s.delta_F, s.du_at_point, s.mu_at_point, false).P_n * record.normal;
         }
+    // Each point's rank evaluates its traction; every rank needs all of them for the same
+    // active sets and statistics (the positions it has whole).
+    const MPI_Comm communicator = cache.get_communicator();
+    if (dealii::Utilities::MPI::n_mpi_processes(communicator) > 1)
+      {
+        std::vector<double> flat(dim * t.size());
+        for (unsigned int p = 0; p < t.size(); ++p)
+          for (unsigned int d = 0; d < dim; ++d)
+            flat[dim * p + d] = t[p][d];
+        dealii::Utilities::MPI::sum(flat, communicator, flat);
+        for (unsigned int p = 0; p < t.size(); ++p)
+          for (unsigned int d = 0; d < dim; ++d)
+            t[p][d] = flat[dim * p + d];
+      }
     return t;
   }
 

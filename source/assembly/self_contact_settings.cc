@@ -22,7 +22,7 @@ namespace GelMPM
       "the segments of their current surface, frictionless, beta_s g on a point behind a "
       "segment); nitsche (the same pairs, Nitsche's terms with the point's own normal traction "
       "on the augmented active set beta_s g - sigma_n < 0, each face's points weighted by one "
-      "half, 'Nitsche/Variant' their symmetry; one MPI rank). 2D (plane strain and "
+      "half, 'Nitsche/Variant' their symmetry). 2D (plane strain and "
       "axisymmetric): point to segment; 3D: point to the tangent plane of the nearest facing "
       "point.");
     prm.declare_entry(

@@ -77,13 +77,6 @@ namespace GelMPM
             "several)",
             "run on one rank, or set 'Separate faces = false' (faces that share cells then stay "
             "tied)");
-    require(contact.self_contact.method != SelfContactSettings::Method::nitsche ||
-              dealii::Utilities::MPI::n_mpi_processes(communicator) == 1,
-            "Contact/Self contact/Method",
-            "is nitsche in a run on several MPI ranks, but Nitsche's active set needs the "
-            "traction of a point, which only its own rank evaluates (the penalty's needs "
-            "positions only, which every rank holds)",
-            "run on one rank, or set 'Method = penalty'");
     if (contact.self_contact.enabled())
       self_contact_pieces(contact.self_contact, boundary_conditions);
     obstacles = parse_obstacles<dim>(prm, obstacle_names);

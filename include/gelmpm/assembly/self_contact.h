@@ -88,7 +88,7 @@ namespace GelMPM
    * K its exact second derivative (the segment's turning included), symmetric. Each contact is
    * seen from both sides (the points of each face against the segments of the other).
    *
-   * By Nitsche's method ('Method = nitsche', one MPI rank) a point is active where
+   * By Nitsche's method ('Method = nitsche') a point is active where
    * beta_s g - sigma_n < 0, sigma_n = n . t its own normal traction t = P_n N_n against the
    * segment's normal n, and adds, weighted by one half (each contact is seen from both faces),
    * R = A_s [(beta_s g - sigma_n) dg - theta g dsigma_n] with theta the Nitsche variant's
