@@ -23,6 +23,14 @@ check $? "the faces touch after the first step on two ranks (force ${force:-none
 status=$?
 [[ $status -eq 2 ]] && grep -q "Contact/Self contact/Separate faces" refused.log && [[ ! -e refused ]]
 check $? "separated faces on two ranks refused with the entry named (status $status: $(grep -m1 'Separate faces' refused.log))"
+# 3D pairs on several ranks are refused, the entry named, nothing written.
+"$mpiexec" -n 2 --oversubscribe "$gelmpm" "$source_dir/tests/simulator/self_contact_blocks_3d_scene.prm" \
+  --set "Output/Directory=refused_3d" --set "Contact/Self contact/Separate faces=false" \
+  > refused_3d.log 2>&1
+status=$?
+[[ $status -eq 2 ]] && grep -q "'Contact/Self contact/Method'.*3D run on several" refused_3d.log &&
+  [[ ! -e refused_3d ]]
+check $? "3D self-contact on two ranks refused with the entry named (status $status)"
 # By Nitsche's method: each rank evaluates the tractions of its own points, and every rank
 # gathers them for the same active sets and statistics.
 rm -rf one two
