@@ -511,6 +511,11 @@ namespace GelMPM
             for (unsigned int l = k + 1; l < 3; ++l)
               if (samples_[nodes[k]].dofs != samples_[nodes[l]].dofs)
                 pairs.emplace_back(samples_[nodes[k]].u_cell, samples_[nodes[l]].u_cell);
+          // A segment's end held by another rank is in no block of this one: the entries
+          // among its own unknowns, which the pair writes too, need its cell coupled with itself.
+          for (const unsigned int node : nodes)
+            if (!samples_[node].here)
+              pairs.emplace_back(samples_[node].u_cell, samples_[node].u_cell);
         }
     for (const CopyTie &tie : cache.copy_ties())
       pairs.emplace_back(tie.cell, tie.donor_cell);

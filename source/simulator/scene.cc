@@ -77,14 +77,6 @@ namespace GelMPM
             "several)",
             "run on one rank, or set 'Separate faces = false' (faces that share cells then stay "
             "tied)");
-    require(!contact.self_contact.enabled() || dim == 2 ||
-              dealii::Utilities::MPI::n_mpi_processes(communicator) == 1,
-            "Contact/Self contact/Method",
-            "is not none in a 3D run on several MPI ranks, but the entries of the 3D pairs are "
-            "not all in the sparsity pattern there yet (the pressed cubes of "
-            "tests/simulator/self_contact_blocks_3d_scene.prm stop at their first assembly on "
-            "two ranks; 2D pairs work on several)",
-            "run a 3D scene with self-contact on one rank");
     if (contact.self_contact.enabled())
       self_contact_pieces(contact.self_contact, boundary_conditions);
     obstacles = parse_obstacles<dim>(prm, obstacle_names);

@@ -9,7 +9,7 @@
 # first step on, and no point is lost where the upper block moves 2.5 cells in one step (before,
 # deal.II dropped the points that moved beyond the ghost layer: 55 of them, and the run stopped).
 # With the default 'Separate faces = true' two ranks are refused with the entry named. The same
-# agreement by Nitsche's method ('Method = nitsche', gamma_s = 1000).
+# agreement by Nitsche's method ('Method = nitsche', gamma_s = 1000), and in 3D.
 source "$(dirname "$0")/common.sh"
 scene="$source_dir/tests/simulator/self_contact_blocks_scene.prm"
 run_both "$scene" --set "Contact/Self contact/Separate faces=false"
@@ -23,14 +23,6 @@ check $? "the faces touch after the first step on two ranks (force ${force:-none
 status=$?
 [[ $status -eq 2 ]] && grep -q "Contact/Self contact/Separate faces" refused.log && [[ ! -e refused ]]
 check $? "separated faces on two ranks refused with the entry named (status $status: $(grep -m1 'Separate faces' refused.log))"
-# 3D pairs on several ranks are refused, the entry named, nothing written.
-"$mpiexec" -n 2 --oversubscribe "$gelmpm" "$source_dir/tests/simulator/self_contact_blocks_3d_scene.prm" \
-  --set "Output/Directory=refused_3d" --set "Contact/Self contact/Separate faces=false" \
-  > refused_3d.log 2>&1
-status=$?
-[[ $status -eq 2 ]] && grep -q "'Contact/Self contact/Method'.*3D run on several" refused_3d.log &&
-  [[ ! -e refused_3d ]]
-check $? "3D self-contact on two ranks refused with the entry named (status $status)"
 # By Nitsche's method: each rank evaluates the tractions of its own points, and every rank
 # gathers them for the same active sets and statistics.
 rm -rf one two
@@ -45,4 +37,12 @@ for row in 3 4; do
   awk -v a="${one:-0}" -v b="${two:-1}" 'BEGIN { d = a - b; exit !(a > 0 && d < 1e-12 && -d < 1e-12) }'
   check $? "Nitsche: the penetration on two ranks within 1e-12 of one rank's (row $row: $one, $two)"
 done
+# 3D (the pressed cubes, two steps): each point against the tangent plane of the nearest facing
+# point; a pair whose point and plane lie on different ranks writes entries among the other
+# rank's unknowns too (before its cell was coupled with itself, the first assembly stopped on an
+# entry the pattern lacked).
+rm -rf one two
+run_both "$source_dir/tests/simulator/self_contact_blocks_3d_scene.prm" \
+  --set "Contact/Self contact/Separate faces=false" --set "Time stepping/End time=2e-3"
+compare_statistics --ignore "wall_time,residual_u,residual_mu,solvent_imbalance"
 finish
