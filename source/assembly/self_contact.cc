@@ -667,10 +667,9 @@ namespace GelMPM
           for (unsigned int d = 0; d < dim; ++d)
             copy.dofs.push_back(dim * i + d);
       }
-    std::sort(copy.dofs.begin(), copy.dofs.end());
-    copy.dofs.erase(std::unique(copy.dofs.begin(), copy.dofs.end()), copy.dofs.end());
+    internal::sort_unique(copy.dofs);
     const auto local = [&copy](const unsigned int global) {
-      return std::lower_bound(copy.dofs.begin(), copy.dofs.end(), global) - copy.dofs.begin();
+      return internal::local_index(copy.dofs, global);
     };
     copy.residual.reinit(copy.dofs.size());
     if (with_matrix)

@@ -145,10 +145,9 @@ namespace GelMPM
       for (const unsigned int i : samples_[nodes[m]].dofs)
         for (unsigned int d = 0; d < dim; ++d)
           copy.dofs.push_back(dim * i + d);
-    std::sort(copy.dofs.begin(), copy.dofs.end());
-    copy.dofs.erase(std::unique(copy.dofs.begin(), copy.dofs.end()), copy.dofs.end());
+    internal::sort_unique(copy.dofs);
     const auto local = [&copy](const unsigned int global) {
-      return std::lower_bound(copy.dofs.begin(), copy.dofs.end(), global) - copy.dofs.begin();
+      return internal::local_index(copy.dofs, global);
     };
     const unsigned int n = copy.dofs.size();
 

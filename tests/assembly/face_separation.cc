@@ -89,14 +89,9 @@ namespace
   Vector<double>
   shifted_state(const GelMPM::Scene<2> &scene, const double shift, const double noise)
   {
-    const auto                      &spaces = scene.system->spaces();
-    const auto                       used   = users(*scene.system);
-    Vector<double>                   state(spaces.n_dofs());
-    std::mt19937                     rng(7);
-    std::uniform_real_distribution<> u(-1., 1.);
-    for (unsigned int i = 0; i < spaces.n_dofs(); ++i)
-      state(i) =
-        i < spaces.n_u_dofs() ? noise * u(rng) : scene.material.mu_0() + 10. * noise * u(rng);
+    const auto    &spaces = scene.system->spaces();
+    const auto     used   = users(*scene.system);
+    Vector<double> state  = two_blocks::noisy_state(scene, noise);
     for (unsigned int i = 0; i < used.size(); ++i)
       if (used[i] & 2u)
         state(2 * i + 1) += shift;

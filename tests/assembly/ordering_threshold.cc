@@ -23,7 +23,8 @@ using GelMPM::SymmetricFactorization;
 
 namespace
 {
-  /** The 2 dim + 1-point Laplacian of an m^dim grid (Dirichlet outside), shifted to stay definite. */
+  /** The 2 dim + 1-point Laplacian of an m^dim grid (Dirichlet outside), shifted to stay definite.
+   */
   void
   laplacian(const unsigned int dim, const unsigned int m, TrilinosWrappers::SparseMatrix &K)
   {
@@ -83,9 +84,9 @@ namespace
       f->factorize(K);
     const double per_entry = automatic.estimated_flops() / lower_entries(K);
     const bool   compares  = per_entry >= SymmetricFactorization::default_comparison_threshold;
-    const double cheaper = std::min(nested.factorization_flops(), automatic.factorization_flops());
-    const double expected       = compares ? cheaper : automatic.factorization_flops();
-    const auto   same           = [](const double a, const double b) {
+    const double cheaper  = std::min(nested.factorization_flops(), automatic.factorization_flops());
+    const double expected = compares ? cheaper : automatic.factorization_flops();
+    const auto   same     = [](const double a, const double b) {
       return std::abs(a - b) <= 1e-12 * b;
     };
     if (std::getenv("ORDERING_PRINT"))
@@ -103,8 +104,8 @@ namespace
               << (nested.factorization_flops() < automatic.factorization_flops() ? "yes" : "no")
               << std::endl
               << "  without the comparison, AMF's: "
-              << (same(never.factorization_flops(), automatic.factorization_flops()) ? "yes" :
-                                                                                      "no  FAIL")
+              << (same(never.factorization_flops(), automatic.factorization_flops()) ? "yes"
+                                                                                     : "no  FAIL")
               << std::endl;
     // 20^3 must keep the nested dissection the cheaper, or the default's choice would not show.
     if (dim == 3 && nested.factorization_flops() >= automatic.factorization_flops())

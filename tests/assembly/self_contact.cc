@@ -92,16 +92,9 @@ namespace
   Vector<double>
   pressed_state(const GelMPM::Scene<2> &scene, const double noise, const double shift = 0.3)
   {
-    const auto                      &spaces   = scene.system->spaces();
-    const auto                       greville = spaces.u_dof_greville_points();
-    Vector<double>                   state(spaces.n_dofs());
-    std::mt19937                     rng(7);
-    std::uniform_real_distribution<> u(-1., 1.);
-    for (unsigned int i = 0; i < spaces.n_dofs(); ++i)
-      if (i < spaces.n_u_dofs())
-        state(i) = noise * u(rng);
-      else
-        state(i) = scene.material.mu_0() + 10. * noise * u(rng);
+    const auto    &spaces   = scene.system->spaces();
+    const auto     greville = spaces.u_dof_greville_points();
+    Vector<double> state    = two_blocks::noisy_state(scene, noise);
     // greville[i] of a y-component is its control point's y.
     for (unsigned int i = 1; i < spaces.n_u_dofs(); i += 2)
       if (greville[i] > 0.875)
@@ -316,12 +309,7 @@ namespace
     const auto &spaces   = system.spaces();
     const auto  greville = spaces.u_dof_greville_points();
     const auto  pressed  = [&](const double noise) {
-      Vector<double>                   state(spaces.n_dofs());
-      std::mt19937                     rng(7);
-      std::uniform_real_distribution<> u(-1., 1.);
-      for (unsigned int i = 0; i < spaces.n_dofs(); ++i)
-        state(i) =
-          i < spaces.n_u_dofs() ? noise * u(rng) : scene.material.mu_0() + 10. * noise * u(rng);
+      Vector<double> state = two_blocks::noisy_state(scene, noise);
       // greville[i] of a z-component is its control point's z.
       for (unsigned int i = 2; i < spaces.n_u_dofs(); i += 3)
         if (greville[i] > 0.5)

@@ -9,14 +9,34 @@
 #include <gelmpm/simulator/scene.h>
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/lac/vector.h>
 
 #include <memory>
+#include <random>
 #include <string>
 #include <vector>
 
 namespace two_blocks
 {
   const std::vector<std::string> pieces = {"lower_top", "upper_bottom", "rest"};
+
+  /**
+   * A state of @p scene's unknowns: @p noise times uniform numbers in [-1, 1] for the
+   * displacement increments, mu_0 plus 10 times that for mu (the same numbers on every run).
+   */
+  template <int dim>
+  dealii::Vector<double>
+  noisy_state(const GelMPM::Scene<dim> &scene, const double noise)
+  {
+    const auto                      &spaces = scene.system->spaces();
+    dealii::Vector<double>           state(spaces.n_dofs());
+    std::mt19937                     rng(7);
+    std::uniform_real_distribution<> u(-1., 1.);
+    for (unsigned int i = 0; i < spaces.n_dofs(); ++i)
+      state(i) =
+        i < spaces.n_u_dofs() ? noise * u(rng) : scene.material.mu_0() + 10. * noise * u(rng);
+    return state;
+  }
 
   /** The scene, set up at its first step (the boundary values at t = 0.5 of a step from 0). */
   struct TwoBlocks

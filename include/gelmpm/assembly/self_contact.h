@@ -7,6 +7,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -52,6 +53,26 @@ namespace GelMPM
   point_plane_gap(const dealii::Point<3>     &x_s,
                   const dealii::Point<3>     &x_a,
                   const dealii::Tensor<1, 3> &normal);
+
+
+  namespace internal
+  {
+    /** Sort a pair's unknowns and drop repetitions (its cells may share functions). */
+    inline void
+    sort_unique(std::vector<dealii::types::global_dof_index> &dofs)
+    {
+      std::sort(dofs.begin(), dofs.end());
+      dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+    }
+
+    /** The place of @p global among the sorted @p dofs. */
+    inline unsigned int
+    local_index(const std::vector<dealii::types::global_dof_index> &dofs,
+                const dealii::types::global_dof_index               global)
+    {
+      return std::lower_bound(dofs.begin(), dofs.end(), global) - dofs.begin();
+    }
+  } // namespace internal
 
 
   /**
@@ -102,7 +123,8 @@ namespace GelMPM
    * whose normals are turned from its own by more than 120 degrees and whose tangent planes (at
    * x_n, with the unit normal N_n, fixed over the step) it lies in front of or at most 'Largest
    * depth' behind; it is active against the nearest of them (along the tangent plane, within the
-   * spacing of that point) whose plane it lies behind, g = (x_s - x_a) . N_a < 0 (point_plane_gap()).
+   * spacing of that point) whose plane it lies behind, g = (x_s - x_a) . N_a < 0
+   * (point_plane_gap()).
    *
    * On several MPI ranks the chosen surface points of every rank are gathered at each setup
    * (Sample: what a pair needs of a point, its unknowns and shape values included), in the order
