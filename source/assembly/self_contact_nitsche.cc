@@ -65,8 +65,6 @@ namespace GelMPM
             }
       return result;
     }
-
-
   } // namespace
 
 
@@ -166,8 +164,8 @@ namespace GelMPM
     for (unsigned int k = 0; k < dim; ++k)
       {
         // The symmetry term with the violation e_k: its residual is -dt_k/dy.
-        AssemblyCopy dt;
-        dt.residual.reinit(n_y);
+        AssemblyCopy traction_k;
+        traction_k.residual.reinit(n_y);
         Tensor<1, dim> e;
         e[k] = 1.;
         add_displacement_nitsche(unit,
@@ -177,10 +175,10 @@ namespace GelMPM
                                  1.,
                                  false,
                                  s,
-                                 dt,
+                                 traction_k,
                                  this->tangent.reference_nitsche);
         for (unsigned int j = 0; j < n_y; ++j)
-          T(k, local(y_dofs[j])) = -dt.residual(j);
+          T(k, local(y_dofs[j])) = -traction_k.residual(j);
       }
     const Tensor<1, dim> t =
       point_state(record, s.delta_F, s.du_at_point, s.mu_at_point, false).P_n * record.normal;
