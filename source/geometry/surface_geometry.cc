@@ -1,3 +1,4 @@
+#include <gelmpm/geometry/pair_gap.h>
 #include <gelmpm/geometry/pore_geometry.h>
 #include <gelmpm/geometry/surface_geometry.h>
 
@@ -5,6 +6,7 @@
 #include <cmath>
 #include <deque>
 #include <limits>
+#include <map>
 #include <tuple>
 #include <utility>
 
@@ -416,4 +418,151 @@ namespace GelMPM
     template double
     relief<3>(const std::vector<dealii::Point<3>> &, const std::vector<dealii::Tensor<1, 3>> &);
   } // namespace SurfaceGeometry
+
+
+  using dealii::Point;
+  using dealii::Tensor;
+
+
+  PointSegmentGap
+  point_segment_gap(const Point<2> &x_s, const Point<2> &x_a, const Point<2> &x_b)
+  {
+    // With d = x_s - x_a, e = x_b - x_a, L = |e|, t = e / L and R the rotation by +90 degrees:
+    // g = d . R e / L. Its derivatives in (d, e) are mapped to (x_s, x_a, x_b) by
+    // d = x_s - x_a, e = x_b - x_a.
+    PointSegmentGap    result;
+    const Tensor<1, 2> d = x_s - x_a, e = x_b - x_a;
+    const double       L = e.norm();
+    const Tensor<1, 2> t = e / L;
+    const Tensor<1, 2> n({-t[1], t[0]});
+    const Tensor<1, 2> RTd({d[1], -d[0]}); // R^T d
+    const double       R[2][2] = {{0., -1.}, {1., 0.}};
+    const double       g       = d * n;
+    const Tensor<1, 2> g_d     = n;
+    const Tensor<1, 2> g_e     = (RTd - g * t) / L;
+    const Tensor<2, 2> I       = dealii::unit_symmetric_tensor<2>();
+    Tensor<2, 2>       H_de, H_ee; // H_dd = 0
+    for (unsigned int i = 0; i < 2; ++i)
+      for (unsigned int j = 0; j < 2; ++j)
+        {
+          H_de[i][j] = (R[i][j] - n[i] * t[j]) / L;
+          H_ee[i][j] =
+            (-(RTd[i] * t[j] + t[i] * RTd[j]) - g * I[i][j] + 3. * g * t[i] * t[j]) / (L * L);
+        }
+    result.g      = g;
+    result.xi     = d * t / L;
+    result.normal = n;
+    // The coefficients of x_s, x_a, x_b in d and in e.
+    const double in_d[3] = {1., -1., 0.}, in_e[3] = {0., -1., 1.};
+    for (unsigned int k = 0; k < 3; ++k)
+      for (unsigned int i = 0; i < 2; ++i)
+        {
+          result.gradient[2 * k + i] = in_d[k] * g_d[i] + in_e[k] * g_e[i];
+          for (unsigned int l = 0; l < 3; ++l)
+            for (unsigned int j = 0; j < 2; ++j)
+              result.hessian[2 * k + i][2 * l + j] = in_d[k] * in_e[l] * H_de[i][j] +
+                                                     in_e[k] * in_d[l] * H_de[j][i] +
+                                                     in_e[k] * in_e[l] * H_ee[i][j];
+        }
+    return result;
+  }
+
+
+  PairGap<3>
+  point_plane_gap(const Point<3> &x_s, const Point<3> &x_a, const Tensor<1, 3> &normal)
+  {
+    // g = (x_s - x_a) . n with n fixed: linear, dg/dx_s = n, dg/dx_a = -n, no second derivative.
+    PairGap<3>         result;
+    const Tensor<1, 3> d = x_s - x_a;
+    result.g             = d * normal;
+    result.xi            = (d - result.g * normal).norm();
+    result.normal        = normal;
+    for (unsigned int i = 0; i < 3; ++i)
+      {
+        result.gradient[i]     = normal[i];
+        result.gradient[3 + i] = -normal[i];
+      }
+    return result;
+  }
+
+
+  NormalDerivatives<3>
+  normal_derivatives(const Point<3> &, const Point<3> &)
+  {
+    return {};
+  }
+
+
+  /** A segment's unit normal n = R e / |e| (e = x_b - x_a, R the rotation by +90 degrees). */
+  NormalDerivatives<2>
+  normal_derivatives(const Point<2> &x_a, const Point<2> &x_b)
+  {
+    // With t = e / L: dn_i/de_j = (R_ij - n_i t_j) / L and
+    // d2n_i/de_j de_k = (3 n_i t_j t_k - R_ij t_k - R_ik t_j - delta_jk n_i) / L^2.
+    const Tensor<1, 2>   e = x_b - x_a;
+    const double         L = e.norm();
+    const Tensor<1, 2>   t = e / L;
+    const Tensor<1, 2>   n({-t[1], t[0]});
+    const double         R[2][2] = {{0., -1.}, {1., 0.}};
+    const double         in_e[3] = {0., -1., 1.};
+    NormalDerivatives<2> result;
+    for (unsigned int i = 0; i < 2; ++i)
+      for (unsigned int m = 0; m < 3; ++m)
+        for (unsigned int j = 0; j < 2; ++j)
+          {
+            result.first[i][2 * m + j] = in_e[m] * (R[i][j] - n[i] * t[j]) / L;
+            for (unsigned int l = 0; l < 3; ++l)
+              for (unsigned int k = 0; k < 2; ++k)
+                result.second[i][2 * m + j][2 * l + k] = in_e[m] * in_e[l] *
+                                                         (3. * n[i] * t[j] * t[k] - R[i][j] * t[k] -
+                                                          R[i][k] * t[j] - (j == k ? n[i] : 0.)) /
+                                                         (L * L);
+          }
+    return result;
+  }
+
+
+  /** For each of the points @p x, the others within @p radius, in increasing order (by
+   * buckets of the radius). */
+  template <int dim>
+  std::vector<std::vector<unsigned int>>
+  points_within(const std::vector<Point<dim>> &x, const double radius)
+  {
+    using Key      = std::array<long, dim>;
+    const auto key = [radius](const Point<dim> &y) {
+      Key k;
+      for (unsigned int d = 0; d < dim; ++d)
+        k[d] = static_cast<long>(std::floor(y[d] / radius));
+      return k;
+    };
+    std::map<Key, std::vector<unsigned int>> buckets;
+    for (unsigned int p = 0; p < x.size(); ++p)
+      buckets[key(x[p])].push_back(p);
+    std::vector<std::vector<unsigned int>> within(x.size());
+    for (unsigned int p = 0; p < x.size(); ++p)
+      {
+        const Key k = key(x[p]);
+        for (unsigned int shift = 0;
+             shift < dealii::Utilities::pow(3u, static_cast<unsigned int>(dim));
+             ++shift)
+          {
+            Key          next = k;
+            unsigned int code = shift;
+            for (unsigned int d = 0; d < dim; ++d, code /= 3)
+              next[d] += static_cast<long>(code % 3) - 1;
+            const auto bucket = buckets.find(next);
+            if (bucket != buckets.end())
+              for (const unsigned int q : bucket->second)
+                if (q != p && (x[p] - x[q]).norm() <= radius)
+                  within[p].push_back(q);
+          }
+        std::sort(within[p].begin(), within[p].end());
+      }
+    return within;
+  }
+
+  template std::vector<std::vector<unsigned int>>
+  points_within(const std::vector<Point<2>> &, const double);
+  template std::vector<std::vector<unsigned int>>
+  points_within(const std::vector<Point<3>> &, const double);
 } // namespace GelMPM
