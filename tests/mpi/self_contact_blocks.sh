@@ -27,11 +27,12 @@ check $? "separated faces on two ranks refused with the entry named (status $sta
 # gathers them for the same active sets and statistics.
 rm -rf one two
 run_both "$scene" --set "Contact/Self contact/Separate faces=false" \
-  --set "Contact/Self contact/Method=nitsche" --set "Contact/Self contact/Penalty=1000"
+  --set "Contact/Self contact/Method=nitsche" --set "Contact/Self contact/Penalty=1000" \
+  --set "Time stepping/End time=1e-3"
 # The penetration (2.7e-6) is a difference of positions of order 1: its round-off is that of the
 # positions (measured 1e-15 between the runs), compared in the length unit.
 compare_statistics --ignore "wall_time,residual_u,residual_mu,solvent_imbalance,self_contact_penetration"
-for row in 3 4; do
+for row in 3; do
   one=$(statistic one/statistics.csv self_contact_penetration $row)
   two=$(statistic two/statistics.csv self_contact_penetration $row)
   awk -v a="${one:-0}" -v b="${two:-1}" 'BEGIN { d = a - b; exit !(a > 0 && d < 1e-12 && -d < 1e-12) }'
