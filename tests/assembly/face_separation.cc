@@ -89,7 +89,6 @@ namespace
   Vector<double>
   shifted_state(const GelMPM::Scene<2> &scene, const double shift, const double noise)
   {
-    const auto    &spaces = scene.system->spaces();
     const auto     used   = users(*scene.system);
     Vector<double> state  = two_blocks::noisy_state(scene, noise);
     for (unsigned int i = 0; i < used.size(); ++i)

@@ -30,7 +30,7 @@
 //   the closed form against the penalty's 0.24 % and 0.085 %);
 // - the same in 3D (self_contact_blocks_3d_scene.prm: the cubes of the 3D obstacle block, each
 //   point against the tangent plane of the nearest facing point): measured -0.0059081 against
-//   -0.0059216 (0.23 %), by Nitsche's method (not run here: 20 s) -0.0059141 (0.13 %);
+//   -0.0059183 (0.17 %), by Nitsche's method (not run here: 20 s) -0.0059141 (0.07 %);
 // - without it (Method = none), the upper block passes into the lower one: the top's reaction
 //   stays below 1e-6 of the closed form.
 #include <deal.II/base/mpi.h>
