@@ -89,8 +89,8 @@ namespace
   Vector<double>
   shifted_state(const GelMPM::Scene<2> &scene, const double shift, const double noise)
   {
-    const auto     used   = users(*scene.system);
-    Vector<double> state  = two_blocks::noisy_state(scene, noise);
+    const auto     used  = users(*scene.system);
+    Vector<double> state = two_blocks::noisy_state(scene, noise);
     for (unsigned int i = 0; i < used.size(); ++i)
       if (used[i] & 2u)
         state(2 * i + 1) += shift;
