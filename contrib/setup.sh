@@ -2,10 +2,11 @@
 # Sets up GelMPM on Debian 12: installs the Debian packages that are missing, configures and builds
 # into build/ (Release). Idempotent: a second call only rebuilds what changed.
 #
-#   bash contrib/setup.sh [--plotting] [--target <target>]
+#   bash contrib/setup.sh [--plotting] [--target <target>]...
 #
-# --target builds one target and what it needs instead of everything (contrib/run.sh builds only
-# gelmpm, not the peer and reference tools that the tests use).
+# --target builds the targets named and what they need instead of everything (contrib/run.sh
+# builds only gelmpm, not the peer and reference tools that the tests use; contrib/test.sh builds
+# everything and the test programs, target test_programs, in one build).
 # --plotting also installs what the plotting scripts in contrib/plotting need (matplotlib, numpy;
 # they read .vtu files with VTK's Python module, as the tests do); run those scripts with
 # /usr/bin/python3, which sees Debian's packages.
@@ -45,7 +46,7 @@ while (($#)); do
     --plotting) packages+=(python3-numpy python3-matplotlib) ;;
     --target)
       [[ $# -ge 2 ]] || { echo "error: --target needs a target name, e.g. --target gelmpm" >&2; exit 1; }
-      targets=(--target "$2")
+      targets+=("$2")
       shift ;;
     *) echo "error: unknown option '$1' (usage: contrib/setup.sh [--plotting] [--target <target>])" >&2
        exit 1 ;;
@@ -96,5 +97,13 @@ if [[ ! -f "${build_dir}/CMakeCache.txt" ]]; then
   generator=()
   command -v ninja >/dev/null && generator=(-G Ninja)
   cmake -S "${top}" -B "${build_dir}" "${generator[@]}" -DCMAKE_BUILD_TYPE="${build_type}" >/dev/null
+elif ((${#targets[@]})); then
+  # Configured anew first: make reads its targets before it would reconfigure, so a target that
+  # a changed CMakeLists.txt adds (test_programs) would be unknown to it.
+  cmake -S "${top}" -B "${build_dir}" >/dev/null
 fi
-cmake --build "${build_dir}" -j "${jobs}" "${targets[@]}"
+if ((${#targets[@]})); then
+  cmake --build "${build_dir}" -j "${jobs}" --target "${targets[@]}"
+else
+  cmake --build "${build_dir}" -j "${jobs}"
+fi

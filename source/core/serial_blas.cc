@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 #include <dlfcn.h>
+#include <initializer_list>
 
 namespace GelMPM
 {

@@ -2,6 +2,9 @@
 #include <gelmpm/geometry/pore_geometry.h>
 #include <gelmpm/geometry/surface_geometry.h>
 
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/utilities.h>
+
 #include <algorithm>
 #include <cmath>
 #include <deque>

@@ -134,6 +134,11 @@ endfunction()
 # once in one build directory may both rebuild what they share (and Ninja keeps one log).
 function(gelmpm_add_test_programs_build)
   get_property(_programs GLOBAL PROPERTY GELMPM_TEST_PROGRAMS)
+  # The same programs as one target, which contrib/test.sh builds together with the libraries and
+  # gelmpm, in one Ninja graph: their two large files then fill the cores where the libraries'
+  # build leaves one idle, and this test finds them built.
+  add_custom_target(test_programs)
+  add_dependencies(test_programs ${_programs})
   add_test(NAME test_programs.build
            COMMAND ${CMAKE_COMMAND} --build ${CMAKE_BINARY_DIR} --parallel 2 --target ${_programs})
   set_tests_properties(test_programs.build PROPERTIES LABELS cases FIXTURES_SETUP test_programs
