@@ -66,7 +66,7 @@ namespace
   mpm_onset_with_uniform_steps(const double dt)
   {
     auto overrides = coarse_onset_run();
-    for (const std::string entry : {"Time stepping/Initial step=" + std::to_string(dt),
+    for (const std::string &entry : {"Time stepping/Initial step=" + std::to_string(dt),
                                     "Time stepping/Step caps=1: " + std::to_string(dt),
                                     std::string("Time stepping/Growth factor=1"),
                                     std::string("Time stepping/Stop at times="),

@@ -47,7 +47,7 @@ main(int argc, char **argv)
   const auto rigid      = GelMPMTests::run_scene(prm + "flat_punch_rigid.prm", "rigid", coarse);
   std::cout << "prescribed: run completed: " << (prescribed.status == 0) << std::endl;
   std::cout << "rigid: run completed: " << (rigid.status == 0) << std::endl;
-  for (const auto [t, tolerance] : {std::pair{1.5625e-6, 0.02}, std::pair{3.125e-6, 0.01}})
+  for (const auto &[t, tolerance] : {std::pair{1.5625e-6, 0.02}, std::pair{3.125e-6, 0.01}})
     {
       const double expected = -at_time(prescribed, "punch_force_y", t);
       const double force    = at_time(rigid, "indenter_force_y", t);
