@@ -66,6 +66,20 @@ namespace GelMPMTests
 
 
   /**
+   * Print "@p what: 1" if @p ok, else "@p what: 0" and the @p value against the @p expected one;
+   * returns @p ok.
+   */
+  inline bool
+  report(const std::string &what, const bool ok, const double value, const double expected)
+  {
+    std::cout << what << ": " << ok << std::endl;
+    if (!ok)
+      std::cout << "  (" << value << " against " << expected << ")" << std::endl;
+    return ok;
+  }
+
+
+  /**
    * The single loss of stability of a run's @p directory/stability.csv: prints whether there is
    * exactly one and, if so, whether it is at most @p width wide; returns {t_stable, t_unstable},
    * or {-1, -1} if there is not exactly one.

@@ -33,31 +33,24 @@ import sys
 
 TOP = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 sys.path.insert(0, os.path.join(TOP, "contrib", "plotting"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from gelmpm_files import read_rows  # noqa: E402
+from bilayer_reference import LAMBDA_0, bisect  # noqa: E402
+from bilayer_reference import stress_times_stretch as law  # noqa: E402
 
-N_NU, CHI, LAMBDA_0 = 7.299e-3, 0.1, 1.2801
+CHI = 0.1
+
+
+def stress_times_stretch(s, J, mu):
+    return law(s, J, mu, CHI)
+
+
 W = 0.5
 # The gap: wide enough that the blocks end compressed to 85 % of their free swelling in the
 # pressed direction (plane strain 0.85 x 2.706, 3D 0.87 x 2.349); more, and their free sides
 # crease (at 57 %, a gap of 0.2, the force fell by 1.3 % on h = W/10 and by 2.4 % on W/20 below
 # the homogeneous state's).
 GAP = {2: 0.8, 3: 0.6}
-
-
-def stress_times_stretch(s, J, mu):
-    return (s * s - 1.0) + J / N_NU * (math.log(1.0 - 1.0 / J) + 1.0 / J + CHI / J**2 - mu)
-
-
-def bisect(f, a, b):
-    fa = f(a)
-    for _ in range(200):
-        m = 0.5 * (a + b)
-        fm = f(m)
-        if fa * fm <= 0.0:
-            b = m
-        else:
-            a, fa = m, fm
-    return 0.5 * (a + b)
 
 
 def closed_form(dim, gap):

@@ -67,11 +67,11 @@ namespace
   {
     auto overrides = coarse_onset_run();
     for (const std::string &entry : {"Time stepping/Initial step=" + std::to_string(dt),
-                                    "Time stepping/Step caps=1: " + std::to_string(dt),
-                                    std::string("Time stepping/Growth factor=1"),
-                                    std::string("Time stepping/Stop at times="),
-                                    std::string("Time stepping/Displacement tolerance=0"),
-                                    std::string("Time stepping/Tolerance=0")})
+                                     "Time stepping/Step caps=1: " + std::to_string(dt),
+                                     std::string("Time stepping/Growth factor=1"),
+                                     std::string("Time stepping/Stop at times="),
+                                     std::string("Time stepping/Displacement tolerance=0"),
+                                     std::string("Time stepping/Tolerance=0")})
       overrides.push_back(entry);
     const std::string directory = "uniform_" + std::to_string(dt);
     GelMPMTests::run_scene(scene, directory, overrides);

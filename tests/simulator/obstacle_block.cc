@@ -49,14 +49,7 @@ namespace
     return GelMPMTests::stress_times_stretch(stretch, J, mu, G, chi, N_nu);
   }
 
-  bool
-  report(const std::string &what, const bool ok, const double value, const double expected)
-  {
-    std::cout << what << ": " << ok << std::endl;
-    if (!ok)
-      std::cout << "  (" << value << " against " << expected << ")" << std::endl;
-    return ok;
-  }
+  using GelMPMTests::report;
 
   /** Where the pressed block of check_press() meets the bath. */
   enum class Bath

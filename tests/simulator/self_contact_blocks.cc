@@ -48,14 +48,7 @@ namespace
   constexpr double G = 1., lambda_0 = 1.2801;
   constexpr double W = 0.5, H = 0.5, delta = 0.005, h = 1. / 12.;
 
-  bool
-  report(const std::string &what, const bool ok, const double value, const double expected)
-  {
-    std::cout << what << ": " << ok << std::endl;
-    if (!ok)
-      std::cout << "  (" << value << " against " << expected << ")" << std::endl;
-    return ok;
-  }
+  using GelMPMTests::report;
 
 
   /**

@@ -26,28 +26,22 @@ namespace
   constexpr double G = 1., chi = 0.1, N_nu = 7.299e-3, lambda_0 = 1.2801;
   constexpr double W = 0.5, gap = 0.8, h = 0.1;
 
-  bool
-  report(const std::string &what, const bool ok, const double value, const double expected)
-  {
-    std::cout << what << ": " << ok << std::endl;
-    if (!ok)
-      std::cout << "  (" << value << " against " << expected << ")" << std::endl;
-    return ok;
-  }
+  using GelMPMTests::report;
 
 
   /** The held end's force at equilibrium in the bath mu = 0 (plane strain, per unit thickness). */
   double
   closed_form_force()
   {
-    const double b  = lambda_0 * (1. + gap / (2. * W));
-    const auto   J  = [b](const double a) { return a * b * lambda_0; };
-    const auto   Pa = [&](const double a) {
+    const double b = lambda_0 * (1. + gap / (2. * W));
+    const auto   J = [b](const double a) {
+      return a * b * lambda_0;
+    };
+    const auto Pa = [&](const double a) {
       return GelMPMTests::stress_times_stretch(a, J(a), 0., G, chi, N_nu);
     };
-    const double a = GelMPMTests::bisect(Pa, (1. + 1e-12) / (b * lambda_0), 10.);
-    const double P_bb =
-      GelMPMTests::stress_times_stretch(b, J(a), 0., G, chi, N_nu) / b;
+    const double a    = GelMPMTests::bisect(Pa, (1. + 1e-12) / (b * lambda_0), 10.);
+    const double P_bb = GelMPMTests::stress_times_stretch(b, J(a), 0., G, chi, N_nu) / b;
     return P_bb * W / (lambda_0 * lambda_0);
   }
 } // namespace
@@ -58,10 +52,10 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const double                             expected = closed_form_force();
-  const auto half = GelMPMTests::run_scene(std::string(SOURCE_DIR) +
-                                             "/self_contact_swelling_gap_half_scene.prm",
-                                           "self_contact_swelling_gap_half",
-                                           {});
+  const auto                               half =
+    GelMPMTests::run_scene(std::string(SOURCE_DIR) + "/self_contact_swelling_gap_half_scene.prm",
+                           "self_contact_swelling_gap_half",
+                           {});
   const auto whole =
     GelMPMTests::run_scene(std::string(SOURCE_DIR) + "/self_contact_swelling_gap_scene.prm",
                            "self_contact_swelling_gap",
