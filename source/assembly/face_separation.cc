@@ -452,8 +452,7 @@ namespace GelMPM
     // A block wholly reached, alone in an interior cell, whose versions are no weak copies; the
     // nearest to the function as the extension picks its block (eq. (54)).
     double best_distance = std::numeric_limits<double>::max(), best_centre = best_distance;
-    int    best     = -1;
-    bool   adjacent = false;
+    int    best = -1;
     for (const auto &[b, n] : reached)
       {
         const PointBlock &block = g.blocks[b];
@@ -472,13 +471,11 @@ namespace GelMPM
               corner[d] = std::min(corner[d], static_cast<int>(m[d]));
           }
         double distance = 0., centre = 0.;
-        bool   next = true;
         for (unsigned int d = 0; d < dim; ++d)
           {
             const int k   = kk[d];
             const int gap = std::max({0, corner[d] - k, k - (corner[d] + q)});
             distance += gap * gap;
-            next &= gap <= 1;
             centre += (k - corner[d] - 0.5 * q) * (k - corner[d] - 0.5 * q);
           }
         if (distance < best_distance - 1e-12 ||
@@ -488,12 +485,12 @@ namespace GelMPM
             best_corner   = corner;
             best_distance = distance;
             best_centre   = centre;
-            adjacent      = next;
           }
       }
-    // Only a donor next to the function, along one direction or a diagonal (tie_weak_copy()
-    // extrapolates along the line through the function then).
-    return adjacent ? best : -1;
+    // Only a donor next to the function along one direction (weights up to 3 for q = 2): the
+    // diagonal extrapolation to a face's corner amplifies its donors' motion (weights up to 9)
+    // and Newton did not converge with it.
+    return best_distance > 1. + 1e-12 ? -1 : best;
   }
 
 
@@ -520,48 +517,15 @@ namespace GelMPM
     tie.cell                = g.blocks[g.points[weak.members.front()].block].u_cell;
     tie.donor_cell          = donor.u_cell;
     tie.donors.clear();
-    // The directions in which the function lies beyond the donor's functions: one, the
-    // extrapolation of eq. (54); two or three (a face's corner), along the diagonal line through
-    // the function instead, from the q + 1 functions the line crosses in the donor cell: the
-    // tensor product's weights grew to 9 there (q = 2) and Newton did not converge with them;
-    // the line's are those of one direction (3, -3, 1), and as exact for polynomials of degree
-    // q, which are polynomials of degree q along any line.
-    std::array<int, dim> step;
-    unsigned int         diagonal = 0;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        const int k = kk[d];
-        step[d]     = k < corner[d] ? 1 : k > corner[d] + q ? -1 : 0;
-        diagonal += step[d] != 0;
-      }
     for (unsigned int a = 0; a < dofs.size(); ++a)
       {
+        // Tensor-product Lagrange extrapolation in the index, eq. (54).
         const auto m = space.function_multi_index(control_point_of_dof[dofs[a]]);
         double     E = 1.;
-        if (diagonal > 1)
-          {
-            // On the line, function kk + n step (n = 1, ..., q + 1), weight prod_{l != n}
-            // (0 - l)/(n - l); off it, none.
-            int n = -1;
-            for (unsigned int d = 0; d < dim && (n != -2); ++d)
-              {
-                const int offset = static_cast<int>(m[d]) - static_cast<int>(kk[d]);
-                const int along  = step[d] != 0 ? offset * step[d] : (offset == 0 ? n : -2);
-                n                = (n == -1 || n == along) ? along : -2;
-              }
-            if (n < 1 || n > q + 1)
-              continue;
-            for (int l = 1; l <= q + 1; ++l)
-              if (l != n)
-                E *= static_cast<double>(-l) / (n - l);
-          }
-        else
-          // Tensor-product Lagrange extrapolation in the index, eq. (54).
-          for (unsigned int d = 0; d < dim; ++d)
-            for (int s = corner[d]; s <= corner[d] + q; ++s)
-              if (s != static_cast<int>(m[d]))
-                E *=
-                  static_cast<double>(static_cast<int>(kk[d]) - s) / (static_cast<int>(m[d]) - s);
+        for (unsigned int d = 0; d < dim; ++d)
+          for (int s = corner[d]; s <= corner[d] + q; ++s)
+            if (s != static_cast<int>(m[d]))
+              E *= static_cast<double>(static_cast<int>(kk[d]) - s) / (static_cast<int>(m[d]) - s);
         unsigned int version = dofs[a];
         for (const auto &[position, copy] : copies[donor.first])
           if (position == a)
