@@ -8,8 +8,8 @@
 //   against a rigid plane, 0.70 %: the MPM's own error at these stretches, W/10 and W/20 doc);
 // - the lower block alone against a rigid plane at the gap's middle
 //   (self_contact_swelling_gap_half_scene.prm), the blocks' plane of symmetry: its force within
-//   1 % (measured 0.63 %) and its first contact within 5 % of its time (22.08 against 21.30
-//   tau_d: the points touch in different steps);
+//   1 % (measured 0.63 %), and the steps in which each run's faces first touch overlap (the
+//   half's 17.70-22.08 tau_d, the blocks' 18.95-21.30);
 // and the self-contact force equal to the held end's (1e-3; measured 7e-5), one self_contact
 // event, the penetration below 1e-2 h (measured 3.4e-4 = 3.4e-3 h).
 #include <deal.II/base/mpi.h>
@@ -88,21 +88,24 @@ main(int argc, char **argv)
          penetration,
          1e-2 * h);
 
-  // First contact: the first row with a point in contact.
+  // First contact, bracketed by the steps (the last row without a point in contact and the
+  // first with one): the two runs take different steps, of 2-4 tau_d there, so the brackets must
+  // overlap rather than the rows agree.
   const auto first_contact = [](const GelMPMTests::SceneRun &run, const std::string &column) {
     const auto &t      = run.statistics.at("t_over_tau_d");
     const auto &points = run.statistics.at(column);
     for (unsigned int i = 1; i < t.size(); ++i)
       if (points[i] > 0.)
-        return t[i];
-    return -1.;
+        return std::pair<double, double>{t[i - 1], t[i]};
+    return std::pair<double, double>{-1., -1.};
   };
-  const double touch       = first_contact(half, "contact_points");
-  const double whole_touch = first_contact(whole, "self_contact_points");
-  report("the blocks touch within 5 % of the half's first contact",
-         touch > 0. && std::abs(whole_touch - touch) <= 5e-2 * touch,
-         whole_touch,
-         touch);
+  const auto touch       = first_contact(half, "contact_points");
+  const auto whole_touch = first_contact(whole, "self_contact_points");
+  report("the blocks' first contact within the steps that bracket the half's",
+         touch.second > 0. && whole_touch.second > 0. &&
+           std::max(touch.first, whole_touch.first) <= std::min(touch.second, whole_touch.second),
+         whole_touch.second,
+         touch.second);
   std::cout << "one self_contact event: "
             << (GelMPMTests::event_times("self_contact_swelling_gap", "self_contact").size() == 1)
             << std::endl;
