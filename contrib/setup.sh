@@ -48,7 +48,7 @@ while (($#)); do
       [[ $# -ge 2 ]] || { echo "error: --target needs a target name, e.g. --target gelmpm" >&2; exit 1; }
       targets+=("$2")
       shift ;;
-    *) echo "error: unknown option '$1' (usage: contrib/setup.sh [--plotting] [--target <target>])" >&2
+    *) echo "error: unknown option '$1' (usage: contrib/setup.sh [--plotting] [--target <target>]...)" >&2
        exit 1 ;;
   esac
   shift

@@ -5,6 +5,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
+#include <sstream>
 
 namespace GelMPM
 {
@@ -126,5 +127,19 @@ namespace GelMPM
             section + "Minimum arc length",
             "must be positive: a point would touch its own segments",
             "give e.g. 3 (cells)");
+  }
+
+
+  std::string
+  SelfContactSettings::notes() const
+  {
+    if (method != Method::nitsche || penalty >= 1000.)
+      return "";
+    std::ostringstream note;
+    note << "  note: 'Contact/Self contact/Penalty' is " << penalty
+         << " with 'Method = nitsche', whose stabilisation needs about 1000 (with 100 two "
+            "pressed blocks do not converge past their third step; doc/method.md, \"By "
+            "Nitsche's method\")\n";
+    return note.str();
   }
 } // namespace GelMPM

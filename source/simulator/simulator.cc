@@ -141,8 +141,8 @@ namespace GelMPM
   void
   Simulator<dim>::print_piece_table() const
   {
-    const bool  axisymmetric = scene.grid.axisymmetric;
-    std::string table =
+    const bool        axisymmetric = scene.grid.axisymmetric;
+    const std::string table =
       piece_table(scene.particles, structure.boundary_pieces, axisymmetric, scene.communicator) +
       region_table(scene.particles, scene.regions, axisymmetric, scene.communicator) +
       symmetry_plane_notes(roller_planes(scene.particles,
@@ -151,17 +151,7 @@ namespace GelMPM
                            scene.grid,
                            scene.discretisation.displacement_degree,
                            scene.discretisation.subdivision);
-    const auto &self_contact = scene.contact.self_contact;
-    if (self_contact.method == SelfContactSettings::Method::nitsche && self_contact.penalty < 1000.)
-      {
-        std::ostringstream note;
-        note << "  note: 'Contact/Self contact/Penalty' is " << self_contact.penalty
-             << " with 'Method = nitsche', whose stabilisation needs about 1000 (with 100 two "
-                "pressed blocks do not converge past their third step; doc/method.md, \"By "
-                "Nitsche's method\")\n";
-        table += note.str();
-      }
-    pcout << table;
+    pcout << table << scene.contact.self_contact.notes();
   }
 
 

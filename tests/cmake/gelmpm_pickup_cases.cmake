@@ -140,7 +140,7 @@ function(gelmpm_add_test_programs_build)
   add_custom_target(test_programs)
   add_dependencies(test_programs ${_programs})
   add_test(NAME test_programs.build
-           COMMAND ${CMAKE_COMMAND} --build ${CMAKE_BINARY_DIR} --parallel 2 --target ${_programs})
+           COMMAND ${CMAKE_COMMAND} --build ${CMAKE_BINARY_DIR} --parallel 2 --target test_programs)
   set_tests_properties(test_programs.build PROPERTIES LABELS cases FIXTURES_SETUP test_programs
                        FIXTURES_REQUIRED gelmpm_build PROCESSORS 2 TIMEOUT 1800 COST 1000)
 endfunction()

@@ -5,7 +5,8 @@
 //   b = lambda_0 (1 + g/2W) from the held ends and a from the free side (P_aa = 0) at mu = 0,
 //   the held end's force P_bb W/lambda_0^2 (the obstacle block's drained closed form at mu = 0,
 //   tests/flory_rehner_closed_form.h), within 2 % (measured 1.32 %; the lower block alone
-//   against a rigid plane, 0.70 %: the MPM's own error at these stretches, W/10 and W/20 doc);
+//   against a rigid plane, 0.70 %: the MPM's own error at these stretches; W/10 and W/20 in
+//   doc/method.md);
 // - the lower block alone against a rigid plane at the gap's middle
 //   (self_contact_swelling_gap_half_scene.prm), the blocks' plane of symmetry: its force within
 //   1 % (measured 0.63 %), and the steps in which each run's faces first touch overlap (the

@@ -63,6 +63,13 @@ namespace GelMPM
     /** Read and check them (the section "Contact" entered). */
     void
     parse_parameters(dealii::ParameterHandler &prm);
+
+    /**
+     * What the run's log should note about valid but doubtful settings (lines ending in a
+     * newline), or nothing: a Nitsche 'Penalty' below the 1000 its stabilisation needs.
+     */
+    std::string
+    notes() const;
   };
 } // namespace GelMPM
 
