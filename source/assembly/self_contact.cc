@@ -76,6 +76,25 @@ namespace GelMPM
 
 
   template <int dim>
+  bool
+  SelfContactAssembler<dim>::tangent_planes() const
+  {
+    return dim == 3 || settings.tangent_planes;
+  }
+
+
+  template <int dim>
+  double
+  SelfContactAssembler<dim>::spacing(const PointRecord<dim> &r) const
+  {
+    // An axisymmetric measure is revolved: 2 pi r_n times the meridian's length.
+    const double revolved =
+      (r.axisymmetric() && r.x[0] > 0.) ? 2. * dealii::numbers::PI * r.x[0] : 1.;
+    return std::pow(r.measure / revolved, 1. / std::max(dim - 1, 1));
+  }
+
+
+  template <int dim>
   unsigned int
   SelfContactAssembler<dim>::n_pairs() const
   {
@@ -106,9 +125,9 @@ namespace GelMPM
       return solution != nullptr ? current_position(p, *solution) : samples_[p].x;
     };
     if constexpr (dim == 2)
-      return point_segment_gap(x(pair.point), x(pair.a), x(pair.b));
-    else
-      return point_plane_gap(x(pair.point), x(pair.a), samples_[pair.a].normal);
+      if (!tangent_planes())
+        return point_segment_gap(x(pair.point), x(pair.a), x(pair.b));
+    return point_plane_gap(x(pair.point), x(pair.a), samples_[pair.a].normal);
   }
 
 
@@ -116,10 +135,9 @@ namespace GelMPM
   bool
   SelfContactAssembler<dim>::projects_onto(const Pair &pair, const PairGap<dim> &gap) const
   {
-    if constexpr (dim == 2)
+    if (!tangent_planes())
       return gap.xi >= -end_tolerance && gap.xi <= 1. + end_tolerance;
-    else
-      return gap.xi <= samples_[pair.a].spacing;
+    return gap.xi <= samples_[pair.a].spacing;
   }
 
 
@@ -154,7 +172,7 @@ namespace GelMPM
         row.insert(row.end(),
                    {r.measure,
                     penalty(r),
-                    std::pow(r.measure, 1. / std::max(dim - 1, 1)),
+                    spacing(r),
                     static_cast<double>(block.u_cell),
                     static_cast<double>(dofs.size())});
         row.insert(row.end(), dofs.begin(), dofs.end());
@@ -211,9 +229,9 @@ namespace GelMPM
   std::vector<typename SelfContactAssembler<dim>::Pair>
   SelfContactAssembler<dim>::find_pairs(const dealii::Vector<double> *solution) const
   {
-    if constexpr (dim == 3)
+    if (tangent_planes())
       return find_point_pairs(solution);
-    else
+    if constexpr (dim == 2)
       {
         // In cells of 'Background grid/Cells' at every level: the motion within a step and
         // the spacing of surface points, which refinement does not shorten.
@@ -293,6 +311,8 @@ namespace GelMPM
           }
         return found;
       }
+    else
+      return find_point_pairs(solution);
   }
 
 
@@ -502,7 +522,7 @@ namespace GelMPM
                 ? gaps[k].g < 0.
                 : samples_[point].penalty * gaps[k].g - gaps[k].normal * tractions[point] < 0.;
             const auto closer = [&](const PairGap<dim> &a, const PairGap<dim> &b) {
-              return dim == 2 ? a.g < b.g - tie : a.xi < b.xi - tie;
+              return tangent_planes() ? a.xi < b.xi - tie : a.g < b.g - tie;
             };
             if (touches && projects_onto(pairs_[k], gaps[k]) &&
                 (deepest < 0 || closer(gaps[k], gaps[deepest])))
@@ -708,8 +728,9 @@ namespace GelMPM
       }
     const Tensor<1, dim> t =
       point_state(record, s.delta_F, s.du_at_point, s.mu_at_point, false).P_n * record.normal;
-    const auto dn =
-      normal_derivatives(current_position(pair.a, solution), current_position(pair.b, solution));
+    const auto            dn     = tangent_planes() ? NormalDerivatives<dim>()
+                                                    : normal_derivatives(current_position(pair.a, solution),
+                                                          current_position(pair.b, solution));
     const Tensor<1, dim> &normal = gap.normal;
     const double          g = gap.g, beta = sample.penalty, sigma = normal * t;
     const double          weight = 0.5 * record.measure;

@@ -82,6 +82,15 @@ namespace GelMPM
       "a quarter of the function's weight or less is tied to its face's own functions "
       "(doc/method.md, \"Two faces on one grid\"). false: the faces share the grid's functions "
       "and stay tied about a cell apart, never touching.");
+    prm.declare_entry(
+      "Other face",
+      "segments",
+      Patterns::Selection("segments|tangent planes"),
+      "2D (plane strain and axisymmetric): what a point touches. segments: the segments of the "
+      "current surface polylines, their normals turning with the iterate. tangent planes: the "
+      "tangent plane of the nearest facing surface point, its normal that of the step's start "
+      "(fixed over the step, the gap linear in the unknowns), as always in 3D (doc/method.md, "
+      "\"The other face as tangent planes\").");
     prm.declare_entry("Largest depth",
                       "0.25",
                       Patterns::Double(0.),
@@ -111,6 +120,7 @@ namespace GelMPM
     largest_depth          = prm.get_double("Largest depth");
     separate_faces         = prm.get_bool("Separate faces");
     retake_unseen_passes   = prm.get_bool("Retake unseen passes");
+    tangent_planes         = prm.get("Other face") == "tangent planes";
     prm.leave_subsection();
     if (!enabled())
       return;

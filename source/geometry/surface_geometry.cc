@@ -471,19 +471,20 @@ namespace GelMPM
   }
 
 
-  PairGap<3>
-  point_plane_gap(const Point<3> &x_s, const Point<3> &x_a, const Tensor<1, 3> &normal)
+  template <int dim>
+  PairGap<dim>
+  point_plane_gap(const Point<dim> &x_s, const Point<dim> &x_a, const Tensor<1, dim> &normal)
   {
     // g = (x_s - x_a) . n with n fixed: linear, dg/dx_s = n, dg/dx_a = -n, no second derivative.
-    PairGap<3>         result;
-    const Tensor<1, 3> d = x_s - x_a;
-    result.g             = d * normal;
-    result.xi            = (d - result.g * normal).norm();
-    result.normal        = normal;
-    for (unsigned int i = 0; i < 3; ++i)
+    PairGap<dim>         result;
+    const Tensor<1, dim> d = x_s - x_a;
+    result.g               = d * normal;
+    result.xi              = (d - result.g * normal).norm();
+    result.normal          = normal;
+    for (unsigned int i = 0; i < dim; ++i)
       {
-        result.gradient[i]     = normal[i];
-        result.gradient[3 + i] = -normal[i];
+        result.gradient[i]       = normal[i];
+        result.gradient[dim + i] = -normal[i];
       }
     return result;
   }
@@ -568,4 +569,8 @@ namespace GelMPM
   points_within(const std::vector<Point<2>> &, const double);
   template std::vector<std::vector<unsigned int>>
   points_within(const std::vector<Point<3>> &, const double);
+  template PairGap<2>
+  point_plane_gap(const Point<2> &, const Point<2> &, const Tensor<1, 2> &);
+  template PairGap<3>
+  point_plane_gap(const Point<3> &, const Point<3> &, const Tensor<1, 3> &);
 } // namespace GelMPM

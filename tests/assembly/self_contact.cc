@@ -22,7 +22,9 @@
 // tangent against the differences also for the skew-symmetric variant (not symmetric).
 // 3D (check_term_3d()): two cubes, each point against the tangent plane of the nearest facing
 // point, penalty and Nitsche: the same balance, the tangent of the term alone against differences
-// of its residual.
+// of its residual. The same in 2D with 'Other face = tangent planes' (plane strain and
+// axisymmetric, penalty and Nitsche): the pressed state's penetration and balance, the tangent
+// against differences.
 // A converged step is searched again at its end (SelfContactAssembler::unseen_contacts()): with one
 // cell of search the blocks have no pair; the upper block shifted 0.05 through the lower one has
 // points of both faces behind the other face unseen, shifted to 0.05 short of it none, and with
@@ -71,8 +73,9 @@ namespace
   {
     TwoBlocks(const std::string &method,
               const bool         axisymmetric,
-              const std::string &boxes   = "",
-              const std::string &variant = "symmetric")
+              const std::string &boxes      = "",
+              const std::string &variant    = "symmetric",
+              const std::string &other_face = "segments")
       : two_blocks::TwoBlocks(1.,
                               axisymmetric,
                               boxes,
@@ -80,7 +83,8 @@ namespace
                               // may reach.
                               "set Method = " + method +
                                 "\nset Search distance = 3\nset Penalty = 1000\n"
-                                "set Largest depth = 0.5",
+                                "set Largest depth = 0.5\nset Other face = " +
+                                other_face,
                               "subsection Nitsche\nset Variant = " + variant + "\nend\n")
     {}
   };
@@ -139,15 +143,18 @@ namespace
 
   bool
   check_term(const bool         axisymmetric,
-             const std::string &boxes   = "",
-             const std::string &method  = "penalty",
-             const std::string &variant = "symmetric")
+             const std::string &boxes      = "",
+             const std::string &method     = "penalty",
+             const std::string &variant    = "symmetric",
+             const std::string &other_face = "segments")
   {
     std::cout << method << (method == "nitsche" ? " (" + variant + ")" : "") << ", "
               << (axisymmetric ? "axisymmetric" : "plane strain")
-              << (boxes.empty() ? "" : ", refined " + boxes) << std::endl;
-    TwoBlocks on(method, axisymmetric, boxes, variant), off("none", axisymmetric, boxes, variant);
-    auto     &system = *on.scene->system, &plain = *off.scene->system;
+              << (boxes.empty() ? "" : ", refined " + boxes)
+              << (other_face == "segments" ? "" : ", " + other_face) << std::endl;
+    TwoBlocks on(method, axisymmetric, boxes, variant, other_face),
+      off("none", axisymmetric, boxes, variant);
+    auto        &system = *on.scene->system, &plain = *off.scene->system;
     const double dt = 0.05;
     bool         ok = report("no self-contact term when off",
                      plain.assemblers().size() == 3 && system.assemblers().size() == 4);
@@ -419,6 +426,9 @@ main(int argc, char **argv)
   ok &= check_term(false, "", "nitsche");
   ok &= check_term(true, "", "nitsche");
   ok &= check_term(false, "", "nitsche", "skew-symmetric");
+  for (const bool axisymmetric : {false, true})
+    for (const std::string method : {"penalty", "nitsche"})
+      ok &= check_term(axisymmetric, "", method, "symmetric", "tangent planes");
   ok &= check_term_3d("penalty");
   ok &= check_term_3d("nitsche");
   ok &= check_unseen();

@@ -185,8 +185,7 @@ namespace GelMPM
       /** X_0 and N_0 A_0 (the polylines' order), x_n (with the edge offset), unit N_n. */
       dealii::Point<dim>     X0, x;
       dealii::Tensor<1, dim> normal_area_0, normal;
-      /** A_n, beta_s and the spacing of the surface points there (A_n^(1/(dim-1)), in 2D
-       * unused). */
+      /** A_n, beta_s and the spacing of the surface points there (spacing()). */
       double measure = 0., penalty = 0., spacing = 0.;
       /** The u cell of its block, its u functions (DoF indices) and their values there. */
       unsigned int              u_cell = 0;
@@ -224,12 +223,22 @@ namespace GelMPM
     find_pairs(const dealii::Vector<double> *solution = nullptr) const;
 
     /**
-     * 3D, find_pairs(): each point with the points within 'Search distance' whose tangent planes
-     * face it and that it lies in front of or at most 'Largest depth' behind; not those of its
-     * own face closer than 'Minimum arc length' in the initial configuration.
+     * 3D, or 2D with 'Other face = tangent planes', find_pairs(): each point with the points within
+     * 'Search distance' whose tangent planes face it and that it lies in front of or at most
+     * 'Largest depth' behind; not those of its own face closer than 'Minimum arc length' in the
+     * initial configuration.
      */
     std::vector<Pair>
     find_point_pairs(const dealii::Vector<double> *solution) const;
+
+    /** Whether the other face is the tangent planes of its points (3D, or 'Other face'). */
+    bool
+    tangent_planes() const;
+
+    /** The spacing of the surface points at @p r: A_n^(1/(dim-1)), in an axisymmetric scene of
+     * the meridian's A_n / (2 pi r_n). */
+    double
+    spacing(const PointRecord<dim> &r) const;
 
     /** The gap of @p pair at @p solution (at x_n without it). */
     PairGap<dim>
@@ -237,7 +246,8 @@ namespace GelMPM
 
     /**
      * Whether the point of @p pair projects onto its surface (with the gap @p gap): 2D onto the
-     * segment (to 1e-9 of its length), 3D within the spacing of the paired point.
+     * segment (to 1e-9 of its length), 3D (and 2D with tangent planes) within the spacing of
+     * the paired point.
      */
     bool
     projects_onto(const Pair &pair, const PairGap<dim> &gap) const;

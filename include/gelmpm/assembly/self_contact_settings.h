@@ -49,6 +49,9 @@ namespace GelMPM
     /** Whether a converged step through which a surface point passed the other face unseen by
      * its pairs is retaken shorter ('Retake unseen passes'); otherwise such steps are counted. */
     bool retake_unseen_passes = true;
+    /** 2D: whether a point touches the tangent planes of the other face's points at the step's
+     * start (as in 3D) instead of the segments of the current polylines ('Other face'). */
+    bool tangent_planes = false;
 
     bool
     enabled() const

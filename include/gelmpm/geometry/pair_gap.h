@@ -15,9 +15,9 @@ namespace GelMPM
    * (x_s, x_a, x_b) (component fastest). g < 0: the point is behind the surface.
    *
    * 2D (point_segment_gap()): from the line of the segment [x_a, x_b] of a surface polyline,
-   * g = (x_s - x_a) . n with n the segment's outward unit normal. 3D (point_plane_gap()): from
-   * the tangent plane of a surface point x_a with its unit normal n at the start of the step,
-   * g = (x_s - x_a) . n (x_b is x_a and has no share).
+   * g = (x_s - x_a) . n with n the segment's outward unit normal. point_plane_gap() (3D, and 2D
+   * with 'Other face = tangent planes'): from the tangent plane of a surface point x_a with its
+   * unit normal n at the start of the step, g = (x_s - x_a) . n (x_b is x_a and has no share).
    */
   template <int dim>
   struct PairGap
@@ -44,11 +44,13 @@ namespace GelMPM
                     const dealii::Point<2> &x_a,
                     const dealii::Point<2> &x_b);
 
-  /** The gap of @p x_s from the plane through @p x_a with the unit normal @p normal. */
-  PairGap<3>
-  point_plane_gap(const dealii::Point<3>     &x_s,
-                  const dealii::Point<3>     &x_a,
-                  const dealii::Tensor<1, 3> &normal);
+  /** The gap of @p x_s from the plane through @p x_a with the unit normal @p normal (in 2D a
+   * line). */
+  template <int dim>
+  PairGap<dim>
+  point_plane_gap(const dealii::Point<dim>     &x_s,
+                  const dealii::Point<dim>     &x_a,
+                  const dealii::Tensor<1, dim> &normal);
 
 
   /**
