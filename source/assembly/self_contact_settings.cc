@@ -84,7 +84,7 @@ namespace GelMPM
       "and stay tied about a cell apart, never touching.");
     prm.declare_entry(
       "Other face",
-      "segments",
+      "tangent planes",
       Patterns::Selection("segments|tangent planes"),
       "2D (plane strain and axisymmetric): what a point touches. segments: the segments of the "
       "current surface polylines, their normals turning with the iterate. tangent planes: the "

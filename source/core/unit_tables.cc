@@ -60,6 +60,7 @@ namespace GelMPM
         {"Contact/Self contact/Largest depth", Q::none}, // in cells
         {"Contact/Self contact/Separate faces", Q::none},
         {"Contact/Self contact/Retake unseen passes", Q::none},
+        {"Contact/Self contact/Other face", Q::none},
         {"Contact/Self contact/Method", Q::none},
         {"Contact/Self contact/Minimum arc length", Q::none}, // in cells
         {"Contact/Self contact/Penalty", Q::none},

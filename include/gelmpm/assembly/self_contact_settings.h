@@ -51,7 +51,7 @@ namespace GelMPM
     bool retake_unseen_passes = true;
     /** 2D: whether a point touches the tangent planes of the other face's points at the step's
      * start (as in 3D) instead of the segments of the current polylines ('Other face'). */
-    bool tangent_planes = false;
+    bool tangent_planes = true;
 
     bool
     enabled() const
