@@ -19,7 +19,7 @@ Measured (doc/method.md, "Where it works and where it fails"): the half and the 
 1 tau_d, the tied faces never touching; separated, the block stops at 0.124 tau_d.
 
     python3 contrib/benchmarks/closing_slit.py [--output DIR] [--end T] [--penalty P]
-        [--line-search physical|merit|adaptive] [--method penalty|nitsche]
+        [--line-search physical|merit|adaptive] [--method penalty|nitsche] [--set ENTRY=VALUE]
 
 Environment: GELMPM_BUILD_DIR (default: build). Needs only Python's standard library.
 """
@@ -146,6 +146,9 @@ def main():
                         help="'Newton/Line search' of every variant (physical, merit, adaptive)")
     parser.add_argument("--method", default="penalty",
                         help="'Contact/Self contact/Method' of the whole block (penalty, nitsche)")
+    parser.add_argument("--set", action="append", default=[], metavar="ENTRY=VALUE",
+                        help="a further --set for every variant (repeatable), e.g. "
+                        "'Contact/Self contact/Other face=segments'")
     args = parser.parse_args()
     build = os.environ.get("GELMPM_BUILD_DIR", os.path.join(TOP, "build"))
     os.makedirs(args.output, exist_ok=True)
@@ -153,7 +156,9 @@ def main():
     for variant in ("half", "tied", "separated"):
         path, directory = scene(variant, args.output, args.end, args.penalty, args.line_search,
                                 args.method)
-        run = subprocess.run([os.path.join(build, "gelmpm"), path], capture_output=True, text=True,
+        overrides = [arg for entry in args.set for arg in ("--set", entry)]
+        run = subprocess.run([os.path.join(build, "gelmpm"), path] + overrides,
+                             capture_output=True, text=True,
                              env=dict(os.environ, DEAL_II_NUM_THREADS="1"))
         rows = read_rows(os.path.join(directory, "statistics.csv"))
         force = "mid_force_x" if variant == "half" else "self_contact_force"

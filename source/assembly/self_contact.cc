@@ -838,7 +838,7 @@ namespace GelMPM
   self_contact_pieces(const SelfContactSettings &, const BoundaryConditions<2> &);
   template std::vector<bool>
   self_contact_pieces(const SelfContactSettings &, const BoundaryConditions<3> &);
-  // 2D: point to segment; 3D: point to the tangent plane of the nearest facing point.
+  // Point to the tangent plane of the nearest facing point; in 2D also point to segment.
   template class SelfContactAssembler<2>;
   template class SelfContactAssembler<3>;
 } // namespace GelMPM

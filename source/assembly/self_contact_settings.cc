@@ -20,12 +20,11 @@ namespace GelMPM
       Patterns::Selection("none|penalty|nitsche"),
       "Contact of the gel's boundary with itself (doc/method.md, \"Contact of the gel with "
       "itself\"): none (off: no term, no cost); penalty (the surface points of 'Pieces' against "
-      "the segments of their current surface, frictionless, beta_s g on a point behind a "
-      "segment); nitsche (the same pairs, Nitsche's terms with the point's own normal traction "
+      "the other face, frictionless, beta_s g on a point behind it); nitsche (the same pairs, Nitsche's terms with the point's own normal traction "
       "on the augmented active set beta_s g - sigma_n < 0, each face's points weighted by one "
-      "half, 'Nitsche/Variant' their symmetry). 2D (plane strain and "
-      "axisymmetric): point to segment; 3D: point to the tangent plane of the nearest facing "
-      "point.");
+      "half, 'Nitsche/Variant' their symmetry). Each point touches the tangent plane of the "
+      "nearest facing point ('Other face'; in 2D also the segments of the surface "
+      "polylines).");
     prm.declare_entry(
       "Penalty",
       "100",
@@ -92,15 +91,16 @@ namespace GelMPM
       "(fixed over the step, the gap linear in the unknowns), as always in 3D (doc/method.md, "
       "\"The other face as tangent planes\").");
     prm.declare_entry("Largest depth",
-                      "0.25",
+                      "0.5",
                       Patterns::Double(0.),
                       "In cells of the background grid as given (as 'Search distance'): at the "
-                      "start of a step a point up to this far behind a "
-                      "segment is still its pair (a penetration the penalty left); farther "
-                      "behind it is taken for the other face of a thin body. A Newton iterate "
-                      "that puts an active point farther behind its segment is no state the "
-                      "penalty leaves: the line search damps the update as it damps one to J <= "
-                      "1.");
+                      "start of a step a point up to this far behind the other face is still "
+                      "its pair (a penetration the penalty left); farther behind it is taken for "
+                      "the other face of a thin body. A Newton iterate that puts an active point "
+                      "farther behind is no state the penalty leaves: the line search damps the "
+                      "update as it damps one to J <= 1 (with 0.25 the closing notch of "
+                      "doc/method.md stops at 0.57 tau_d, a point of a face 0.26 cells behind "
+                      "the other once new copies let the faces go).");
     prm.leave_subsection();
   }
 

@@ -47,15 +47,16 @@ namespace GelMPM
 
   /**
    * @brief Contact of the gel's boundary with itself ('Contact/Self contact'), a pair term: the
-   * surface points of the chosen free pieces against the current surface of the same body, point
-   * to segment in 2D (plane strain and axisymmetric), point to the tangent plane of the nearest
-   * facing surface point in 3D, frictionless, by a penalty or by Nitsche's method.
+   * surface points of the chosen free pieces against the current surface of the same body: point
+   * to the tangent plane of the nearest facing surface point (3D, and 2D by default), or in 2D
+   * (plane strain and axisymmetric, 'Other face = segments') point to segment; frictionless, by
+   * a penalty or by Nitsche's method.
    *
-   * At every MixedSystem::setup() (add_cell_couplings(), the points at x_n) the chosen points are
-   * ordered into polylines along the surface (SurfaceGeometry::order_along_surface() on their
-   * initial positions and normals, as the observables order them), and each point is paired with
-   * the segments that, at x_n, lie within 'Search distance' in front of it or up to 'Largest
-   * depth' behind, face it (its normal against theirs) and whose ends lie farther than 'Minimum
+   * Segments: at every MixedSystem::setup() (add_cell_couplings(), the points at x_n) the chosen
+   * points are ordered into polylines along the surface (SurfaceGeometry::order_along_surface()
+   * on their initial positions and normals, as the observables order them), and each point is
+   * paired with the segments that, at x_n, lie within 'Search distance' in front of it or up to
+   * 'Largest depth' behind, face it (its normal against theirs) and whose ends lie farther than 'Minimum
    * arc length' from it along the surface (points of different curves always). The pairs are
    * fixed over the step; they couple the point's cell with the cells of the segment's two ends,
    * which may be no neighbours, so the term declares those pairs of cells (the sparsity pattern
@@ -78,7 +79,8 @@ namespace GelMPM
    * Its per-point assemble() adds nothing: what it adds goes beyond the blocks. Not in a scene's
    * list when the subsection is off.
    *
-   * 3D (find_point_pairs()): a point's pairs are the surface points within 'Search distance'
+   * Tangent planes (3D, and 2D with 'Other face = tangent planes', find_point_pairs()): a
+   * point's pairs are the surface points within 'Search distance'
    * whose normals are turned from its own by more than 120 degrees and whose tangent planes (at
    * x_n, with the unit normal N_n, fixed over the step) it lies in front of or at most 'Largest
    * depth' behind; it is active against the nearest of them (along the tangent plane, within the

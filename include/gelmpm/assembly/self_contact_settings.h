@@ -13,10 +13,10 @@ namespace GelMPM
    * (SelfContactAssembler, doc/method.md, "Contact of the gel with itself"). Off by default; a
    * scene that leaves it off has no self-contact term in its list and does no work for it.
    *
-   * In 2D (plane strain and axisymmetric): every surface point of the chosen pieces against the
+   * Every surface point of the chosen pieces against the tangent planes of the nearest facing
+   * surface points, or in 2D (plane strain and axisymmetric, 'Other face = segments') against the
    * segments of their current surface polylines (SurfaceGeometry::order_along_surface()), its
-   * own segments and those less than 'Minimum arc length' away along the surface excepted; in 3D
-   * against the tangent planes of the nearest facing surface points,
+   * own segments and those less than 'Minimum arc length' away along the surface excepted,
    * frictionless, by a penalty beta_s = gamma_s G / h_u on the penetration, or by Nitsche's
    * method with the same beta_s.
    */
@@ -42,7 +42,7 @@ namespace GelMPM
     double minimum_arc_length = 3.;
     /** At the start of a step, a point up to this far (in the same cells) behind a segment is its
      * pair (a penetration the penalty left); farther it is the other face of a thin body. */
-    double largest_depth = 0.25;
+    double largest_depth = 0.5;
     /** Whether parts of the material that share a displacement function's support without being
      * connected there take copies of it (PointCache::separate_faces()). */
     bool separate_faces = true;
