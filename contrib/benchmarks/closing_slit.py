@@ -26,12 +26,16 @@ Environment: GELMPM_BUILD_DIR (default: build). Needs only Python's standard lib
 """
 import argparse
 import os
+import re
 import subprocess
 import sys
 
 TOP = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 sys.path.insert(0, os.path.join(TOP, "contrib", "plotting"))
 from gelmpm_files import read_rows  # noqa: E402
+
+# The 3D slab's thickness (--dimension 3): four cells of h = 0.0625.
+THICKNESS = 0.25
 
 # The block 0.25 < x < 2.25, 0.25 < y < 1.25 less the notch |x - 1.25| < w/2, y > 1.25 - d.
 NOTCH = ("max(max(max(0.25 - x, x - {right}), max(0.25 - y, y - 1.25)), "
@@ -118,7 +122,29 @@ SELF = """subsection Contact
 end"""
 
 
-def scene(variant, out, end, penalty, line_search, method):
+ENDS = """  subsection ends
+    set Selector     = abs(nz) > 0.9
+    set Displacement = normal
+  end
+  subsection bath"""
+
+
+def extruded(text):
+    """The plane-strain scene as a 3D slab of THICKNESS (four cells) on rollers at its ends."""
+    text = text.replace("set Dimension = 2", "set Dimension = 3")
+    text = re.sub(r"(set Lower corner = [^\n]*)", r"\1, 0", text)
+    text = re.sub(r"(set Upper corner = [^\n]*)", r"\1, %g" % THICKNESS, text)
+    text = re.sub(r"(set Cells        = [^\n]*)", r"\1, 4", text)
+    text = re.sub(r"set Level set           = (.*)",
+                  lambda m: "set Level set           = max(%s, max(-z, z - %g))"
+                  % (m.group(1), THICKNESS), text)
+    text = re.sub(r"(set Pieces = [^\n]*), bath", r"\1, ends, bath", text)
+    text = text.replace("  subsection bath", ENDS, 1)
+    text = text.replace("set Center = 1.25, 0", "set Center = 1.25, 0, 0")
+    return text.replace("set Normal = -1, 0", "set Normal = -1, 0, 0")
+
+
+def scene(variant, out, end, penalty, line_search, method, dimension=2):
     directory = os.path.join(out, variant)
     if variant == "half":
         # The grid reaches a cell pair beyond the plane: mu lives on cells twice as large.
@@ -132,6 +158,8 @@ def scene(variant, out, end, penalty, line_search, method):
                                                 separate=str(variant == "separated").lower()),
                             end=end)
     text += "subsection Newton\n  set Line search = %s\nend\n" % line_search
+    if dimension == 3:
+        text = extruded(text)
     path = os.path.join(out, variant + ".prm")
     with open(path, "w") as f:
         f.write(text)
@@ -147,6 +175,11 @@ def main():
                         help="'Newton/Line search' of every variant (physical, merit, adaptive)")
     parser.add_argument("--method", default="penalty",
                         help="'Contact/Self contact/Method' of the whole block (penalty, nitsche)")
+    parser.add_argument("--dimension", type=int, choices=(2, 3), default=2,
+                        help="3: the scene as a slab four cells thick on rollers at its ends "
+                        "(plane strain in 3D)")
+    parser.add_argument("--variants", default="half,tied,separated",
+                        help="comma-separated variants to run (the half is the reference)")
     parser.add_argument("--set", action="append", default=[], metavar="ENTRY=VALUE",
                         help="a further --set for every variant (repeatable), e.g. "
                         "'Contact/Self contact/Other face=segments'")
@@ -154,9 +187,10 @@ def main():
     build = os.environ.get("GELMPM_BUILD_DIR", os.path.join(TOP, "build"))
     os.makedirs(args.output, exist_ok=True)
     results = {}
-    for variant in ("half", "tied", "separated"):
+    variants = args.variants.split(",")
+    for variant in variants:
         path, directory = scene(variant, args.output, args.end, args.penalty, args.line_search,
-                                args.method)
+                                args.method, args.dimension)
         overrides = [arg for entry in args.set for arg in ("--set", entry)]
         run = subprocess.run([os.path.join(build, "gelmpm"), path] + overrides,
                              capture_output=True, text=True,
@@ -167,16 +201,17 @@ def main():
         touch = next((r["t_over_tau_d"] for r in rows[1:] if r[points] and float(r[points]) > 0),
                      None)
         results[variant] = (run.returncode, rows, force, touch)
-    half_rows = results["half"][1]
+    # The force at four times the half reached (without the half: the first variant run).
+    half_rows = results.get("half", results[variants[0]])[1]
     print("| variant | exit | reached (tau_d) | first contact (tau_d) | force at t = "
           + ", ".join("%.3g" % float(half_rows[k]["t_over_tau_d"])
-                      for k in range(len(half_rows) // 4, len(half_rows), len(half_rows) // 4))
+                      for k in range(max(len(half_rows) // 4, 1), len(half_rows), max(len(half_rows) // 4, 1)))
           + " |")
     print("|---|---|---|---|---|")
     for variant, (code, rows, force, touch) in results.items():
         times = [float(r["t_over_tau_d"]) for r in rows]
         values = []
-        for k in range(len(half_rows) // 4, len(half_rows), len(half_rows) // 4):
+        for k in range(max(len(half_rows) // 4, 1), len(half_rows), max(len(half_rows) // 4, 1)):
             t = float(half_rows[k]["t_over_tau_d"])
             # Linear in time between the variant's steps; "-" beyond what it reached.
             after = next((i for i in range(1, len(times)) if times[i] >= t), None)
