@@ -1,7 +1,6 @@
 #include <gelmpm/assembly/face_separation.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -352,7 +351,7 @@ namespace GelMPM
         CopyTie tie;
         if (tie_weak_copy(g, copies, weak_copies, w, search, tie))
           ties_.push_back(std::move(tie));
-        else if (!std::getenv("GELMPM_KEEP_UNTIED"))
+        else
           removed[w.copy - n_dofs] = true;
       }
     if (std::find(removed.begin(), removed.end(), true) == removed.end())
