@@ -56,9 +56,9 @@ namespace GelMPM
    * points are ordered into polylines along the surface (SurfaceGeometry::order_along_surface()
    * on their initial positions and normals, as the observables order them), and each point is
    * paired with the segments that, at x_n, lie within 'Search distance' in front of it or up to
-   * 'Largest depth' behind, face it (its normal against theirs) and whose ends lie farther than 'Minimum
-   * arc length' from it along the surface (points of different curves always). The pairs are
-   * fixed over the step; they couple the point's cell with the cells of the segment's two ends,
+   * 'Largest depth' behind, face it (its normal against theirs) and whose ends lie farther than
+   * 'Minimum arc length' from it along the surface (points of different curves always). The pairs
+   * are fixed over the step; they couple the point's cell with the cells of the segment's two ends,
    * which may be no neighbours, so the term declares those pairs of cells (the sparsity pattern
    * holds them and is kept while they stay).
    *
