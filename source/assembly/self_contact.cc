@@ -229,8 +229,15 @@ namespace GelMPM
   std::vector<typename SelfContactAssembler<dim>::Pair>
   SelfContactAssembler<dim>::find_pairs(const dealii::Vector<double> *solution) const
   {
-    if (tangent_planes())
-      return find_point_pairs(solution);
+    return tangent_planes() ? find_point_pairs(solution) : find_segment_pairs(solution);
+  }
+
+
+  template <int dim>
+  std::vector<typename SelfContactAssembler<dim>::Pair>
+  SelfContactAssembler<dim>::find_segment_pairs(const dealii::Vector<double> *solution) const
+  {
+    // tangent_planes() holds in 3D: only a 2D scene gets here.
     if constexpr (dim == 2)
       {
         // In cells of 'Background grid/Cells' at every level: the motion within a step and
@@ -312,7 +319,10 @@ namespace GelMPM
         return found;
       }
     else
-      return find_point_pairs(solution);
+      {
+        (void)solution;
+        return {};
+      }
   }
 
 
@@ -728,9 +738,11 @@ namespace GelMPM
       }
     const Tensor<1, dim> t =
       point_state(record, s.delta_F, s.du_at_point, s.mu_at_point, false).P_n * record.normal;
-    const auto            dn     = tangent_planes() ? NormalDerivatives<dim>()
-                                                    : normal_derivatives(current_position(pair.a, solution),
-                                                          current_position(pair.b, solution));
+    // The tangent plane's normal is fixed over the step; a segment's turns with its ends.
+    NormalDerivatives<dim> dn;
+    if (!tangent_planes())
+      dn =
+        normal_derivatives(current_position(pair.a, solution), current_position(pair.b, solution));
     const Tensor<1, dim> &normal = gap.normal;
     const double          g = gap.g, beta = sample.penalty, sigma = normal * t;
     const double          weight = 0.5 * record.measure;

@@ -20,8 +20,9 @@ namespace GelMPM
       Patterns::Selection("none|penalty|nitsche"),
       "Contact of the gel's boundary with itself (doc/method.md, \"Contact of the gel with "
       "itself\"): none (off: no term, no cost); penalty (the surface points of 'Pieces' against "
-      "the other face, frictionless, beta_s g on a point behind it); nitsche (the same pairs, Nitsche's terms with the point's own normal traction "
-      "on the augmented active set beta_s g - sigma_n < 0, each face's points weighted by one "
+      "the other face, frictionless, beta_s g on a point behind it); nitsche (the same pairs, "
+      "Nitsche's terms with the point's own normal traction on the augmented active set "
+      "beta_s g - sigma_n < 0, each face's points weighted by one "
       "half, 'Nitsche/Variant' their symmetry). Each point touches the tangent plane of the "
       "nearest facing point ('Other face'; in 2D also the segments of the surface "
       "polylines).");
@@ -85,7 +86,8 @@ namespace GelMPM
       "Other face",
       "tangent planes",
       Patterns::Selection("segments|tangent planes"),
-      "2D (plane strain and axisymmetric): what a point touches. segments: the segments of the "
+      "2D (plane strain and axisymmetric): what a point touches; 3D scenes take tangent planes "
+      "only. segments: the segments of the "
       "current surface polylines, their normals turning with the iterate. tangent planes: the "
       "tangent plane of the nearest facing surface point, its normal that of the step's start "
       "(fixed over the step, the gap linear in the unknowns), as always in 3D (doc/method.md, "

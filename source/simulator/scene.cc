@@ -77,6 +77,11 @@ namespace GelMPM
             "several)",
             "run on one rank, or set 'Separate faces = false' (faces that share cells then stay "
             "tied)");
+    require(!contact.self_contact.enabled() || dim == 2 || contact.self_contact.tangent_planes,
+            "Contact/Self contact/Other face",
+            "is 'segments' in a 3D scene, whose surface points form no polylines (in 3D a point "
+            "always touches the tangent planes of the nearest facing points)",
+            "remove the entry, or set it to 'tangent planes'");
     if (contact.self_contact.enabled())
       self_contact_pieces(contact.self_contact, boundary_conditions);
     obstacles = parse_obstacles<dim>(prm, obstacle_names);

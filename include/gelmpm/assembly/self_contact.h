@@ -225,6 +225,13 @@ namespace GelMPM
     find_pairs(const dealii::Vector<double> *solution = nullptr) const;
 
     /**
+     * 2D with 'Other face = segments', find_pairs(): each point with the segments of the surface
+     * polylines as the class describes.
+     */
+    std::vector<Pair>
+    find_segment_pairs(const dealii::Vector<double> *solution) const;
+
+    /**
      * 3D, or 2D with 'Other face = tangent planes', find_pairs(): each point with the points within
      * 'Search distance' whose tangent planes face it and that it lies in front of or at most
      * 'Largest depth' behind; not those of its own face closer than 'Minimum arc length' in the
